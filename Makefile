@@ -1,0 +1,138 @@
+# mechmat — one non-recursive Makefile.
+#
+#   make run      install what is missing, build, serve on http://127.0.0.1:$(PORT)
+#   make test     install what is missing, build, run every test
+#   make asan     the whole suite under AddressSanitizer + UBSan (build/asan)
+#   make bench    benchmarks that print figures
+#   make deps     only install what is missing (Debian packages, npm packages)
+#   make flags    print the settings
+
+# ---- settings ---------------------------------------------------------------
+BUILD    ?= build
+PORT     ?= 8080
+HOST     ?= 127.0.0.1
+SANITIZE ?=
+CC       := gcc
+CXX      := g++
+
+PKGS     := libmicrohttpd libcjson lapacke fftw3 muparser libcmark
+TESTPKGS := cmocka libcurl
+
+WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes \
+            -Wmissing-prototypes -Wwrite-strings -Wundef -Wformat=2 \
+            -Wno-format-nonliteral
+OPT      := -O2 -g
+ifneq ($(SANITIZE),)
+OPT      += -fsanitize=address,undefined -fno-sanitize-recover=all \
+            -fno-omit-frame-pointer
+LDSAN    := -fsanitize=address,undefined
+endif
+
+PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) $(TESTPKGS) 2>/dev/null)
+PKG_LIBS   = $(shell pkg-config --libs $(PKGS) 2>/dev/null)
+TEST_LIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
+
+CPPFLAGS := -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -Isolvers -Iexercises -Iserver
+CFLAGS   := -std=c11 $(OPT) $(WARN) -MMD -MP
+CXXFLAGS := -std=c++17 $(OPT) -Wall -Wextra -Werror -MMD -MP
+LDLIBS    = $(PKG_LIBS) -ldouble-conversion -lstdc++ -lm -lpthread
+
+# ---- sources ----------------------------------------------------------------
+SOLVER_SRC := $(sort $(wildcard solvers/*.c))
+EX_SRC     := $(sort $(wildcard exercises/*.c exercises/*/*.c))
+SERVER_SRC := $(sort $(filter-out server/main.c,$(wildcard server/*.c)))
+SERVER_CXX := $(sort $(wildcard server/*.cc))
+UNIT_SRC   := $(sort $(wildcard tests/unit/test_*.c))
+BENCH_SRC  := $(sort $(wildcard tests/bench/bench_*.c))
+
+obj = $(patsubst %.c,$(BUILD)/obj/%.o,$(patsubst %.cc,$(BUILD)/obj/%.o,$(1)))
+
+SOLVER_LIB := $(BUILD)/libmm_solvers.a
+EX_LIB     := $(BUILD)/libmm_exercises.a
+SERVER_LIB := $(BUILD)/libmm_server.a
+LIBS       := $(SERVER_LIB) $(EX_LIB) $(SOLVER_LIB)
+SERVER_BIN := $(BUILD)/mechmat-server
+UNIT_BINS  := $(patsubst tests/unit/%.c,$(BUILD)/tests/%,$(UNIT_SRC))
+BENCH_BINS := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
+
+ALL_OBJ := $(call obj,$(SOLVER_SRC) $(EX_SRC) $(SERVER_SRC) $(SERVER_CXX) server/main.c)
+
+.PHONY: all run test asan bench deps flags clean tests loadtest fuzz valgrind
+.DEFAULT_GOAL := all
+
+all: $(SERVER_BIN)
+
+tests: $(SERVER_BIN) $(UNIT_BINS)
+
+# ---- build rules ------------------------------------------------------------
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(PKG_CFLAGS) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/obj/%.o: %.cc
+	@mkdir -p $(dir $@)
+	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
+
+$(SOLVER_LIB): $(call obj,$(SOLVER_SRC))
+	@rm -f $@
+	ar rcs $@ $^
+
+$(EX_LIB): $(call obj,$(EX_SRC))
+	@rm -f $@
+	ar rcs $@ $^
+
+$(SERVER_LIB): $(call obj,$(SERVER_SRC) $(SERVER_CXX))
+	@rm -f $@
+	ar rcs $@ $^
+
+$(SERVER_BIN): $(call obj,server/main.c) $(LIBS)
+	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS)
+
+$(BUILD)/tests/%: $(BUILD)/obj/tests/unit/%.o $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS) $(TEST_LIBS)
+
+$(BUILD)/bench/%: $(BUILD)/obj/tests/bench/%.o $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS) $(TEST_LIBS) -lgsl
+
+$(BUILD)/obj/tests/%.o: tests/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) -Itests $(PKG_CFLAGS) $(CFLAGS) -c $< -o $@
+
+# ---- the two commands -------------------------------------------------------
+deps:
+	@scripts/deps.sh
+
+run: deps
+	@$(MAKE) --no-print-directory all
+	$(SERVER_BIN) --host $(HOST) --port $(PORT)
+
+test: deps
+	@$(MAKE) --no-print-directory tests
+	@BUILD=$(BUILD) tests/run.sh
+
+asan:
+	@scripts/deps.sh
+	@$(MAKE) --no-print-directory BUILD=build/asan SANITIZE=1 tests
+	@BUILD=build/asan ASAN=1 tests/run.sh
+
+valgrind: deps
+	@$(MAKE) --no-print-directory tests
+	@BUILD=$(BUILD) tests/valgrind.sh
+
+bench: deps
+	@$(MAKE) --no-print-directory all $(BENCH_BINS)
+	@BUILD=$(BUILD) tests/bench/run.sh
+
+flags:
+	@echo "CC       = $(CC)"
+	@echo "CPPFLAGS = $(CPPFLAGS) $(PKG_CFLAGS)"
+	@echo "CFLAGS   = $(CFLAGS)"
+	@echo "LDLIBS   = $(LDLIBS)"
+	@echo "BUILD    = $(BUILD)"
+
+clean:
+	rm -rf build test-output
+
+-include $(ALL_OBJ:.o=.d) $(patsubst tests/%.c,$(BUILD)/obj/tests/%.d,$(UNIT_SRC) $(BENCH_SRC))
