@@ -134,9 +134,17 @@ int mm_res_warn(mm_result *r, const char *fmt, ...)
 
 typedef int (*mm_solve_fn)(const mm_value *in, mm_result *res, mm_error *err);
 
+/* Limits that join several parameters (the number of periods t_end spans,
+ * a matrix that must be square...).  Called after every value passed its own
+ * limits and before solve; no side effects.  Returns MM_OK, or MM_ERANGE /
+ * MM_EVALUE naming the parameter to change and saying what would be valid.
+ * The random-parameter tests draw values inside the table's limits and keep
+ * the draws this accepts. */
+typedef int (*mm_check_fn)(const mm_value *in, mm_error *err);
+
 typedef struct mm_exercise {
     const char *id;        /* canonical id: "vib-sdof-forced" */
-    const char *chapter;   /* "5 Vibrations" */
+    int chapter;           /* 1 numerical basics .. 5 vibrations */
     const char *section;   /* "5.9.2" */
     const char *title;
     const char *summary;   /* one line for the catalog */
@@ -145,6 +153,7 @@ typedef struct mm_exercise {
     const mm_param *params;
     int n_params;
     const char *const *references; /* NULL-terminated, may be NULL */
+    mm_check_fn check;     /* may be NULL */
     mm_solve_fn solve;
 } mm_exercise;
 

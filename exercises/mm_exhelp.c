@@ -1,0 +1,119 @@
+/* mm_exhelp.c — helpers shared by exercises (see mm_exhelp.h). */
+#include "mm_exhelp.h"
+
+#include <math.h>
+
+#include "mm_ode.h"
+
+void mm_linspace(double a, double b, int n, double *x)
+{
+    for (int i = 0; i < n; i++)
+        x[i] = a + (b - a) * i / (n - 1);
+    x[n - 1] = b;
+}
+
+double mm_maxabs(const double *y, int n)
+{
+    double m = 0;
+    for (int i = 0; i < n; i++)
+        if (fabs(y[i]) > m)
+            m = fabs(y[i]);
+    return m;
+}
+
+/* m x'' + c x' + k x = F0 cos(omega t) as y = (x, v). */
+static int sdof_rhs(double t, const double *y, double *dy, void *params)
+{
+    const mm_sdof *s = params;
+    dy[0] = y[1];
+    dy[1] = (s->F0 * cos(s->omega * t) - s->c * y[1] - s->k * y[0]) / s->m;
+    return 0;
+}
+
+int mm_ex_sdof_work_check(const mm_sdof *s, double t_end, mm_error *err)
+{
+    mm_sdof_props p;
+    mm_sdof_props_get(s, &p);
+    double rate = fmax(p.omega_n, s->omega);
+    if (p.zeta > 1)                                  /* fast overdamped mode */
+        rate = fmax(rate, p.omega_n * (p.zeta + sqrt((p.zeta - 1) * (p.zeta + 1))));
+    double work = t_end * rate;
+    if (work > MM_SDOF_MAX_RADIANS)
+        return mm_error_set(err, MM_ERANGE, "t_end",
+                            "t_end = %g s spans %.3g radians of the fastest motion (rate %.4g 1/s); "
+                            "at most %g fit one request: make t_end at most %.4g s",
+                            t_end, work, rate, MM_SDOF_MAX_RADIANS, MM_SDOF_MAX_RADIANS / rate);
+    return MM_OK;
+}
+
+int mm_ex_sdof_run(const mm_sdof *s, double t_end, int n, const double *t,
+                   double *x, double *v, int stride, mm_result *res, mm_error *err)
+{
+    double y0[2] = {s->x0, s->v0};
+    double *y = mm_res_alloc(res, 2 * (size_t)n * sizeof *y);
+    if (!y)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+
+    mm_sdof_props p;
+    mm_sdof_props_get(s, &p);
+    /* the size of the motion, for an absolute tolerance that means something */
+    double scale = fmax(fmax(fabs(s->x0), fabs(s->v0) / p.omega_n),
+                        fmax(fabs(s->F0) / s->k, p.resonant ? 0 : fabs(p.X)));
+    if (p.resonant)
+        scale = fmax(scale, fabs(s->F0) * t_end / (2 * s->m * p.omega_n));
+    if (scale == 0)
+        scale = 1;
+
+    mm_ode_problem prob = {.n = 2, .f = sdof_rhs, .params = (void *)s,
+                           .t0 = 0, .t_end = t_end, .y0 = y0};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = MM_ODE_DOP853;
+    opt.rtol = 1e-10;
+    opt.atol = 1e-10 * scale;
+    opt.max_steps = 1000000;
+    mm_ode_result r = {0};
+    r.t_out = t;
+    r.nout = (size_t)n;
+    r.y_out = y;
+    int rc = mm_ode_check(&prob, &opt, &r, err);
+    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
+    if (rc == MM_OK)
+        rc = mm_ode_solve(&prob, &opt, w, &r, err);
+    mm_ode_work_free(w);
+    if (rc != MM_OK)
+        return rc;
+
+    for (int i = 0; i < n; i++) {
+        x[i] = y[2 * i];
+        if (v)
+            v[i] = y[2 * i + 1];
+    }
+
+    if (stride <= 0)
+        return MM_OK;
+
+    mm_res_method(res, "dop853 (Dormand-Prince 8(5,3), dense output)", 0);
+    mm_res_method_stat(res, "rtol", opt.rtol);
+    mm_res_method_stat(res, "steps", (double)r.n_accepted);
+    mm_res_method_stat(res, "rejected", (double)r.n_rejected);
+    mm_res_method_stat(res, "evaluations", (double)r.n_eval);
+    mm_res_method_stat(res, "error_estimate", r.err_sum);
+
+    /* the whole response against the closed form: the worst point */
+    double worst = -1, xn = 0, xr = 0, peak = 0;
+    for (int i = 0; i < n; i += stride) {
+        double ref = mm_sdof_x(s, &p, t[i], NULL);
+        peak = fmax(peak, fabs(ref));
+        if (fabs(x[i] - ref) > worst) {
+            worst = fabs(x[i] - ref);
+            xn = x[i];
+            xr = ref;
+        }
+    }
+    mm_res_method_stat(res, "max_error", worst);
+    /* DOP853 at rtol 1e-10 keeps the global error near 1e-9 of the motion's
+     * size over the longest allowed run (1e4 radians); 1e-6 leaves room */
+    return mm_res_check_abs(res, "x(t) vs closed form (worst sampled point)", xn, xr,
+                            1e-6 * fmax(peak, scale));
+}

@@ -1,0 +1,33 @@
+/* mm_exhelp.h — small helpers shared by exercises (not a solver: these know
+ * about mm_result and parameters).
+ */
+#ifndef MM_EXHELP_H
+#define MM_EXHELP_H
+
+#include "mm_exercise.h"
+#include "mm_sdof.h"
+
+/* n equally spaced values from a to b into x (n >= 2), written as
+ * a + (b - a) * i / (n - 1) so that round grids print short. */
+void mm_linspace(double a, double b, int n, double *x);
+
+/* Largest |y[i]| over n values. */
+double mm_maxabs(const double *y, int n);
+
+/* Integrate the 1-DOF oscillator s from 0 to t_end with DOP853 (rtol 1e-10),
+ * dense output onto t[0..n-1]; x and v receive displacement and velocity
+ * (v may be NULL).  With stride > 0 it also reports the method and its
+ * counters on res and checks the whole response against the closed form
+ * mm_sdof_x at every stride-th point; with stride = 0 it only integrates
+ * (res then serves as the arena).  Returns MM_OK or an mm_status code with
+ * err filled. */
+int mm_ex_sdof_run(const mm_sdof *s, double t_end, int n, const double *t,
+                   double *x, double *v, int stride, mm_result *res, mm_error *err);
+
+/* The work bound of 1-DOF time responses: t_end * (largest rate of the
+ * system: omega_n, omega, and the fast decay rate when overdamped) must not
+ * pass MM_SDOF_MAX_RADIANS, or the request would take too long. */
+#define MM_SDOF_MAX_RADIANS 1e4
+int mm_ex_sdof_work_check(const mm_sdof *s, double t_end, mm_error *err);
+
+#endif

@@ -1,0 +1,79 @@
+/* mm_result_impl.h — the inside of an mm_result, for the server that writes
+ * it out as JSON and for tests.  Exercises use only mm_exercise.h.
+ *
+ * Everything lives in one arena: a chain of blocks freed together.  Lists
+ * keep insertion order (the order an exercise adds things is the order a
+ * learner reads them).
+ */
+#ifndef MM_RESULT_IMPL_H
+#define MM_RESULT_IMPL_H
+
+#include "mm_exercise.h"
+
+typedef struct mm_block {
+    struct mm_block *next;
+    size_t size, used;
+    /* data follows, max_align_t aligned */
+} mm_block;
+
+typedef struct mm_scalar_node {
+    struct mm_scalar_node *next;
+    const char *name, *label, *unit, *text;   /* text may be NULL */
+    double value;
+} mm_scalar_node;
+
+typedef struct mm_series_node {
+    struct mm_series_node *next;
+    const char *name, *label, *unit, *x_label, *x_unit;
+    mm_series s;
+} mm_series_node;
+
+typedef struct mm_table_node {
+    struct mm_table_node *next;
+    const char *name;
+    const char *const *columns, *const *units;
+    mm_table t;
+} mm_table_node;
+
+typedef struct mm_check_node {
+    struct mm_check_node *next;
+    const char *name;
+    double value, reference, tolerance;
+    int relative;                  /* 1: tolerance is relative */
+} mm_check_node;
+
+typedef struct mm_stat_node {
+    struct mm_stat_node *next;
+    const char *key;
+    double value;
+} mm_stat_node;
+
+typedef struct mm_warn_node {
+    struct mm_warn_node *next;
+    const char *text;
+} mm_warn_node;
+
+#define MM_LIST(type) struct { type *head, *tail; int n; }
+
+struct mm_result {
+    mm_block *blocks;
+    size_t cap, total;             /* arena cap and bytes taken, in bytes */
+    int over_cap;                  /* an allocation was refused by the cap */
+    MM_LIST(mm_scalar_node) scalars;
+    MM_LIST(mm_series_node) series;
+    MM_LIST(mm_table_node) tables;
+    MM_LIST(mm_check_node) checks;
+    MM_LIST(mm_stat_node) stats;
+    MM_LIST(mm_warn_node) warnings;
+    const char *method;            /* NULL when the exercise names none */
+    double step;
+};
+
+/* Start an empty result whose arena may grow to cap bytes.  Cannot fail
+ * (the first block is taken lazily). */
+void mm_result_init(mm_result *r, size_t cap);
+
+/* Free the arena; r may be reused after mm_result_init. */
+void mm_result_release(mm_result *r);
+
+#endif

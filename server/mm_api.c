@@ -1,0 +1,714 @@
+/* mm_api.c — API.md's documents and the solve pipeline (see mm_api.h). */
+#include "mm_api.h"
+
+#include <cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "mm_dtoa.h"
+#include "mm_params.h"
+#include "mm_result_impl.h"
+#include "mm_theory.h"
+
+struct mm_api {
+    char *health, *catalog;
+    size_t health_len, catalog_len;
+    char **meta;                 /* one document per registry entry */
+    size_t *meta_len;
+};
+
+const char *mm_chapter_title(int chapter)
+{
+    static const char *const titles[] = {
+        "", "Numerical basics", "Kinematics", "Statics", "Dynamics", "Vibrations",
+    };
+    return chapter >= 1 && chapter <= 5 ? titles[chapter] : "";
+}
+
+static long long now_us(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (long long)ts.tv_sec * 1000000 + ts.tv_nsec / 1000;
+}
+
+/* ---- writing pieces ------------------------------------------------------ */
+
+int mm_api_error(mm_buf *out, const mm_error *err)
+{
+    int code = err->code == MM_OK ? MM_EINTERNAL : err->code;
+    mm_buf_reset(out);
+    mm_buf_puts(out, "{\"error\":{\"code\":");
+    mm_buf_str(out, mm_api_code(code));
+    mm_buf_puts(out, ",\"param\":");
+    mm_buf_str(out, err->param[0] ? err->param : NULL);
+    mm_buf_puts(out, ",\"message\":");
+    if (mm_http_status(code) >= 500)   /* our fault: the details go to the log */
+        mm_buf_str(out, code == MM_EBUSY ? "the server is busy; try again in a moment"
+                                         : "internal error; the details are in the server log");
+    else
+        mm_buf_str(out, err->msg[0] ? err->msg : mm_strerror(code));
+    mm_buf_puts(out, "}}");
+    return mm_http_status(code);
+}
+
+static void write_tags(mm_buf *b, const char *tags)
+{
+    mm_buf_char(b, '[');
+    int first = 1;
+    for (const char *s = tags ? tags : ""; *s;) {
+        while (*s == ',' || *s == ' ')
+            s++;
+        const char *e = s;
+        while (*e && *e != ',')
+            e++;
+        const char *t = e;
+        while (t > s && t[-1] == ' ')
+            t--;
+        if (t > s) {
+            if (!first)
+                mm_buf_char(b, ',');
+            mm_buf_strn(b, s, (size_t)(t - s));
+            first = 0;
+        }
+        s = e;
+    }
+    mm_buf_char(b, ']');
+}
+
+static void write_catalog_fields(mm_buf *b, const mm_exercise *ex)
+{
+    mm_buf_puts(b, "\"id\":");
+    mm_buf_str(b, ex->id);
+    mm_buf_puts(b, ",\"chapter\":");
+    mm_buf_int(b, ex->chapter);
+    mm_buf_puts(b, ",\"chapter_title\":");
+    mm_buf_str(b, mm_chapter_title(ex->chapter));
+    mm_buf_puts(b, ",\"section\":");
+    mm_buf_str(b, ex->section);
+    mm_buf_puts(b, ",\"title\":");
+    mm_buf_str(b, ex->title);
+    mm_buf_puts(b, ",\"summary\":");
+    mm_buf_str(b, ex->summary);
+    mm_buf_puts(b, ",\"tags\":");
+    write_tags(b, ex->tags);
+}
+
+/* A value as it was resolved: numbers, nested arrays, or text. */
+static void write_value(mm_buf *b, const mm_param *p, const mm_value *v)
+{
+    switch (p->kind) {
+    case MM_REAL:
+    case MM_INT:
+        mm_buf_num(b, v->x, p->name);
+        break;
+    case MM_CHOICE:
+    case MM_EXPR:
+        mm_buf_str(b, v->text);
+        break;
+    case MM_VECTOR:
+    case MM_MATRIX:
+        if (p->kind == MM_MATRIX)
+            mm_buf_char(b, '[');
+        for (int i = 0; i < v->rows; i++) {
+            if (i)
+                mm_buf_char(b, ',');
+            mm_buf_char(b, '[');
+            for (int j = 0; j < v->cols; j++) {
+                if (j)
+                    mm_buf_char(b, ',');
+                mm_buf_num(b, v->data[i * v->cols + j], p->name);
+            }
+            mm_buf_char(b, ']');
+        }
+        if (p->kind == MM_MATRIX)
+            mm_buf_char(b, ']');
+        break;
+    }
+}
+
+static void write_param_meta(mm_buf *b, const mm_param *p)
+{
+    mm_buf_puts(b, "{\"name\":");
+    mm_buf_str(b, p->name);
+    mm_buf_puts(b, ",\"label\":");
+    mm_buf_str(b, p->label);
+    mm_buf_puts(b, ",\"unit\":");
+    mm_buf_str(b, p->unit ? p->unit : "");
+    mm_buf_puts(b, ",\"kind\":");
+    mm_buf_str(b, mm_param_kind_name(p->kind));
+    mm_buf_puts(b, ",\"default\":");
+    if (p->kind == MM_REAL || p->kind == MM_INT)
+        mm_buf_num(b, p->def, p->name);
+    else if (p->kind == MM_CHOICE)
+        mm_buf_str(b, p->choices[(int)p->def]);
+    else
+        mm_buf_str(b, p->def_text);
+    if (p->kind != MM_CHOICE && p->kind != MM_EXPR) {
+        mm_buf_puts(b, ",\"min\":");
+        mm_buf_num(b, p->min, p->name);
+        mm_buf_puts(b, ",\"max\":");
+        mm_buf_num(b, p->max, p->name);
+    }
+    if (p->kind == MM_CHOICE) {
+        mm_buf_puts(b, ",\"choices\":[");
+        for (int i = 0; p->choices[i]; i++) {
+            if (i)
+                mm_buf_char(b, ',');
+            mm_buf_str(b, p->choices[i]);
+        }
+        mm_buf_char(b, ']');
+    }
+    if (p->kind == MM_VECTOR) {
+        mm_buf_puts(b, ",\"max_length\":");
+        mm_buf_int(b, p->max_cols);
+    }
+    if (p->kind == MM_MATRIX) {
+        mm_buf_puts(b, ",\"max_rows\":");
+        mm_buf_int(b, p->max_rows);
+        mm_buf_puts(b, ",\"max_cols\":");
+        mm_buf_int(b, p->max_cols);
+    }
+    if (p->kind == MM_EXPR) {
+        mm_buf_puts(b, ",\"variables\":");
+        write_tags(b, p->vars);
+        mm_buf_puts(b, ",\"max_length\":");
+        mm_buf_int(b, MM_PARAM_EXPR_MAX);
+    }
+    mm_buf_puts(b, ",\"help\":");
+    mm_buf_str(b, p->help);
+    mm_buf_char(b, '}');
+}
+
+static void write_strings(mm_buf *b, const char *const *list, int n)
+{
+    mm_buf_char(b, '[');
+    for (int i = 0; i < n; i++) {
+        if (i)
+            mm_buf_char(b, ',');
+        mm_buf_str(b, list && list[i] ? list[i] : "");
+    }
+    mm_buf_char(b, ']');
+}
+
+/* The answer of a solve (API.md "A solve answer"). */
+static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
+                         const mm_result *r, long long elapsed_us)
+{
+    mm_buf_puts(b, "{\"id\":");
+    mm_buf_str(b, ex->id);
+
+    mm_buf_puts(b, ",\"params\":{");
+    for (int i = 0; i < ex->n_params; i++) {
+        if (i)
+            mm_buf_char(b, ',');
+        mm_buf_key(b, ex->params[i].name);
+        write_value(b, &ex->params[i], &vals[i]);
+    }
+
+    mm_buf_puts(b, "},\"scalars\":[");
+    for (const mm_scalar_node *s = r->scalars.head; s; s = s->next) {
+        if (s != r->scalars.head)
+            mm_buf_char(b, ',');
+        mm_buf_puts(b, "{\"name\":");
+        mm_buf_str(b, s->name);
+        mm_buf_puts(b, ",\"label\":");
+        mm_buf_str(b, s->label);
+        mm_buf_puts(b, ",\"unit\":");
+        mm_buf_str(b, s->unit);
+        mm_buf_puts(b, ",\"value\":");
+        mm_buf_num(b, s->value, s->name);
+        if (s->text) {
+            mm_buf_puts(b, ",\"text\":");
+            mm_buf_str(b, s->text);
+        }
+        mm_buf_char(b, '}');
+    }
+
+    mm_buf_puts(b, "],\"series\":[");
+    for (const mm_series_node *s = r->series.head; s; s = s->next) {
+        if (s != r->series.head)
+            mm_buf_char(b, ',');
+        mm_buf_puts(b, "{\"name\":");
+        mm_buf_str(b, s->name);
+        mm_buf_puts(b, ",\"label\":");
+        mm_buf_str(b, s->label);
+        mm_buf_puts(b, ",\"x_label\":");
+        mm_buf_str(b, s->x_label);
+        mm_buf_puts(b, ",\"x_unit\":");
+        mm_buf_str(b, s->x_unit);
+        mm_buf_puts(b, ",\"unit\":");
+        mm_buf_str(b, s->unit);
+        mm_buf_puts(b, ",\"x\":[");
+        for (int i = 0; i < s->s.n; i++) {
+            if (i)
+                mm_buf_char(b, ',');
+            mm_buf_num(b, s->s.x[i], s->name);
+        }
+        mm_buf_puts(b, "],\"y\":[");
+        for (int i = 0; i < s->s.n; i++) {
+            if (i)
+                mm_buf_char(b, ',');
+            mm_buf_num(b, s->s.y[i], s->name);
+        }
+        mm_buf_puts(b, "]}");
+    }
+
+    mm_buf_puts(b, "],\"tables\":[");
+    for (const mm_table_node *t = r->tables.head; t; t = t->next) {
+        if (t != r->tables.head)
+            mm_buf_char(b, ',');
+        mm_buf_puts(b, "{\"name\":");
+        mm_buf_str(b, t->name);
+        mm_buf_puts(b, ",\"columns\":");
+        write_strings(b, t->columns, t->t.ncols);
+        mm_buf_puts(b, ",\"units\":");
+        write_strings(b, t->units, t->t.ncols);
+        mm_buf_puts(b, ",\"rows\":[");
+        for (int i = 0; i < t->t.nrows; i++) {
+            if (i)
+                mm_buf_char(b, ',');
+            mm_buf_char(b, '[');
+            for (int j = 0; j < t->t.ncols; j++) {
+                int k = i * t->t.ncols + j;
+                if (j)
+                    mm_buf_char(b, ',');
+                if (t->t.text[k])
+                    mm_buf_str(b, t->t.text[k]);
+                else
+                    mm_buf_num(b, t->t.cell[k], t->name);
+            }
+            mm_buf_char(b, ']');
+        }
+        mm_buf_puts(b, "]}");
+    }
+
+    mm_buf_puts(b, "],\"checks\":[");
+    for (const mm_check_node *c = r->checks.head; c; c = c->next) {
+        double abs_err = fabs(c->value - c->reference);
+        double rel_err = c->reference != 0 ? abs_err / fabs(c->reference) : abs_err;
+        double limit = c->relative ? c->tolerance * fabs(c->reference) : c->tolerance;
+        int passed = abs_err <= limit;
+        if (c != r->checks.head)
+            mm_buf_char(b, ',');
+        mm_buf_puts(b, "{\"name\":");
+        mm_buf_str(b, c->name);
+        mm_buf_puts(b, ",\"value\":");
+        mm_buf_num(b, c->value, c->name);
+        mm_buf_puts(b, ",\"reference\":");
+        mm_buf_num(b, c->reference, c->name);
+        mm_buf_puts(b, ",\"abs_error\":");
+        mm_buf_num(b, abs_err, c->name);
+        mm_buf_puts(b, ",\"rel_error\":");
+        mm_buf_num(b, rel_err, c->name);
+        mm_buf_puts(b, ",\"tolerance\":");
+        mm_buf_num(b, c->tolerance, c->name);
+        mm_buf_puts(b, c->relative ? ",\"tolerance_kind\":\"relative\"" : ",\"tolerance_kind\":\"absolute\"");
+        mm_buf_puts(b, passed ? ",\"passed\":true}" : ",\"passed\":false}");
+    }
+
+    mm_buf_puts(b, "],\"method\":{\"name\":");
+    mm_buf_str(b, r->method ? r->method : "closed-form");
+    mm_buf_puts(b, ",\"step\":");
+    mm_buf_num(b, r->step, "method");
+    for (const mm_stat_node *s = r->stats.head; s; s = s->next) {
+        mm_buf_char(b, ',');
+        mm_buf_key(b, s->key);
+        mm_buf_num(b, s->value, s->key);
+    }
+
+    mm_buf_puts(b, "},\"warnings\":[");
+    for (const mm_warn_node *w = r->warnings.head; w; w = w->next) {
+        if (w != r->warnings.head)
+            mm_buf_char(b, ',');
+        mm_buf_str(b, w->text);
+    }
+    mm_buf_puts(b, "],\"elapsed_us\":");
+    mm_buf_int(b, elapsed_us);
+    mm_buf_char(b, '}');
+}
+
+/* ---- solving --------------------------------------------------------------- */
+
+static int find_param(const mm_exercise *ex, const char *name, size_t len)
+{
+    for (int i = 0; i < ex->n_params; i++)
+        if (strlen(ex->params[i].name) == len && memcmp(ex->params[i].name, name, len) == 0)
+            return i;
+    return -1;
+}
+
+static int unknown_param(const mm_exercise *ex, const mm_input *in, mm_error *err)
+{
+    char shown[40], list[120] = "";
+    size_t n = in->name_len < sizeof shown - 1 ? in->name_len : sizeof shown - 1;
+    for (size_t i = 0; i < n; i++)
+        shown[i] = (in->name[i] >= 0x20 && in->name[i] < 0x7f) ? in->name[i] : '?';
+    shown[n] = '\0';
+    for (int i = 0; i < ex->n_params; i++) {
+        size_t l = strlen(list);
+        snprintf(list + l, sizeof list - l, "%s%s", i ? ", " : "", ex->params[i].name);
+    }
+    return mm_error_set(err, MM_EPARAM, shown, "%s has no parameter '%s'; its parameters are %s",
+                        ex->id, shown, list);
+}
+
+int mm_api_solve(const mm_exercise *ex, const mm_input *in, int n_in, mm_buf *out)
+{
+    mm_result res;
+    mm_value vals[MM_MAX_PARAMS];
+    int given[MM_MAX_PARAMS] = {0};
+    mm_error err;
+    int status;
+
+    mm_error_clear(&err);
+    mm_result_init(&res, MM_REQ_MEM_CAP);
+    mm_buf_reset(out);
+
+    int rc = MM_OK;
+    for (int i = 0; i < n_in && rc == MM_OK; i++) {
+        int k = find_param(ex, in[i].name, in[i].name_len);
+        if (k < 0)
+            rc = unknown_param(ex, &in[i], &err);
+        else if (given[k]++)
+            rc = mm_error_set(&err, MM_EVALUE, ex->params[k].name, "%s is given twice; give it once",
+                              ex->params[k].name);
+        else
+            rc = mm_param_parse(&ex->params[k], in[i].text, in[i].text_len, &vals[k], &res, &err);
+    }
+    for (int k = 0; k < ex->n_params && rc == MM_OK; k++)
+        if (!given[k])
+            rc = mm_param_default(&ex->params[k], &vals[k], &res, &err);
+
+    if (rc == MM_OK && ex->check)
+        rc = ex->check(vals, &err);
+    long long t0 = now_us();
+    if (rc == MM_OK)
+        rc = ex->solve(vals, &res, &err);
+    long long elapsed = now_us() - t0;
+
+    if (res.over_cap) {
+        mm_error_set(&err, MM_ETOOBIG, "", "this request needs more than %u MB of memory; "
+                     "choose smaller sizes", MM_REQ_MEM_CAP >> 20);
+        rc = MM_ETOOBIG;
+    }
+    if (rc == MM_OK) {
+        write_answer(out, ex, vals, &res, elapsed);
+        if (out->nonfinite) {
+            char where[sizeof out->where];
+            memcpy(where, out->where, sizeof where);
+            mm_error_set(&err, MM_ENONFINITE, "", "the result '%s' is not a finite number "
+                         "(an overflow or an unstable step); change the parameters", where);
+            rc = MM_ENONFINITE;
+        } else if (out->failed) {
+            mm_error_set(&err, MM_ETOOBIG, "", "the answer would be over %u MB; choose smaller sizes",
+                         MM_ANSWER_MAX >> 20);
+            rc = MM_ETOOBIG;
+        }
+    }
+    if (rc != MM_OK) {
+        if (err.code == MM_OK)
+            err.code = rc;
+        if (mm_http_status(rc) >= 500)
+            fprintf(stderr, "mechmat: %s: internal error: %s (%s)\n", ex->id, err.msg,
+                    mm_strerror(rc));
+        status = mm_api_error(out, &err);
+    } else {
+        status = 200;
+    }
+    mm_result_release(&res);
+    return status;
+}
+
+/* A JSON value as parameter text (mm_params.h): numbers in shortest form,
+ * arrays joined by ',' and rows by ';'. */
+static int json_to_text(const cJSON *v, mm_buf *t, int depth, const char *name, mm_error *err)
+{
+    char num[MM_DTOA_BUFSIZE];
+    if (cJSON_IsNumber(v)) {
+        mm_buf_put(t, num, (size_t)mm_dtoa(v->valuedouble, num));
+        return MM_OK;
+    }
+    if (cJSON_IsString(v)) {
+        mm_buf_puts(t, v->valuestring);
+        return MM_OK;
+    }
+    if (cJSON_IsArray(v) && depth < 2) {
+        int i = 0;
+        for (const cJSON *e = v->child; e; e = e->next, i++) {
+            if (i)
+                mm_buf_char(t, depth == 0 && cJSON_IsArray(e) ? ';' : ',');
+            if (depth == 1 && cJSON_IsArray(e))
+                return mm_error_set(err, MM_EVALUE, name,
+                                    "%s: arrays nest at most two deep (rows of numbers)", name);
+            int rc = json_to_text(e, t, depth + 1, name, err);
+            if (rc != MM_OK)
+                return rc;
+        }
+        return MM_OK;
+    }
+    return mm_error_set(err, MM_EVALUE, name,
+                        "%s must be a number, a text or an array of numbers", name);
+}
+
+int mm_api_solve_json(const mm_exercise *ex, const char *body, size_t len, mm_buf *out)
+{
+    mm_error err;
+    mm_error_clear(&err);
+    const char *end = NULL;
+    cJSON *root = cJSON_ParseWithLengthOpts(body, len, &end, 0);
+    if (!root) {
+        size_t at = end ? (size_t)(end - body) : 0;
+        mm_error_set(&err, MM_EJSON, "", "the body is not valid JSON (at byte %zu); "
+                     "send {\"params\":{\"name\":value,...}}", at);
+        return mm_api_error(out, &err);
+    }
+    int status = 0;
+    const cJSON *params = NULL;
+    if (!cJSON_IsObject(root)) {
+        mm_error_set(&err, MM_EJSON, "", "the body must be an object {\"params\":{...}}");
+    } else {
+        for (const cJSON *e = root->child; e && !err.code; e = e->next) {
+            if (strcmp(e->string, "params") == 0 && cJSON_IsObject(e))
+                params = e;
+            else
+                mm_error_set(&err, MM_EJSON, "", "the body must be {\"params\":{...}}; "
+                             "'%.40s' is not expected there", e->string);
+        }
+    }
+    if (err.code) {
+        cJSON_Delete(root);
+        return mm_api_error(out, &err);
+    }
+
+    int n = cJSON_GetArraySize(params);
+    if (n > MM_MAX_PARAMS) {
+        cJSON_Delete(root);
+        mm_error_set(&err, MM_EPARAM, "", "%d parameters given; %s has %d", n, ex->id, ex->n_params);
+        return mm_api_error(out, &err);
+    }
+    mm_input in[MM_MAX_PARAMS] = {{0}};
+    mm_buf text[MM_MAX_PARAMS];
+    int k = 0, rc = MM_OK;
+    for (const cJSON *e = params ? params->child : NULL; e && rc == MM_OK; e = e->next, k++) {
+        mm_buf_init(&text[k], MM_BODY_MAX);
+        rc = json_to_text(e, &text[k], 0, e->string, &err);
+        in[k].name = e->string;
+        in[k].name_len = strlen(e->string);
+        in[k].text = text[k].p ? text[k].p : "";
+        in[k].text_len = text[k].len;
+    }
+    if (rc == MM_OK)
+        status = mm_api_solve(ex, in, k, out);
+    else
+        status = mm_api_error(out, &err);
+    for (int i = 0; i < k; i++)
+        mm_buf_free(&text[i]);
+    cJSON_Delete(root);
+    return status;
+}
+
+/* ---- cached documents -------------------------------------------------------- */
+
+static char *read_file(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    mm_buf b;
+    mm_buf_init(&b, 4u << 20);
+    char chunk[8192];
+    size_t n;
+    while ((n = fread(chunk, 1, sizeof chunk, f)) > 0)
+        mm_buf_put(&b, chunk, n);
+    fclose(f);
+    if (b.failed) {
+        mm_buf_free(&b);
+        return NULL;
+    }
+    return mm_buf_take(&b, len);
+}
+
+/* Metadata of one exercise; runs it at its defaults to list its outputs. */
+static char *build_meta(const mm_exercise *ex, const char *root, size_t *len)
+{
+    mm_buf b;
+    mm_buf_init(&b, 8u << 20);
+
+    char path[4096];
+    size_t md_len = 0;
+    snprintf(path, sizeof path, "%s/%s", root, ex->theory ? ex->theory : "");
+    char *md = ex->theory ? read_file(path, &md_len) : NULL;
+    if (!md)
+        fprintf(stderr, "mechmat: %s: no theory text at %s\n", ex->id, path);
+    char *html = md ? mm_theory_html(md, md_len) : NULL;
+
+    mm_buf_char(&b, '{');
+    write_catalog_fields(&b, ex);
+    mm_buf_puts(&b, ",\"theory\":");
+    mm_buf_str(&b, md ? md : "");
+    mm_buf_puts(&b, ",\"theory_html\":");
+    mm_buf_str(&b, html ? html : "");
+    free(md);
+    free(html);
+
+    mm_buf_puts(&b, ",\"params\":[");
+    for (int i = 0; i < ex->n_params; i++) {
+        if (i)
+            mm_buf_char(&b, ',');
+        write_param_meta(&b, &ex->params[i]);
+    }
+    mm_buf_puts(&b, "],\"outputs\":[");
+
+    /* outputs: what the default solve produces */
+    mm_result res;
+    mm_value vals[MM_MAX_PARAMS];
+    mm_error err;
+    mm_error_clear(&err);
+    mm_result_init(&res, MM_REQ_MEM_CAP);
+    int rc = MM_OK;
+    for (int k = 0; k < ex->n_params && rc == MM_OK; k++)
+        rc = mm_param_default(&ex->params[k], &vals[k], &res, &err);
+    if (rc == MM_OK)
+        rc = ex->solve(vals, &res, &err);
+    if (rc != MM_OK)
+        fprintf(stderr, "mechmat: %s: the default solve fails: %s\n", ex->id, err.msg);
+    int first = 1;
+    for (const mm_scalar_node *s = rc ? NULL : res.scalars.head; s; s = s->next, first = 0) {
+        mm_buf_puts(&b, first ? "{\"kind\":\"scalar\",\"name\":" : ",{\"kind\":\"scalar\",\"name\":");
+        mm_buf_str(&b, s->name);
+        mm_buf_puts(&b, ",\"label\":");
+        mm_buf_str(&b, s->label);
+        mm_buf_puts(&b, ",\"unit\":");
+        mm_buf_str(&b, s->unit);
+        mm_buf_char(&b, '}');
+    }
+    for (const mm_series_node *s = rc ? NULL : res.series.head; s; s = s->next, first = 0) {
+        mm_buf_puts(&b, first ? "{\"kind\":\"series\",\"name\":" : ",{\"kind\":\"series\",\"name\":");
+        mm_buf_str(&b, s->name);
+        mm_buf_puts(&b, ",\"label\":");
+        mm_buf_str(&b, s->label);
+        mm_buf_puts(&b, ",\"unit\":");
+        mm_buf_str(&b, s->unit);
+        mm_buf_puts(&b, ",\"x_label\":");
+        mm_buf_str(&b, s->x_label);
+        mm_buf_puts(&b, ",\"x_unit\":");
+        mm_buf_str(&b, s->x_unit);
+        mm_buf_char(&b, '}');
+    }
+    for (const mm_table_node *t = rc ? NULL : res.tables.head; t; t = t->next, first = 0) {
+        mm_buf_puts(&b, first ? "{\"kind\":\"table\",\"name\":" : ",{\"kind\":\"table\",\"name\":");
+        mm_buf_str(&b, t->name);
+        mm_buf_puts(&b, ",\"columns\":");
+        write_strings(&b, t->columns, t->t.ncols);
+        mm_buf_puts(&b, ",\"units\":");
+        write_strings(&b, t->units, t->t.ncols);
+        mm_buf_char(&b, '}');
+    }
+    mm_result_release(&res);
+
+    mm_buf_puts(&b, "],\"references\":[");
+    for (int i = 0; ex->references && ex->references[i]; i++) {
+        if (i)
+            mm_buf_char(&b, ',');
+        mm_buf_str(&b, ex->references[i]);
+    }
+    mm_buf_puts(&b, "]}");
+    if (b.failed || b.nonfinite) {
+        mm_buf_free(&b);
+        return NULL;
+    }
+    return mm_buf_take(&b, len);
+}
+
+mm_api *mm_api_alloc(const char *root, mm_error *err)
+{
+    mm_api *api = calloc(1, sizeof *api);
+    if (!api) {
+        mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return NULL;
+    }
+    api->meta = calloc((size_t)mm_exercise_count + 1, sizeof *api->meta);
+    api->meta_len = calloc((size_t)mm_exercise_count + 1, sizeof *api->meta_len);
+    if (!api->meta || !api->meta_len)
+        goto fail;
+
+    for (int i = 0; i < mm_exercise_count; i++) {
+        const mm_exercise *ex = mm_exercises[i];
+        if (ex->n_params > MM_MAX_PARAMS || mm_params_check(ex, err) != MM_OK) {
+            if (ex->n_params > MM_MAX_PARAMS)
+                mm_error_set(err, MM_EINTERNAL, "", "%s has over %d parameters", ex->id, MM_MAX_PARAMS);
+            goto fail;
+        }
+        api->meta[i] = build_meta(ex, root, &api->meta_len[i]);
+        if (!api->meta[i]) {
+            mm_error_set(err, MM_EINTERNAL, "", "%s: metadata could not be written", ex->id);
+            goto fail;
+        }
+    }
+
+    mm_buf b;
+    mm_buf_init(&b, 1u << 20);
+    mm_buf_puts(&b, "{\"status\":\"ok\",\"version\":\"" MM_VERSION "\",\"exercises\":");
+    mm_buf_int(&b, mm_exercise_count);
+    mm_buf_char(&b, '}');
+    api->health = mm_buf_take(&b, &api->health_len);
+
+    mm_buf_init(&b, 1u << 20);
+    mm_buf_char(&b, '[');
+    for (int i = 0; i < mm_exercise_count; i++) {
+        if (i)
+            mm_buf_char(&b, ',');
+        mm_buf_char(&b, '{');
+        write_catalog_fields(&b, mm_exercises[i]);
+        mm_buf_char(&b, '}');
+    }
+    mm_buf_char(&b, ']');
+    api->catalog = mm_buf_take(&b, &api->catalog_len);
+    if (!api->health || !api->catalog) {
+        mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        goto fail;
+    }
+    return api;
+fail:
+    mm_api_free(api);
+    return NULL;
+}
+
+void mm_api_free(mm_api *api)
+{
+    if (!api)
+        return;
+    for (int i = 0; api->meta && i < mm_exercise_count; i++)
+        free(api->meta[i]);
+    free(api->meta);
+    free(api->meta_len);
+    free(api->health);
+    free(api->catalog);
+    free(api);
+}
+
+const char *mm_api_health(const mm_api *api, size_t *len)
+{
+    *len = api->health_len;
+    return api->health;
+}
+
+const char *mm_api_catalog(const mm_api *api, size_t *len)
+{
+    *len = api->catalog_len;
+    return api->catalog;
+}
+
+const char *mm_api_meta(const mm_api *api, const char *id, size_t *len)
+{
+    for (int i = 0; i < mm_exercise_count; i++)
+        if (strcmp(mm_exercises[i]->id, id) == 0) {
+            *len = api->meta_len[i];
+            return api->meta[i];
+        }
+    return NULL;
+}

@@ -1,0 +1,26 @@
+/* mm_dtoa.h — shortest round-trip text of a double, for JSON.
+ *
+ * Uses Google's double-conversion (Debian libdouble-conversion), the
+ * algorithm browsers use for Number.prototype.toString: the output is the
+ * shortest decimal that reads back to the same double, e.g. 0.1 -> "0.1",
+ * 1e21 -> "1e+21", 1/3 -> "0.3333333333333333".  Valid JSON for every
+ * finite value.
+ */
+#ifndef MM_DTOA_H
+#define MM_DTOA_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define MM_DTOA_BUFSIZE 32
+
+/* Write v into buf (at least MM_DTOA_BUFSIZE bytes), NUL-terminated, and
+ * return the length.  v must be finite (returns 0 and writes "" if not). */
+int mm_dtoa(double v, char *buf);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

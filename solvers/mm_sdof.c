@@ -1,0 +1,128 @@
+/* mm_sdof.c — closed-form 1-DOF response (see mm_sdof.h for the formulas). */
+#include "mm_sdof.h"
+
+#include <math.h>
+
+int mm_sdof_check(const mm_sdof *s, mm_error *err)
+{
+    const struct { const char *name; double v; } f[] = {
+        {"m", s->m}, {"c", s->c}, {"k", s->k}, {"F0", s->F0},
+        {"omega", s->omega}, {"x0", s->x0}, {"v0", s->v0},
+    };
+    for (unsigned i = 0; i < sizeof f / sizeof f[0]; i++)
+        if (!isfinite(f[i].v))
+            return mm_error_set(err, MM_EVALUE, f[i].name, "%s must be a finite number", f[i].name);
+    if (!(s->m > 0))
+        return mm_error_set(err, MM_ERANGE, "m", "m must be > 0 kg; got %g", s->m);
+    if (!(s->k > 0))
+        return mm_error_set(err, MM_ERANGE, "k", "k must be > 0 N/m; got %g", s->k);
+    if (!(s->c >= 0))
+        return mm_error_set(err, MM_ERANGE, "c", "c must be >= 0 N s/m; got %g", s->c);
+    if (!(s->omega >= 0))
+        return mm_error_set(err, MM_ERANGE, "omega", "omega must be >= 0 rad/s; got %g", s->omega);
+    return MM_OK;
+}
+
+void mm_sdof_props_get(const mm_sdof *s, mm_sdof_props *p)
+{
+    p->omega_n = sqrt(s->k / s->m);
+    p->zeta = s->c / (2.0 * sqrt(s->k * s->m));
+    p->regime = fabs(p->zeta - 1.0) <= 1e-12 ? MM_SDOF_CRITICAL
+              : p->zeta < 1.0                 ? MM_SDOF_UNDER
+                                              : MM_SDOF_OVER;
+    p->omega_d = p->regime == MM_SDOF_UNDER ? p->omega_n * sqrt((1 - p->zeta) * (1 + p->zeta)) : 0.0;
+
+    double re = s->k - s->m * s->omega * s->omega;   /* dynamic stiffness k - m w^2 + i c w */
+    double im = s->c * s->omega;
+    p->resonant = (re == 0.0 && im == 0.0);
+    if (p->resonant) {
+        p->X = 0.0;
+        p->phase = M_PI / 2;
+        p->magnification = 0.0;
+    } else {
+        double mod = hypot(re, im);
+        p->X = s->F0 / mod;
+        p->phase = atan2(im, re);                     /* in [0, pi] since im >= 0 */
+        p->magnification = s->k / mod;
+    }
+}
+
+/* sin(x)/x and sinh(x)/x, accurate near 0. */
+static double sinc(double x)
+{
+    if (fabs(x) < 1e-4)
+        return 1.0 - x * x / 6.0 * (1.0 - x * x / 20.0);
+    return sin(x) / x;
+}
+
+static double sinhc(double x)
+{
+    if (fabs(x) < 1e-4)
+        return 1.0 + x * x / 6.0 * (1.0 + x * x / 20.0);
+    return sinh(x) / x;
+}
+
+/* e^(-a t) [A C(t) + B S(t)] and its derivative, lambda = omega_n^2 (1 - zeta^2). */
+static double homogeneous(double a, double lambda, double A, double B, double t, double *v)
+{
+    double C, S, Cd, Sd;   /* C, S and their time derivatives: C' = -lambda S, S' = C */
+    if (lambda > 0) {
+        double w = sqrt(lambda);
+        C = cos(w * t);
+        S = t * sinc(w * t);
+    } else if (lambda < 0) {
+        double mu = sqrt(-lambda);
+        C = cosh(mu * t);
+        S = t * sinhc(mu * t);
+    } else {
+        C = 1.0;
+        S = t;
+    }
+    Cd = -lambda * S;
+    Sd = C;
+    double e = exp(-a * t);
+    if (v)
+        *v = e * (A * Cd + B * Sd - a * (A * C + B * S));
+    return e * (A * C + B * S);
+}
+
+double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
+{
+    double wn = p->omega_n, w = s->omega;
+    double a = p->zeta * wn;                                   /* decay rate c / 2m */
+    double lambda = p->regime == MM_SDOF_CRITICAL ? 0.0 : wn * wn * (1 - p->zeta) * (1 + p->zeta);
+
+    if (s->c == 0.0 && s->F0 != 0.0) {
+        /* undamped: x = x0 cos + v0 S + F0/m (cos w t - cos wn t)/(wn^2 - w^2),
+         * the last term as t sin(s t) sinc(d t) / (2 s)... see the header */
+        double sm = 0.5 * (wn + w), d = 0.5 * (wn - w);
+        double vh, xh = homogeneous(0.0, wn * wn, s->x0, s->v0, t, &vh);
+        double g = t * sin(sm * t) * sinc(d * t) / (2.0 * sm);  /* = (cos wt - cos wn t)/(wn^2 - w^2) */
+        /* g' = [wn sin wn t - w sin w t] / (wn^2 - w^2), written stably:
+         *    = [cos(sm t) sin(d t) (wn + w)/2 ... ] — use the product rule on
+         *    g = (t/(2 sm)) sin(sm t) sinc(d t) */
+        double sd = sinc(d * t);
+        double dsinc = fabs(d * t) < 1e-4 ? -d * d * t / 3.0
+                                          : d * (cos(d * t) - sd) / (d * t);  /* d/dt sinc(d t) */
+        double gd = (sin(sm * t) * sd + t * sm * cos(sm * t) * sd + t * sin(sm * t) * dsinc) / (2.0 * sm);
+        if (v)
+            *v = vh + s->F0 / s->m * gd;
+        return xh + s->F0 / s->m * g;
+    }
+
+    /* damped (or free): steady state plus the homogeneous part that meets the
+     * initial conditions */
+    double xp0 = 0, vp0 = 0, xp = 0, vp = 0;
+    if (s->F0 != 0.0) {
+        xp0 = p->X * cos(-p->phase);
+        vp0 = -p->X * w * sin(-p->phase);
+        xp = p->X * cos(w * t - p->phase);
+        vp = -p->X * w * sin(w * t - p->phase);
+    }
+    double A = s->x0 - xp0;
+    double B = (s->v0 - vp0) + a * A;                          /* from x_h'(0) = -a A + B */
+    double vh, xh = homogeneous(a, lambda, A, B, t, &vh);
+    if (v)
+        *v = vh + vp;
+    return xh + xp;
+}

@@ -1,0 +1,61 @@
+/* mm_sdof.h — the closed-form response of one mass on a spring and damper.
+ *
+ *     m x'' + c x' + k x = F0 cos(omega t),   x(0) = x0,  x'(0) = v0
+ *
+ * The reference that the 1-DOF exercises check their time integrators
+ * against, so it is written to stay accurate where textbook formulas lose
+ * digits:
+ *   - one formula for every damping regime: with lambda = omega_n^2 (1 - zeta^2),
+ *       x_h(t) = e^(-zeta omega_n t) [ A C(t) + B S(t) ],
+ *       C = cos(sqrt(lambda) t),  S = sin(sqrt(lambda) t) / sqrt(lambda)
+ *     (cosh and sinh for lambda < 0, C = 1 and S = t at lambda = 0), with S
+ *     computed through sinc so that it is continuous through critical
+ *     damping: zeta = 1 - 1e-12, 1 and 1 + 1e-12 give the same numbers;
+ *   - without damping, the forced part is written as the product
+ *       (cos omega t - cos omega_n t) / (omega_n^2 - omega^2)
+ *         = t sin(s t) sinc(d t) / s,   s = (omega_n + omega)/2, d = (omega_n - omega)/2,
+ *     which stays exact at and near resonance, where it becomes
+ *     t sin(omega t) / (2 omega): the growth of undamped resonance.
+ * All quantities SI: m [kg], c [N s/m], k [N/m], F0 [N], omega [rad/s].
+ */
+#ifndef MM_SDOF_H
+#define MM_SDOF_H
+
+#include "mm_status.h"
+
+enum mm_sdof_regime {
+    MM_SDOF_UNDER = 0,     /* zeta < 1: decaying oscillation */
+    MM_SDOF_CRITICAL = 1,  /* zeta = 1 (to 1e-12): fastest return without overshoot */
+    MM_SDOF_OVER = 2       /* zeta > 1: creeping return */
+};
+
+typedef struct mm_sdof {
+    double m, c, k;        /* mass [kg], damping [N s/m], stiffness [N/m] */
+    double F0, omega;      /* forcing amplitude [N] and frequency [rad/s]; F0 = 0: free */
+    double x0, v0;         /* initial displacement [m] and velocity [m/s] */
+} mm_sdof;
+
+typedef struct mm_sdof_props {
+    double omega_n;        /* natural frequency sqrt(k/m) [rad/s] */
+    double zeta;           /* damping ratio c / (2 sqrt(k m)) */
+    double omega_d;        /* damped frequency omega_n sqrt(1 - zeta^2) [rad/s]; 0 unless under */
+    int regime;            /* enum mm_sdof_regime */
+    int resonant;          /* 1: c = 0 and omega = omega_n, no steady state */
+    double X;              /* steady amplitude F0 / |k - m omega^2 + i c omega| [m]; 0 if resonant */
+    double phase;          /* lag of the steady state behind the force, in [0, pi] [rad] */
+    double magnification;  /* X / (F0/k), dimensionless (1/|1 - r^2 + 2 i zeta r|) */
+} mm_sdof_props;
+
+/* Validate: m > 0, k > 0, c >= 0, omega >= 0, all finite.  Returns MM_OK,
+ * MM_EVALUE (non-finite; param names the field) or MM_ERANGE. */
+int mm_sdof_check(const mm_sdof *s, mm_error *err);
+
+/* The derived properties of s (s must pass mm_sdof_check).  Cannot fail. */
+void mm_sdof_props_get(const mm_sdof *s, mm_sdof_props *p);
+
+/* The exact displacement at time t >= 0 [m]; the velocity [m/s] into *v if
+ * v is not NULL.  Valid in every regime, also at undamped resonance.
+ * s must pass mm_sdof_check.  Cannot fail. */
+double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v);
+
+#endif

@@ -1,0 +1,123 @@
+/* test_json.c — the JSON writer and the shortest number form, checked by
+ * reading the output back with cJSON and strtod (independent parsers). */
+#include "mm_test.h"
+
+#include <cJSON.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mm_dtoa.h"
+#include "mm_json.h"
+
+static void numbers_should_read_back_exactly_in_the_shortest_form(void **state)
+{
+    (void)state;
+    char buf[MM_DTOA_BUFSIZE];
+    mm_dtoa(0.1, buf);
+    assert_string_equal(buf, "0.1");
+    mm_dtoa(100.0, buf);
+    assert_string_equal(buf, "100");
+    mm_dtoa(-0.0, buf);
+    assert_string_equal(buf, "0");
+    mm_dtoa(1e21, buf);
+    assert_string_equal(buf, "1e+21");
+    mm_dtoa(1.0 / 3.0, buf);
+    assert_string_equal(buf, "0.3333333333333333");
+    /* a million pseudo-random doubles of every magnitude round-trip */
+    unsigned long long x = 88172645463325252ULL;
+    for (int i = 0; i < 1000000; i++) {
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;           /* xorshift64 */
+        double v;
+        unsigned long long bits = x & ~(0x7ffULL << 52);
+        bits |= (unsigned long long)(x % 2046 + 1) << 52;   /* finite exponents only */
+        memcpy(&v, &bits, sizeof v);
+        int n = mm_dtoa(v, buf);
+        assert_true(n > 0 && n < MM_DTOA_BUFSIZE);
+        if (strtod(buf, NULL) != v)
+            fail_msg("%.17g printed as %s", v, buf);
+        if (i < 100000) {              /* shortest: no fewer digits round-trip */
+            int digits = 0, lead = 1;
+            for (const char *c = buf; *c && *c != 'e'; c++) {
+                if (*c >= '1' && *c <= '9')
+                    lead = 0;
+                if (*c >= '0' && *c <= '9' && !lead)
+                    digits++;
+            }
+            if (!strchr(buf, '.') && !strchr(buf, 'e'))   /* integer: trailing zeros are places */
+                for (size_t k = strlen(buf); k > 1 && buf[k - 1] == '0'; k--)
+                    digits--;
+            char tmp[40];
+            for (int p = 1; p < 17; p++) {
+                snprintf(tmp, sizeof tmp, "%.*g", p, v);
+                if (strtod(tmp, NULL) == v) {
+                    if (p < digits)
+                        fail_msg("%.17g: %s has %d digits but %s (%d) round-trips", v, buf,
+                                 digits, tmp, p);
+                    break;
+                }
+            }
+        }
+    }
+}
+
+static void strings_should_be_escaped_into_valid_json(void **state)
+{
+    (void)state;
+    mm_buf b;
+    mm_buf_init(&b, 1 << 20);
+    const char nasty[] = "quote\" back\\ nl\n tab\t ctl\x01 bad\xff\xfe utf8 \xc3\xa9 overlong \xc0\xaf";
+    mm_buf_puts(&b, "{\"s\":");
+    mm_buf_strn(&b, nasty, sizeof nasty - 1);
+    mm_buf_puts(&b, ",\"n\":");
+    mm_buf_num(&b, 2.5, "n");
+    mm_buf_char(&b, '}');
+    cJSON *j = cJSON_Parse(b.p);
+    assert_non_null(j);
+    const char *s = cJSON_GetObjectItem(j, "s")->valuestring;
+    assert_non_null(strstr(s, "quote\" back\\ nl\n tab\t ctl\x01 bad"));
+    assert_non_null(strstr(s, "\xc3\xa9"));                 /* valid UTF-8 kept */
+    assert_null(strstr(s, "\xff"));                         /* invalid replaced */
+    assert_null(strstr(s, "\xc0\xaf"));                     /* overlong replaced */
+    assert_true(cJSON_GetObjectItem(j, "n")->valuedouble == 2.5);
+    cJSON_Delete(j);
+    mm_buf_free(&b);
+}
+
+static void a_nonfinite_number_should_be_flagged_not_written(void **state)
+{
+    (void)state;
+    mm_buf b;
+    mm_buf_init(&b, 1 << 20);
+    mm_buf_num(&b, 1.0, "a");
+    assert_false(b.nonfinite);
+    mm_buf_num(&b, NAN, "series x");
+    mm_buf_num(&b, INFINITY, "later");
+    assert_true(b.nonfinite);
+    assert_string_equal(b.where, "series x");
+    assert_null(strstr(b.p, "nan"));
+    assert_null(strstr(b.p, "inf"));
+    mm_buf_free(&b);
+}
+
+static void the_buffer_should_stop_at_its_limit(void **state)
+{
+    (void)state;
+    mm_buf b;
+    mm_buf_init(&b, 100);
+    for (int i = 0; i < 50; i++)
+        mm_buf_puts(&b, "0123456789");
+    assert_true(b.failed);
+    assert_true(b.len < 100);
+    mm_buf_free(&b);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(numbers_should_read_back_exactly_in_the_shortest_form),
+        cmocka_unit_test(strings_should_be_escaped_into_valid_json),
+        cmocka_unit_test(a_nonfinite_number_should_be_flagged_not_written),
+        cmocka_unit_test(the_buffer_should_stop_at_its_limit),
+    };
+    return cmocka_run_group_tests_name("json", tests, NULL, NULL);
+}

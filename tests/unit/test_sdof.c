@@ -1,0 +1,128 @@
+/* test_sdof.c — the closed-form 1-DOF response (mm_sdof) against the
+ * equation itself and against limiting cases written out by hand. */
+#include "mm_test.h"
+
+#include "mm_sdof.h"
+
+static double x_of(const mm_sdof *s, double t, double *v)
+{
+    mm_sdof_props p;
+    mm_sdof_props_get(s, &p);
+    return mm_sdof_x(s, &p, t, v);
+}
+
+/* m x'' + c x' + k x - F0 cos wt by central differences of the returned
+ * velocity: O(h^2) = 1e-10 relative with h = 1e-5 s. */
+static double residual(const mm_sdof *s, double t)
+{
+    const double h = 1e-5;
+    double vp, vm, v, x = x_of(s, t, &v);
+    x_of(s, t + h, &vp);
+    x_of(s, t - h, &vm);
+    double a = (vp - vm) / (2 * h);
+    return s->m * a + s->c * v + s->k * x - s->F0 * cos(s->omega * t);
+}
+
+static void response_should_satisfy_the_equation_in_every_regime(void **state)
+{
+    (void)state;
+    const double cs[] = {0.0, 2.0, 19.999, 20.0, 20.001, 60.0};  /* zeta 0 .. 3 for m=1, k=100 */
+    for (unsigned i = 0; i < sizeof cs / sizeof cs[0]; i++) {
+        mm_sdof s = {.m = 1, .c = cs[i], .k = 100, .F0 = 1, .omega = 8, .x0 = 0.01, .v0 = -0.3};
+        for (double t = 0.05; t < 5; t += 0.37) {
+            /* force scale: k * |x| ~ 1 N; differences leave ~1e-8 N */
+            check_abs(residual(&s, t), 0.0, 1e-6, "residual of m x'' + c x' + k x = F");
+        }
+        double v0, x0 = x_of(&s, 0, &v0);
+        check_abs(x0, s.x0, 1e-15, "x(0)");
+        check_abs(v0, s.v0, 1e-14, "v(0)");
+    }
+}
+
+static void critical_damping_should_match_its_textbook_form(void **state)
+{
+    (void)state;
+    /* zeta = 1: x = (x0 + (v0 + wn x0) t) e^(-wn t), wn = 10 */
+    mm_sdof s = {.m = 1, .c = 20, .k = 100, .x0 = 0.01, .v0 = 0.5};
+    for (double t = 0; t < 2; t += 0.1) {
+        double want = (0.01 + (0.5 + 10 * 0.01) * t) * exp(-10 * t);
+        check_abs(x_of(&s, t, NULL), want, 1e-17, "critical damping closed form");
+    }
+    /* continuity through critical damping: zeta = 1 -+ 1e-13 moves x by about
+     * 1e-13 x (the physics), so 1e-14 m; a textbook two-root formula would
+     * lose everything here (its constants grow like 1/sqrt(zeta^2 - 1)) */
+    mm_sdof lo = s, hi = s;
+    lo.c = 20 * (1 - 1e-13);
+    hi.c = 20 * (1 + 1e-13);
+    for (double t = 0; t < 2; t += 0.1) {
+        check_abs(x_of(&lo, t, NULL), x_of(&s, t, NULL), 1e-14, "just under critical");
+        check_abs(x_of(&hi, t, NULL), x_of(&s, t, NULL), 1e-14, "just over critical");
+    }
+}
+
+static void undamped_resonance_should_grow_like_t_sin_t(void **state)
+{
+    (void)state;
+    /* x'' + x = cos t from rest: x = t sin t / 2 */
+    mm_sdof s = {.m = 1, .c = 0, .k = 1, .F0 = 1, .omega = 1};
+    mm_sdof_props p;
+    mm_sdof_props_get(&s, &p);
+    assert_true(p.resonant);
+    for (double t = 0; t < 200; t += 3.3)
+        check_abs(x_of(&s, t, NULL), 0.5 * t * sin(t), 1e-12 * (1 + t), "t sin t / 2");
+    /* a hair off resonance: the beat formula, not a cancellation of huge terms */
+    s.omega = 1 + 1e-9;
+    for (double t = 0; t < 200; t += 3.3) {
+        /* (cos wt - cos t)/(1 - w^2) with w = 1 + d, expanded in d by hand:
+         * t sin t / 2 + d (t^2 cos t - t sin t) / 4 + O(d^2 t^3), and
+         * d^2 t^3 < 1e-11 here.  d is the double nearest w - 1.
+         * (Evaluating the quotient directly would lose ~7 digits.) */
+        double d = s.omega - 1;
+        double want = 0.5 * t * sin(t) + d * (t * t * cos(t) - t * sin(t)) / 4;
+        check_abs(x_of(&s, t, NULL), want, 1e-10 * (1 + t), "near resonance");
+    }
+}
+
+static void steady_state_should_follow_the_dynamic_stiffness(void **state)
+{
+    (void)state;
+    /* the numbers: m=2, k=50, c=1, F0=3, w=4 */
+    mm_sdof s = {.m = 2, .c = 1, .k = 50, .F0 = 3, .omega = 4};
+    mm_sdof_props p;
+    mm_sdof_props_get(&s, &p);
+    double want = 3 / sqrt((50 - 2 * 16.0) * (50 - 2 * 16.0) + 16.0);
+    check_rel(p.X, want, 1e-15, "X = F0 / |k - m w^2 + i c w|");
+    check_rel(p.phase, atan(4.0 / 18.0), 1e-15, "phase below resonance");
+    /* after 60 time constants the transient is e^-60: x is the steady state */
+    double t = 60 / (p.zeta * p.omega_n);
+    check_abs(x_of(&s, t, NULL), p.X * cos(s.omega * t - p.phase), 1e-15, "steady state");
+    /* above resonance the lag passes pi/2 */
+    s.omega = 10;
+    mm_sdof_props_get(&s, &p);
+    assert_true(p.phase > M_PI / 2 && p.phase < M_PI);
+}
+
+static void bad_models_should_be_refused_with_the_field_named(void **state)
+{
+    (void)state;
+    mm_error err;
+    mm_sdof s = {.m = -1, .c = 0, .k = 1};
+    assert_int_equal(mm_sdof_check(&s, &err), MM_ERANGE);
+    assert_string_equal(err.param, "m");
+    s.m = 1;
+    s.c = NAN;
+    assert_int_equal(mm_sdof_check(&s, &err), MM_EVALUE);
+    assert_string_equal(err.param, "c");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(response_should_satisfy_the_equation_in_every_regime),
+        cmocka_unit_test(critical_damping_should_match_its_textbook_form),
+        cmocka_unit_test(undamped_resonance_should_grow_like_t_sin_t),
+        cmocka_unit_test(steady_state_should_follow_the_dynamic_stiffness),
+        cmocka_unit_test(bad_models_should_be_refused_with_the_field_named),
+    };
+    return cmocka_run_group_tests_name("sdof", tests, NULL, NULL);
+}
