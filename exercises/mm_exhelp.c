@@ -56,12 +56,12 @@ int mm_ex_sdof_run(const mm_sdof *s, double t_end, int n, const double *t,
 
     mm_sdof_props p;
     mm_sdof_props_get(s, &p);
-    /* the size of the motion, for an absolute tolerance that means something */
-    double scale = fmax(fmax(fabs(s->x0), fabs(s->v0) / p.omega_n),
-                        fmax(fabs(s->F0) / s->k, p.resonant ? 0 : fabs(p.X)));
-    if (p.resonant)
-        scale = fmax(scale, fabs(s->F0) * t_end / (2 * s->m * p.omega_n));
-    if (scale == 0)
+    /* A first guess of the motion's size for the absolute tolerance; after
+     * the run, if the motion turned out much smaller, run again scaled to
+     * what it was (the integration scales itself; no reference is used). */
+    double scale = fmax(fmax(fabs(s->x0), fabs(s->v0) / fmax(p.omega_n, 1 / t_end)),
+                        p.resonant ? fabs(s->F0) * t_end / (2 * s->m * p.omega_n) : fabs(p.X));
+    if (!(scale > 0))
         scale = 1;
 
     mm_ode_problem prob = {.n = 2, .f = sdof_rhs, .params = (void *)s,
@@ -80,6 +80,14 @@ int mm_ex_sdof_run(const mm_sdof *s, double t_end, int n, const double *t,
     mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
     if (rc == MM_OK)
         rc = mm_ode_solve(&prob, &opt, w, &r, err);
+    double peak = 0;
+    for (int i = 0; rc == MM_OK && i < n; i++)
+        peak = fmax(peak, fabs(y[2 * i]));
+    if (rc == MM_OK && peak > 0 && peak < 0.1 * scale) {
+        scale = peak;
+        opt.atol = 1e-10 * scale;
+        rc = mm_ode_solve(&prob, &opt, w, &r, err);
+    }
     mm_ode_work_free(w);
     if (rc != MM_OK)
         return rc;
@@ -101,7 +109,8 @@ int mm_ex_sdof_run(const mm_sdof *s, double t_end, int n, const double *t,
     mm_res_method_stat(res, "error_estimate", r.err_sum);
 
     /* the whole response against the closed form: the worst point */
-    double worst = -1, xn = 0, xr = 0, peak = 0;
+    double worst = -1, xn = 0, xr = 0;
+    peak = 0;
     for (int i = 0; i < n; i += stride) {
         double ref = mm_sdof_x(s, &p, t[i], NULL);
         peak = fmax(peak, fabs(ref));

@@ -72,6 +72,16 @@ static double homogeneous(double a, double lambda, double A, double B, double t,
         S = t * sinc(w * t);
     } else if (lambda < 0) {
         double mu = sqrt(-lambda);
+        if (mu * t > 1.0) {
+            /* overdamped, far from critical: e^(-a t) cosh and sinh as two
+             * decaying exponentials, so that cosh(mu t) cannot overflow;
+             * a - mu = (a^2 - mu^2)/(a + mu) without cancellation */
+            double slow = exp(-(a * a + lambda) / (a + mu) * t), fast = exp(-(a + mu) * t);
+            double eC = 0.5 * (slow + fast), eS = 0.5 * (slow - fast) / mu;  /* e^(-at) C, e^(-at) S */
+            if (v)
+                *v = A * (-lambda * eS - a * eC) + B * (eC - a * eS);
+            return A * eC + B * eS;
+        }
         C = cosh(mu * t);
         S = t * sinhc(mu * t);
     } else {
