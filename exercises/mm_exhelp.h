@@ -14,7 +14,7 @@ void mm_linspace(double a, double b, int n, double *x);
 /* Largest |y[i]| over n values. */
 double mm_maxabs(const double *y, int n);
 
-/* Integrate the 1-DOF oscillator s from 0 to t_end with DOP853 (rtol 1e-10),
+/* Integrate the 1-DOF oscillator s from 0 to t_end with DOP853 (rtol 1e-9),
  * dense output onto t[0..n-1]; x and v receive displacement and velocity
  * (v may be NULL).  With stride > 0 it also reports the method and its
  * counters on res and checks the whole response against the closed form

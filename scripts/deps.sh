@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 debs=(
   gcc g++ make pkg-config
   libmicrohttpd-dev libcjson-dev liblapacke-dev libopenblas-serial-dev
-  libfftw3-dev libmuparser-dev libcmark-dev libdouble-conversion-dev
+  libfftw3-dev libmuparser-dev libcmark-dev libfmt-dev
   libcmocka-dev libcurl4-openssl-dev curl
   libgsl-dev wrk valgrind
   chromium

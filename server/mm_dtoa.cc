@@ -1,9 +1,10 @@
-// mm_dtoa.cc — the one C++ file: a C entry point to double-conversion's
-// shortest round-trip formatting (see mm_dtoa.h).
+// mm_dtoa.cc — the one C++ file: a C entry point to {fmt}'s shortest
+// round-trip formatting of doubles (Dragonbox), see mm_dtoa.h.
 #include "mm_dtoa.h"
 
 #include <cmath>
-#include <double-conversion/double-conversion.h>
+#include <fmt/compile.h>
+#include <fmt/format.h>
 
 extern "C" int mm_dtoa(double v, char *buf)
 {
@@ -11,12 +12,9 @@ extern "C" int mm_dtoa(double v, char *buf)
         buf[0] = '\0';
         return 0;
     }
-    // EcmaScript style: decimal for 1e-7 <= |v| < 1e21, exponent outside,
-    // "-0" printed as "0" (JSON has no use for the sign of zero).
-    const auto &conv = double_conversion::DoubleToStringConverter::EcmaScriptConverter();
-    double_conversion::StringBuilder sb(buf, MM_DTOA_BUFSIZE);
-    conv.ToShortest(v == 0.0 ? 0.0 : v, &sb);
-    int n = sb.position();
-    sb.Finalize();
-    return n;
+    // "{}" is the shortest text that reads back to v: 0.1, 100, 1e-07, 1e+21.
+    // -0 is written as 0 (JSON has no use for the sign of zero).
+    char *end = fmt::format_to(buf, FMT_COMPILE("{}"), v == 0.0 ? 0.0 : v);
+    *end = '\0';
+    return static_cast<int>(end - buf);
 }

@@ -1,6 +1,7 @@
 /* mm_http.c — libmicrohttpd glue: routing, bodies, static files, logging. */
 #include "mm_http.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -381,6 +382,28 @@ static void on_connection(void *cls, struct MHD_Connection *c, void **socket_ctx
         atomic_fetch_sub(&s->connections, 1);
 }
 
+/* Percent-decoding of the path and the query, in place.  Unlike the
+ * default, a %00 does not cut the text short (that would make
+ * "/index.html%00.txt" read as "/index.html"): it becomes a backslash,
+ * which no path and no number accepts, so the request fails as it should. */
+static size_t unescape(void *cls, struct MHD_Connection *c, char *s)
+{
+    (void)cls, (void)c;
+    char *w = s;
+    for (const char *r = s; *r; r++) {
+        if (r[0] == '%' && isxdigit((unsigned char)r[1]) && isxdigit((unsigned char)r[2])) {
+            char hex[3] = {r[1], r[2], '\0'};
+            char byte = (char)strtol(hex, NULL, 16);
+            *w++ = byte ? byte : '\\';
+            r += 2;
+        } else {
+            *w++ = *r;
+        }
+    }
+    *w = '\0';
+    return (size_t)(w - s);
+}
+
 /* ---- life cycle -------------------------------------------------------------- */
 
 mm_server *mm_server_start(const mm_server_opts *o, const mm_api *api, mm_error *err)
@@ -425,6 +448,7 @@ mm_server *mm_server_start(const mm_server_opts *o, const mm_api *api, mm_error 
         MHD_OPTION_LISTEN_BACKLOG_SIZE, (unsigned)1024,
         MHD_OPTION_NOTIFY_COMPLETED, on_completed, s,
         MHD_OPTION_NOTIFY_CONNECTION, on_connection, s,
+        MHD_OPTION_UNESCAPE_CALLBACK, unescape, NULL,
         MHD_OPTION_END);
     if (!s->d) {
         mm_error_set(err, MM_EINTERNAL, "port", "could not listen on %s:%d (in use?)", o->host, o->port);
