@@ -22,7 +22,11 @@ WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes \
             -Wmissing-prototypes -Wwrite-strings -Wundef -Wformat=2 \
             -Wno-format-nonliteral
 OPT      := -O2 -g
-ifneq ($(SANITIZE),)
+ifneq ($(FUZZ),)
+OPT      += -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
+            -fno-omit-frame-pointer
+LDSAN    := -fsanitize=address,undefined
+else ifneq ($(SANITIZE),)
 OPT      += -fsanitize=address,undefined -fno-sanitize-recover=all \
             -fno-omit-frame-pointer
 LDSAN    := -fsanitize=address,undefined
@@ -43,6 +47,7 @@ EX_SRC     := $(sort $(wildcard exercises/*.c exercises/*/*.c))
 SERVER_SRC := $(sort $(filter-out server/main.c,$(wildcard server/*.c)))
 SERVER_CXX := $(sort $(wildcard server/*.cc))
 UNIT_SRC   := $(sort $(wildcard tests/unit/test_*.c))
+FUZZ_NAMES := $(patsubst tests/fuzz/fuzz_%.c,%,$(sort $(wildcard tests/fuzz/fuzz_*.c)))
 BENCH_SRC  := $(sort $(wildcard tests/bench/bench_*.c))
 
 obj = $(patsubst %.c,$(BUILD)/obj/%.o,$(patsubst %.cc,$(BUILD)/obj/%.o,$(1)))
@@ -54,15 +59,18 @@ LIBS       := $(SERVER_LIB) $(EX_LIB) $(SOLVER_LIB)
 SERVER_BIN := $(BUILD)/mechmat-server
 UNIT_BINS  := $(patsubst tests/unit/%.c,$(BUILD)/tests/%,$(UNIT_SRC))
 BENCH_BINS := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
+REPLAY_BINS:= $(patsubst %,$(BUILD)/tests/test_fuzz_%,$(FUZZ_NAMES))
+FUZZ_BINS  := $(patsubst %,$(BUILD)/fuzz/fuzz_%,$(FUZZ_NAMES))
+FUZZ_SECONDS ?= 60
 
 ALL_OBJ := $(call obj,$(SOLVER_SRC) $(EX_SRC) $(SERVER_SRC) $(SERVER_CXX) server/main.c)
 
-.PHONY: all run test asan bench deps flags clean tests loadtest fuzz valgrind
+.PHONY: all run test asan bench deps flags clean tests loadtest fuzz fuzz-bins valgrind
 .DEFAULT_GOAL := all
 
 all: $(SERVER_BIN)
 
-tests: $(SERVER_BIN) $(UNIT_BINS)
+tests: $(SERVER_BIN) $(UNIT_BINS) $(REPLAY_BINS)
 
 # ---- build rules ------------------------------------------------------------
 $(BUILD)/obj/%.o: %.c
@@ -96,6 +104,24 @@ $(BUILD)/bench/%: $(BUILD)/obj/tests/bench/%.o $(LIBS)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS) $(TEST_LIBS) -lgsl
 
+# a fuzz target's committed corpus, replayed once as a regression test
+$(BUILD)/tests/test_fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) -Itests/unit $(PKG_CFLAGS) $(filter-out -MMD -MP,$(CFLAGS)) -DFUZZ_NAME='"$*"' \
+	    -o $@ tests/fuzz/fuzz_$*.c tests/fuzz/replay.c $(LIBS) $(LDSAN) $(LDLIBS) $(TEST_LIBS)
+
+# libFuzzer binaries (clang; make fuzz builds them in build/fuzz)
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(PKG_CFLAGS) $(filter-out -MMD -MP,$(CFLAGS)) -fsanitize=fuzzer \
+	    -o $@ $< $(LIBS) $(LDSAN) $(LDLIBS)
+
+fuzz-bins: $(FUZZ_BINS)
+
+$(BUILD)/load/loadtool: $(BUILD)/obj/tests/load/loadtool.o $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS) $(TEST_LIBS)
+
 $(BUILD)/obj/tests/%.o: tests/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) -Itests $(PKG_CFLAGS) $(CFLAGS) -c $< -o $@
@@ -124,6 +150,16 @@ valgrind: deps
 bench: deps
 	@$(MAKE) --no-print-directory all $(BENCH_BINS)
 	@BUILD=$(BUILD) tests/bench/run.sh
+
+# make fuzz: each target for FUZZ_SECONDS (default 60) from its committed
+# corpus; new inputs go to build/fuzz/corpus-NAME, crashes to build/fuzz/.
+fuzz: deps
+	@$(MAKE) --no-print-directory BUILD=build/fuzz CC=clang CXX=clang++ FUZZ=1 fuzz-bins
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) tests/fuzz/run.sh
+
+loadtest: deps
+	@$(MAKE) --no-print-directory all $(BUILD)/load/loadtool
+	@BUILD=$(BUILD) tests/load/run.sh
 
 flags:
 	@echo "CC       = $(CC)"

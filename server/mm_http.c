@@ -386,9 +386,8 @@ static void on_connection(void *cls, struct MHD_Connection *c, void **socket_ctx
  * default, a %00 does not cut the text short (that would make
  * "/index.html%00.txt" read as "/index.html"): it becomes a backslash,
  * which no path and no number accepts, so the request fails as it should. */
-static size_t unescape(void *cls, struct MHD_Connection *c, char *s)
+size_t mm_http_unescape(char *s)
 {
-    (void)cls, (void)c;
     char *w = s;
     for (const char *r = s; *r; r++) {
         if (r[0] == '%' && isxdigit((unsigned char)r[1]) && isxdigit((unsigned char)r[2])) {
@@ -402,6 +401,12 @@ static size_t unescape(void *cls, struct MHD_Connection *c, char *s)
     }
     *w = '\0';
     return (size_t)(w - s);
+}
+
+static size_t unescape(void *cls, struct MHD_Connection *c, char *s)
+{
+    (void)cls, (void)c;
+    return mm_http_unescape(s);
 }
 
 /* ---- life cycle -------------------------------------------------------------- */

@@ -35,6 +35,11 @@ void mm_server_stop(mm_server *s);
  * A directory maps to its index.html.  out gets the real path. */
 int mm_static_resolve(const char *root_real, const char *url_path, char *out, size_t size);
 
+/* Percent-decode s in place (path or query text); %00 becomes a backslash
+ * instead of ending the text, so that it can never hide what follows.
+ * Returns the new length.  Cannot fail. */
+size_t mm_http_unescape(char *s);
+
 /* The MIME type of a file name, by extension. */
 const char *mm_mime_type(const char *path);
 

@@ -1,0 +1,426 @@
+/* mm_poly.c — polynomial evaluation, roots and least-squares fit.
+ *
+ * Roots: companion matrix -> eigenvalues (mm_linalg_geev) -> Newton polish
+ * with compensated (double-double) evaluation -> error estimate per root,
+ * with clusters of roots treated as multiple roots.  Fit: Vandermonde in a
+ * centred, scaled variable -> SVD least squares (mm_linalg_lstsq) -> expand
+ * back to the original variable.  Contracts in mm_poly.h.
+ */
+#include "mm_poly.h"
+
+#include <assert.h>
+#include <complex.h>
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mm_linalg.h"
+
+#define U_ROUND (DBL_EPSILON / 2)   /* unit roundoff u */
+
+/* ==== evaluation ============================================================= */
+
+double mm_poly_eval(int ncoef, const double *p, double x, double *err_bound)
+{
+    assert(ncoef >= 1 && p);
+    double y = p[0], mu = fabs(y) / 2;
+    for (int k = 1; k < ncoef; k++) {
+        y = x * y + p[k];
+        mu = fabs(x) * mu + fabs(y);      /* Higham Alg. 5.1, running bound */
+    }
+    if (err_bound)
+        *err_bound = U_ROUND * (2 * mu - fabs(y));
+    return y;
+}
+
+/* ---- double-double arithmetic (Dekker, Knuth; Ogita-Rump-Oishi) ---------- */
+
+typedef struct dd { double hi, lo; } dd;
+
+static dd two_sum(double a, double b)
+{
+    double s = a + b, bb = s - a;
+    return (dd){s, (a - (s - bb)) + (b - bb)};
+}
+
+static dd fast_two_sum(double a, double b)     /* needs |a| >= |b| */
+{
+    double s = a + b;
+    return (dd){s, b - (s - a)};
+}
+
+static dd dd_add(dd a, dd b)
+{
+    dd s = two_sum(a.hi, b.hi);
+    return fast_two_sum(s.hi, s.lo + a.lo + b.lo);
+}
+
+static dd dd_mul_d(dd a, double b)
+{
+    double p = a.hi * b;
+    double e = fma(a.hi, b, -p) + a.lo * b;    /* fma: exact product error */
+    return fast_two_sum(p, e);
+}
+
+/* p(z) for complex z = zr + i zi, Horner in double-double: the result is
+ * as accurate as if computed with ~32 digits, so near a root it tells the
+ * true size of |p(z)| instead of rounding noise. */
+static double complex eval_dd(int d, const double *q, double complex z)
+{
+    double zr = creal(z), zi = cimag(z);
+    dd yr = {q[0], 0.0}, yi = {0.0, 0.0};
+    for (int k = 1; k <= d; k++) {
+        dd nr = dd_add(dd_mul_d(yr, zr), dd_mul_d(yi, -zi));
+        dd ni = dd_add(dd_mul_d(yr, zi), dd_mul_d(yi, zr));
+        yr = dd_add(nr, (dd){q[k], 0.0});
+        yi = ni;
+    }
+    return CMPLX(yr.hi + yr.lo, yi.hi + yi.lo);
+}
+
+/* p'(z) in ordinary complex arithmetic (it only scales the Newton step). */
+static double complex eval_deriv(int d, const double *q, double complex z)
+{
+    double complex y = d * q[0];
+    for (int k = 1; k < d; k++)
+        y = y * z + (double)(d - k) * q[k];
+    return y;
+}
+
+/* sum |q_k| |z|^(d-k): the size of the terms of p(z).  A relative change
+ * eps/2 in every coefficient changes p(z) by at most eps/2 times this. */
+static double abs_poly(int d, const double *q, double r)
+{
+    double s = fabs(q[0]);
+    for (int k = 1; k <= d; k++)
+        s = s * r + fabs(q[k]);
+    return s;
+}
+
+/* ==== roots ================================================================== */
+
+typedef struct root_work {
+    double complex z;
+    double e1;       /* first-order error estimate */
+    double err;
+    int cluster;     /* union-find parent */
+    int size;
+} root_work;
+
+static int find(root_work *w, int i)
+{
+    while (w[i].cluster != i)
+        i = w[i].cluster = w[w[i].cluster].cluster;   /* path halving */
+    return i;
+}
+
+/* Newton polish of root i: steps accepted only while |p| falls and the step
+ * stays within half the distance to the nearest other root. */
+static void polish(int d, const double *q, root_work *w, int n, int i)
+{
+    double complex z = w[i].z;
+    double complex pz = eval_dd(d, q, z);
+    double dmin = HUGE_VAL;
+    for (int k = 0; k < n; k++)
+        if (k != i)
+            dmin = fmin(dmin, cabs(w[k].z - z));
+    for (int it = 0; it < 8 && cabs(pz) > 0; it++) {
+        double complex dz = eval_deriv(d, q, z);
+        if (cabs(dz) == 0)
+            break;
+        double complex step = pz / dz;
+        if (!(cabs(step) <= 0.5 * dmin))
+            break;
+        double complex znew = z - step, pnew = eval_dd(d, q, znew);
+        if (!(cabs(pnew) < cabs(pz)))
+            break;
+        z = znew;
+        pz = pnew;
+        if (cabs(step) <= DBL_EPSILON * cabs(z))
+            break;                                     /* converged */
+    }
+    w[i].z = z;
+}
+
+/* Taylor coefficients t_k = p^(k)(c)/k!, k = 0..m, by repeated synthetic
+ * division (Horner's scheme for the shifted polynomial). */
+static void taylor(int d, const double *q, double complex c, int m,
+                   double complex *t, double complex *b)
+{
+    for (int k = 0; k <= d; k++)
+        b[k] = q[k];
+    for (int k = 0; k <= m; k++) {
+        for (int j = 1; j <= d - k; j++)
+            b[j] += c * b[j - 1];
+        t[k] = b[d - k];
+    }
+}
+
+/* Error estimates of mm_poly.h.  Clusters: roots i, k are linked when
+ * |z_i - z_k| <= 4 (err_i + err_k).  (For an m-fold root the computed roots
+ * lie on a circle of radius rho with neighbours ~2 pi rho / m apart, and the
+ * first-order estimate at each is ~rho/m, so the factor 4 links them for
+ * every m.)  A cluster of m gets the radius R from Fujiwara's bound on the
+ * roots of its Taylor polynomial sum_{k<=m} t_k h^k about the centroid c,
+ * with |t_0| enlarged by the coefficient uncertainty eps/2 * sum |q_k||c|^k:
+ *     R = 2 max_{k<m} (|t_k| / |t_m|)^(1/(m-k)),
+ * and each member's error is |z_i - c| + R.  Repeat until nothing links. */
+static int estimate(int d, const double *q, root_work *w, int n)
+{
+    double complex *t = malloc((size_t)(d + 1) * sizeof *t);
+    double complex *b = malloc((size_t)(d + 1) * sizeof *b);
+    if (!t || !b) {
+        free(t); free(b);
+        return MM_ENOMEM;
+    }
+    for (int i = 0; i < n; i++) {
+        double complex z = w[i].z;
+        double delta = cabs(eval_dd(d, q, z)) + U_ROUND * abs_poly(d, q, cabs(z));
+        double dp = cabs(eval_deriv(d, q, z));
+        w[i].e1 = w[i].err = dp > 0 ? delta / dp : HUGE_VAL;
+        w[i].cluster = i;
+        w[i].size = 1;
+    }
+    for (int pass = 0; pass < n; pass++) {
+        int linked = 0;
+        for (int i = 0; i < n; i++)
+            for (int k = i + 1; k < n; k++) {
+                int ri = find(w, i), rk = find(w, k);
+                if (ri == rk || !(cabs(w[i].z - w[k].z) <= 4 * (w[i].err + w[k].err)))
+                    continue;
+                w[rk].cluster = ri;
+                w[ri].size += w[rk].size;
+                linked = 1;
+            }
+        if (!linked)
+            break;
+        for (int r = 0; r < n; r++) {
+            if (find(w, r) != r || w[r].size < 2)
+                continue;
+            int m = w[r].size;
+            double complex c = 0;
+            for (int i = 0; i < n; i++)
+                if (find(w, i) == r)
+                    c += w[i].z;
+            c /= m;
+            taylor(d, q, c, m, t, b);
+            t[0] = eval_dd(d, q, c);                    /* accurate value */
+            double tm = cabs(t[m]), R = 0;
+            for (int k = 0; k < m; k++) {
+                double tk = cabs(t[k]);
+                if (k == 0)
+                    tk += U_ROUND * abs_poly(d, q, cabs(c));
+                R = fmax(R, pow(tk / tm, 1.0 / (m - k)));
+            }
+            R = tm > 0 ? 2 * R : HUGE_VAL;
+            for (int i = 0; i < n; i++)
+                if (find(w, i) == r)
+                    w[i].err = cabs(w[i].z - c) + R;
+        }
+    }
+    free(b); free(t);
+    return MM_OK;
+}
+
+static int root_order(const void *pa, const void *pb)
+{
+    const mm_poly_root *a = pa, *b = pb;
+    double ma = hypot(a->re, a->im), mb = hypot(b->re, b->im);
+    if (ma != mb) return ma < mb ? 1 : -1;
+    if (a->re != b->re) return a->re < b->re ? 1 : -1;
+    if (a->im != b->im) return a->im < b->im ? 1 : -1;
+    return 0;
+}
+
+int mm_poly_roots(int ncoef, const double *p, mm_poly_root *roots, int *nroots,
+                  mm_error *err)
+{
+    int rc;
+    assert(p && roots && nroots);
+    *nroots = 0;
+    if (ncoef < 1 || ncoef > MM_POLY_MAX_DEGREE + 1)
+        return mm_error_set(err, MM_ERANGE, "p",
+                            "bad parameter 'p' (must have 1 to %d coefficients, "
+                            "got %d)", MM_POLY_MAX_DEGREE + 1, ncoef);
+    if ((rc = mm_linalg_check_finite("p", (size_t)ncoef, p, err)))
+        return rc;
+    int lead = 0, last = ncoef - 1;
+    while (lead < ncoef && p[lead] == 0.0)
+        lead++;
+    if (lead == ncoef)
+        return mm_error_set(err, MM_EVALUE, "p",
+                            "bad value in 'p' (all coefficients are zero: every "
+                            "number would be a root)");
+    while (p[last] == 0.0)
+        last--;
+    int nzero = ncoef - 1 - last;          /* x^nzero divides p */
+    int d = last - lead;                   /* degree of what remains */
+    const double *q = p + lead;
+
+    double *C = NULL, *wr = NULL, *wi = NULL;
+    root_work *w = NULL;
+    if (d >= 1) {
+        C = calloc((size_t)d * (size_t)d, sizeof *C);
+        wr = malloc((size_t)d * sizeof *wr);
+        wi = malloc((size_t)d * sizeof *wi);
+        w = malloc((size_t)d * sizeof *w);
+        if (!C || !wr || !wi || !w) {
+            rc = mm_error_set(err, MM_ENOMEM, "", "out of memory for polynomial roots");
+            goto out;
+        }
+        /* companion matrix (MATLAB's form): first row -q[1..d]/q[0], ones
+         * on the subdiagonal; its characteristic polynomial is q/q[0] */
+        for (int j = 0; j < d; j++) {
+            C[j] = -q[j + 1] / q[0];
+            if (!isfinite(C[j])) {
+                rc = mm_error_set(err, MM_ENONFINITE, "p",
+                                  "the leading coefficient of 'p' is too small "
+                                  "beside the others: the roots overflow");
+                goto out;
+            }
+        }
+        for (int i = 1; i < d; i++)
+            C[(size_t)i * (size_t)d + (size_t)(i - 1)] = 1.0;
+        if ((rc = mm_linalg_geev(d, C, wr, wi, NULL, err)))
+            goto out;
+        for (int i = 0; i < d; i++)
+            w[i].z = CMPLX(wr[i], wi[i]);
+        /* polish: real roots stay real (real Newton), a conjugate pair is
+         * polished through its upper member and the other set to its
+         * conjugate, so pairs stay exact pairs */
+        for (int i = 0; i < d; i++) {
+            if (wi[i] < 0)
+                continue;
+            polish(d, q, w, d, i);
+            if (wi[i] > 0 && i + 1 < d && wi[i + 1] < 0)
+                w[i + 1].z = conj(w[i].z);
+        }
+        if ((rc = estimate(d, q, w, d))) {
+            rc = mm_error_set(err, rc, "", "out of memory for polynomial roots");
+            goto out;
+        }
+    }
+    for (int i = 0; i < d; i++) {
+        mm_poly_root *r = &roots[i];
+        double az = cabs(w[i].z);
+        r->re = creal(w[i].z);
+        r->im = cimag(w[i].z);
+        r->err = w[i].err;
+        r->cond = w[i].err / (U_ROUND * (az > 0 ? az : 1.0));
+        r->multiplicity = w[find(w, i)].size;
+        r->flags = (r->multiplicity > 1 ? MM_POLY_ROOT_MULTIPLE : 0) |
+                   (!(r->err <= 1e-8 * fmax(az, 1.0)) ? MM_POLY_ROOT_ILLCOND : 0);
+    }
+    for (int i = d; i < d + nzero; i++)    /* exact zero roots */
+        roots[i] = (mm_poly_root){0.0, 0.0, 0.0, 0.0, nzero,
+                                  nzero > 1 ? MM_POLY_ROOT_MULTIPLE : 0};
+    *nroots = d + nzero;
+    qsort(roots, (size_t)*nroots, sizeof *roots, root_order);
+    rc = MM_OK;
+out:
+    free(w); free(wi); free(wr); free(C);
+    return rc;
+}
+
+/* ==== least-squares fit ======================================================= */
+
+static int cmp_double(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return (a > b) - (a < b);
+}
+
+int mm_poly_fit(int npts, const double *x, const double *y, int degree,
+                double *p, mm_poly_fit_info *info, mm_error *err)
+{
+    int rc;
+    assert(x && y && p);
+    if (npts < 1 || npts > MM_POLY_MAX_POINTS)
+        return mm_error_set(err, MM_ERANGE, "x",
+                            "bad parameter 'x' (must have 1 to %d points, got %d)",
+                            MM_POLY_MAX_POINTS, npts);
+    if (degree < 0 || degree > MM_POLY_MAX_FIT_DEGREE)
+        return mm_error_set(err, MM_ERANGE, "degree",
+                            "bad parameter 'degree' (must be between 0 and %d, got %d)",
+                            MM_POLY_MAX_FIT_DEGREE, degree);
+    if ((rc = mm_linalg_check_finite("x", (size_t)npts, x, err)) ||
+        (rc = mm_linalg_check_finite("y", (size_t)npts, y, err)))
+        return rc;
+
+    int ncol = degree + 1;
+    double *xs = malloc((size_t)npts * sizeof *xs);
+    double *V = malloc((size_t)npts * (size_t)ncol * sizeof *V);
+    double *c = malloc((size_t)ncol * sizeof *c);
+    double *sv = malloc((size_t)ncol * sizeof *sv);
+    mm_poly_fit_info inf = {0};
+    if (!xs || !V || !c || !sv) {
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory for polyfit");
+        goto out;
+    }
+    memcpy(xs, x, (size_t)npts * sizeof *xs);
+    qsort(xs, (size_t)npts, sizeof *xs, cmp_double);
+    int distinct = 1;
+    for (int i = 1; i < npts; i++)
+        distinct += xs[i] != xs[i - 1];
+    if (degree >= distinct) {
+        rc = mm_error_set(err, MM_ERANGE, "degree",
+                          "bad parameter 'degree' (must be less than the number "
+                          "of distinct x values, %d, got %d)", distinct, degree);
+        goto out;
+    }
+
+    /* centre and scale: t = (x - mu)/scale lies in [-1, 1] */
+    double mu = 0.0, scale = 0.0;
+    for (int i = 0; i < npts; i++)
+        mu += x[i];
+    mu /= npts;
+    for (int i = 0; i < npts; i++)
+        scale = fmax(scale, fabs(x[i] - mu));
+    if (!(scale > 0.0))
+        scale = 1.0;
+    for (int i = 0; i < npts; i++) {           /* Vandermonde, highest first */
+        double t = (x[i] - mu) / scale, v = 1.0;
+        for (int k = degree; k >= 0; k--) {
+            V[(size_t)i * (size_t)ncol + (size_t)k] = v;
+            v *= t;
+        }
+    }
+    int rank = 0;
+    if ((rc = mm_linalg_lstsq(npts, ncol, 1, V, y, 0.0, c, &rank, NULL, sv, err)))
+        goto out;
+
+    /* rms residual of the fit (in t, the better-conditioned form) */
+    double r2 = 0.0;
+    for (int i = 0; i < npts; i++) {
+        double r = y[i] - mm_poly_eval(ncol, c, (x[i] - mu) / scale, NULL);
+        r2 += r * r;
+    }
+    inf.rms = sqrt(r2 / npts);
+    inf.mu = mu;
+    inf.scale = scale;
+    inf.rank = rank;
+    int kmin = npts < ncol ? npts : ncol;
+    inf.cond = sv[kmin - 1] > 0 ? sv[0] / sv[kmin - 1] : HUGE_VAL;
+
+    /* back to x: p(x) = c((x - mu)/scale), expanded by Horner's scheme on
+     * polynomials: P <- P * (x/scale - mu/scale) + c_k */
+    for (int k = 0; k < ncol; k++)
+        p[k] = 0.0;
+    double a1 = 1.0 / scale, a0 = -mu / scale;
+    for (int k = 0; k < ncol; k++) {
+        /* P has k terms right-aligned in p[ncol-k .. ncol-1]; times
+         * (a1 x + a0): new[j] = a1 old[j+1] + a0 old[j], j ascending */
+        for (int j = ncol - k - 1; j < ncol; j++) {
+            double next = j + 1 < ncol ? p[j + 1] : 0.0;
+            p[j] = a1 * next + a0 * p[j];
+        }
+        p[ncol - 1] += c[k];
+    }
+    rc = MM_OK;
+out:
+    if (info)
+        *info = inf;
+    free(sv); free(c); free(V); free(xs);
+    return rc;
+}

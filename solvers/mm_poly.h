@@ -1,0 +1,108 @@
+/* mm_poly.h — polynomials: evaluation, roots, least-squares fit.
+ *
+ * Coefficient order is MATLAB's, highest power first:
+ *     p(x) = p[0] x^d + p[1] x^(d-1) + ... + p[d],   ncoef = d + 1.
+ * Pure numerics: no globals, safe from many threads, every array is owned by
+ * the caller and never kept after a call returns.  Fallible functions return
+ * MM_OK or an MM_E* code and fill err (may be NULL).  NULL pointers for
+ * required arguments are programmer errors (assert).
+ *
+ * Accuracy is reported, not hidden.  A root of a polynomial can be very
+ * sensitive to its coefficients (Wilkinson's (x-1)(x-2)...(x-20) is the
+ * classic) and a root of multiplicity m can only be found to about eps^(1/m)
+ * in double precision.  mm_poly_roots therefore returns with each root an
+ * error estimate that accounts for the rounding of the coefficients
+ * themselves (each known only to a relative eps/2, as after reading them
+ * from decimal text), and flags clusters of roots as (numerically) multiple.
+ */
+#ifndef MM_POLY_H
+#define MM_POLY_H
+
+#include "mm_status.h"
+
+#define MM_POLY_MAX_DEGREE     200    /* largest degree for mm_poly_roots */
+#define MM_POLY_MAX_FIT_DEGREE 30     /* largest degree for mm_poly_fit */
+#define MM_POLY_MAX_POINTS     100000 /* most data points for mm_poly_fit */
+
+/* p(x) by Horner's rule.  ncoef >= 1.  If err_bound is not NULL it receives
+ * a running rounding-error bound (Higham, "Accuracy and Stability of
+ * Numerical Algorithms", 2nd ed., Alg. 5.1): |computed - exact p(x)| <=
+ * *err_bound for the given (double) coefficients and x.  Cannot fail
+ * (non-finite input gives a non-finite result). */
+double mm_poly_eval(int ncoef, const double *p, double x, double *err_bound);
+
+/* ---- roots ------------------------------------------------------------------ */
+
+enum {
+    MM_POLY_ROOT_MULTIPLE = 1, /* part of a cluster of roots that cannot be
+                                  told apart: a multiple root, or roots closer
+                                  together than their error estimates */
+    MM_POLY_ROOT_ILLCOND  = 2  /* err > 1e-8 * max(|root|, 1): at least half
+                                  of the 16 digits are lost */
+};
+
+typedef struct mm_poly_root {
+    double re, im;     /* the root re + i im; complex roots come in
+                          conjugate pairs, im > 0 first */
+    double err;        /* estimated bound on |computed root - exact root|:
+                          first-order perturbation theory for a simple root,
+                          |p(z)| + eps/2 * sum |p_k| |z|^k over |p'(z)|; for a
+                          cluster of m roots, distance to the cluster's centre
+                          plus (m! (that same numerator) / |p^(m)|)^(1/m) */
+    double cond;       /* err / (eps/2 * |z|): how much the relative rounding
+                          of the coefficients is amplified in this root
+                          (err / (eps/2) for z = 0); the relative condition
+                          number for a simple root */
+    int multiplicity;  /* number of roots in this root's cluster (1 = simple) */
+    int flags;         /* MM_POLY_ROOT_* bits */
+} mm_poly_root;
+
+/* All roots of p (ncoef coefficients, highest power first).
+ *   - Leading zero coefficients are dropped (they lower the degree).
+ *   - Trailing zero coefficients give exact zero roots (err 0), counted with
+ *     their multiplicity.
+ *   - The other roots are the eigenvalues of the companion matrix (LAPACK
+ *     dgeev, balanced), each then polished by a few Newton steps on the
+ *     original polynomial, evaluated in double-double (compensated) complex
+ *     arithmetic; a step is kept only if it lowers |p| and stays within half
+ *     the distance to the nearest other root (so two roots never merge).
+ * roots must have room for ncoef - 1 entries; *nroots receives the number
+ * found (the degree after dropping leading zeros).  Order: by decreasing
+ * modulus, then decreasing real part, then decreasing imaginary part (the
+ * order MATLAB's roots usually shows; zero roots last).
+ * Fails with:
+ *   MM_ERANGE  ncoef outside 1..MM_POLY_MAX_DEGREE+1 ("p");
+ *   MM_EVALUE  a non-finite coefficient, or all coefficients zero (every
+ *              x would be a root) ("p");
+ *   MM_ENOCONV, MM_ENOMEM, MM_EINTERNAL from the eigenvalue solver. */
+int mm_poly_roots(int ncoef, const double *p, mm_poly_root *roots, int *nroots,
+                  mm_error *err);
+
+/* ---- least-squares fit ------------------------------------------------------ */
+
+typedef struct mm_poly_fit_info {
+    double rms;        /* sqrt(sum r_i^2 / n), r_i = y_i - p(x_i) */
+    double mu, scale;  /* the fit is computed in t = (x - mu) / scale:
+                          mu = mean of x, scale = max |x - mu| (1 if 0) */
+    int rank;          /* numerical rank of the scaled Vandermonde matrix; <
+                          degree + 1 means the data cannot fix all
+                          coefficients (the minimum-norm fit is returned) */
+    double cond;       /* 2-norm condition number of the scaled Vandermonde */
+} mm_poly_fit_info;
+
+/* Least-squares polynomial of the given degree through the npts points
+ * (x[i], y[i]), like MATLAB's polyfit: p[degree + 1] receives the
+ * coefficients highest power first, in the ORIGINAL variable x.  The fit
+ * itself is done on centred and scaled t = (x - mu)/scale (far better
+ * conditioned), by SVD least squares, and the coefficients are then
+ * expanded back to x.  x, y are not modified; info may be NULL.
+ * Fails with:
+ *   MM_ERANGE  npts outside 1..MM_POLY_MAX_POINTS ("x"); degree outside
+ *              0..MM_POLY_MAX_FIT_DEGREE, or degree >= the number of
+ *              distinct x values ("degree");
+ *   MM_EVALUE  a non-finite x or y ("x", "y");
+ *   MM_ENOCONV, MM_ENOMEM, MM_EINTERNAL from the least-squares solver. */
+int mm_poly_fit(int npts, const double *x, const double *y, int degree,
+                double *p, mm_poly_fit_info *info, mm_error *err);
+
+#endif
