@@ -38,7 +38,7 @@ TEST_LIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 
 CPPFLAGS := -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -Isolvers -Iexercises -Iserver
 CFLAGS   := -std=c11 $(OPT) $(WARN) -MMD -MP
-CXXFLAGS := -std=c++17 $(OPT) -Wall -Wextra -Werror -MMD -MP
+CXXFLAGS := -std=c++17 $(OPT) -fno-sanitize=vptr -Wall -Wextra -Werror -MMD -MP
 LDLIBS    = $(PKG_LIBS) -lfmt -lstdc++ -lm -lpthread
 
 # ---- sources ----------------------------------------------------------------

@@ -217,6 +217,10 @@ static int parse_array(const mm_param *p, const char *s, size_t n, mm_value *out
         i = j + 1;
     }
 
+    if (total == 0)                    /* only separators: ",", ";;" */
+        return mm_error_set(err, MM_EVALUE, p->name, "%s has no numbers; give numbers such as %s",
+                            p->name, p->def_text ? p->def_text : "1,2,3");
+
     /* pass 2: values */
     double *data = mm_res_alloc(res, (size_t)total * sizeof(double) + 1);
     if (!data)

@@ -112,6 +112,11 @@ static void vectors_and_matrices_should_read_matlab_text(void **state)
     assert_int_equal(parse(&P_VEC, "1,2e7", &v, &err, &r), MM_ERANGE);
     assert_int_equal(parse(&P_VEC, "", &v, &err, &r), MM_EVALUE);
     assert_int_equal(parse(&P_MAT, "1,2;;3,4", &v, &err, &r), MM_EVALUE);
+    /* only separators (found by fuzz_params): no numbers at all */
+    assert_int_equal(parse(&P_MAT, ",", &v, &err, &r), MM_EVALUE);
+    assert_int_equal(parse(&P_MAT, " ; ;", &v, &err, &r), MM_EVALUE);
+    assert_int_equal(parse(&P_VEC, ",,", &v, &err, &r), MM_EVALUE);
+    assert_int_equal(parse(&P_VEC, "[]", &v, &err, &r), MM_EVALUE);
     mm_result_release(&r);
 }
 
