@@ -1,0 +1,212 @@
+/* mm_fem.h — one-dimensional finite elements for free vibration: axial bars
+ * and Euler-Bernoulli beams, their natural frequencies and mode shapes, and
+ * the closed-form frequencies they converge to.
+ *
+ * Elements (local DOFs; L element length, x along the axis):
+ *   bar  (2 nodes, linear, DOFs u1 u2):
+ *        k = EA/L [1 -1; -1 1],  m = rho A L/6 [2 1; 1 2] (consistent)
+ *                                or rho A L/2 [1 0; 0 1]   (lumped)
+ *   beam (2 nodes, Hermite cubic, DOFs w1 theta1 w2 theta2, theta = dw/dx):
+ *        k = EI/L^3 [ 12   6L   -12   6L ;  6L 4L^2 -6L 2L^2 ;
+ *                    -12  -6L    12  -6L ;  6L 2L^2 -6L 4L^2 ]
+ *        m = rho A L/420 [ 156  22L   54  -13L ;  22L 4L^2  13L -3L^2 ;
+ *                           54  13L  156  -22L ; -13L -3L^2 -22L 4L^2 ]
+ *        (consistent only: a lumped beam mass has no rotary inertia and
+ *        would make M singular).
+ * Global DOFs: node i = 0..n_el from x = 0; bar DOF i = u_i; beam DOFs
+ * 2i = w_i, 2i+1 = theta_i.  Boundary conditions remove DOFs (rows and
+ * columns) rather than adding penalty springs, so the matrices stay exact.
+ *
+ * Eigen solve (through mm_linalg, never LAPACK directly): K phi = w^2 M phi
+ * on the free DOFs.  Dense (all modes, LAPACK dsygvd) or banded selective
+ * (first modes only, dsbgvx on band storage, half-bandwidth 1 for bars and
+ * 3 for beams, modes by inverse iteration); MM_FEM_AUTO picks the banded
+ * one once it pays (see mm_fem_method).  Each frequency is then the
+ * Rayleigh quotient of its mode, with the strain energy summed from element
+ * strains and curvatures: the solvers' eigenvalues carry an absolute error
+ * of about eps x (largest eigenvalue), which grows like n_el^4 for a beam
+ * (8e-3 relative on mode 1 of a 1000-element cantilever), while the
+ * quotient of the computed mode is second-order accurate in the mode and
+ * free of the cancellation inside K phi.
+ * Rigid-body modes (free ends) have w^2 = 0 up to rounding; they are
+ * recognised by w^2 <= rigid_tol x (largest eigenvalue of the mesh),
+ * counted in n_rigid and left out of the elastic modes (only free-free
+ * members can have them: at most 1 for a bar, 2 for a beam).  The largest
+ * eigenvalue is bounded above by the largest element eigenvalue (the
+ * element eigenvalue bound theorem, Irons and Treharne 1971), computed in
+ * closed form, so both solvers use the same test without computing the top
+ * of the spectrum.  The test assumes elements of comparable length (a very
+ * short element raises the bound).
+ *
+ * Accuracy to expect (tests/unit/test_fem.c checks it): consistent mass
+ * gives frequencies above the exact ones (Rayleigh-Ritz), converging as h^2
+ * for bars and h^4 for beams; lumped bar mass gives them below, as h^2.
+ * Rounding sets a floor, for beams: with the dense solver about 1e-11
+ * relative from some 250 elements on (5e-9 on mode 1 at 1000); with the
+ * banded one 1e-10 at 300 elements and 1e-6 at 1000 (its inverse-iteration
+ * modes are less accurate).  tests/bench/bench_fem.c prints both.
+ *
+ * Memory: the caller owns the problem and the result arrays.  Scratch
+ * matrices are allocated and freed inside mm_fem_modes_solve (O(n^2) for
+ * the dense solver, O(n x modes) for the banded one).  Thread-safe: no
+ * globals.
+ *
+ * Errors: MM_ERANGE (param "elements") for a mesh outside
+ * 1..MM_FEM_MAX_ELEMENTS or more than MM_FEM_MAX_MODES modes ("modes");
+ * MM_EVALUE for a property that is not finite and > 0 ("E", "A", "I",
+ * "rho", "L"; for a per-element mesh "elements", naming the element), an
+ * unknown kind, boundary condition ("bc") or mass ("mass"), or a
+ * combination that does not exist (pinned ends on a bar, lumped beam mass);
+ * MM_ENONFINITE when the frequencies overflow; MM_ENOMEM; MM_ENOCONV and
+ * MM_EINTERNAL passed on from mm_linalg.
+ */
+#ifndef MM_FEM_H
+#define MM_FEM_H
+
+#include <stddef.h>
+
+#include "mm_status.h"
+
+#define MM_FEM_MAX_ELEMENTS  1000   /* elements in one mesh */
+#define MM_FEM_MAX_MODES     100    /* modes asked of one solve */
+
+typedef enum mm_fem_kind {
+    MM_FEM_BAR,     /* axial vibration, 1 DOF per node */
+    MM_FEM_BEAM     /* bending vibration, 2 DOFs per node */
+} mm_fem_kind;
+
+typedef enum mm_fem_bc {
+    MM_FEM_FIXED_FREE,     /* bar: u(0) = 0; beam: cantilever (clamped at 0) */
+    MM_FEM_FIXED_FIXED,    /* bar: both ends fixed; beam: clamped-clamped */
+    MM_FEM_FREE_FREE,      /* both ends free: 1 (bar) or 2 (beam) rigid modes */
+    MM_FEM_PINNED_PINNED,  /* beam only: simply supported, w = 0 at both ends */
+    MM_FEM_FIXED_PINNED    /* beam only: clamped at 0, pinned at L ("propped") */
+} mm_fem_bc;
+
+typedef enum mm_fem_mass {
+    MM_FEM_CONSISTENT,     /* from the element's shape functions */
+    MM_FEM_LUMPED          /* half of each element's mass at each node (bar) */
+} mm_fem_mass;
+
+/* Properties of one element (or of every element of a uniform mesh). */
+typedef struct mm_fem_element {
+    double L;      /* length [m] */
+    double E;      /* Young's modulus [Pa] */
+    double A;      /* cross-section area [m^2] */
+    double I;      /* second moment of area [m^4] (beam only; ignored for a bar) */
+    double rho;    /* density [kg/m^3] */
+} mm_fem_element;
+
+typedef struct mm_fem_problem {
+    mm_fem_kind kind;
+    mm_fem_bc bc;
+    mm_fem_mass mass;
+    size_t n_el;                      /* number of elements */
+    mm_fem_element uniform;           /* a uniform mesh: uniform.L is the
+                                         TOTAL length, cut into n_el equal
+                                         elements */
+    const mm_fem_element *elements;   /* or NULL; else n_el elements, each
+                                         with its own length and properties
+                                         (uniform is then ignored) */
+} mm_fem_problem;
+
+typedef enum mm_fem_method {
+    MM_FEM_AUTO,     /* banded when the mesh has more than 40 free DOFs and
+                        fewer than a third of its modes are wanted, or when
+                        it exceeds the dense solver's MM_LINALG_MAX_N; else
+                        dense (bench_fem: banded is 1.4x faster for ten
+                        modes of 60 DOFs, 5x at 600, 40x at 2000) */
+    MM_FEM_DENSE,    /* all eigenpairs, mm_linalg_sygv (dsygvd) */
+    MM_FEM_BANDED    /* first modes only, mm_linalg_sbgv_first (dsbgvx) */
+} mm_fem_method;
+
+typedef struct mm_fem_options {
+    mm_fem_method method;   /* default MM_FEM_AUTO */
+    double rigid_tol;       /* rigid if w^2 <= rigid_tol * largest element
+                               eigenvalue; default 1e-16.  Refined rigid
+                               modes come out below 1e-20 of it; the lowest
+                               elastic one of a 1000-element free beam is
+                               6e-14 of it */
+} mm_fem_options;
+
+/* The answer.  The caller points omega (and shape, or NULL) at arrays for
+ * the nmodes modes it asks for; the solver fills them and the counts. */
+typedef struct mm_fem_modes {
+    double *omega;     /* in: array[nmodes]; out: elastic natural
+                          frequencies [rad/s], ascending */
+    double *shape;     /* in: array[nmodes * mm_fem_ndof(p)] or NULL; out:
+                          mode j at shape[j*ndof + i] over ALL global DOFs
+                          (0 at fixed ones), mass-normalised
+                          (phi^T M phi = 1), the first displacement (u or
+                          w) larger than 1e-6 of the largest positive */
+    size_t n_modes;    /* out: elastic modes written; < nmodes only when the
+                          mesh has fewer (e.g. a 1-element fixed-free bar) */
+    size_t n_rigid;    /* out: rigid-body modes found and left out */
+    size_t n_free;     /* out: free DOFs (order of the eigenproblem) */
+    mm_fem_method method;   /* out: MM_FEM_DENSE or MM_FEM_BANDED, as used */
+} mm_fem_modes;
+
+/* ---- set-up --------------------------------------------------------------- */
+
+/* Defaults listed in mm_fem_options.  Cannot fail. */
+void mm_fem_options_init(mm_fem_options *opt);
+
+/* Validate the problem (limits, properties, bc/kind/mass combination)
+ * without allocating.  No side effects. */
+int mm_fem_check(const mm_fem_problem *p, mm_error *err);
+
+/* Global DOFs of the mesh: (n_el + 1) for a bar, 2 (n_el + 1) for a beam,
+ * fixed ones included.  Cannot fail. */
+size_t mm_fem_ndof(const mm_fem_problem *p);
+
+/* Node positions x[0..n_el] [m] from 0.  Cannot fail (p checked). */
+void mm_fem_node_x(const mm_fem_problem *p, double *x);
+
+/* Element stiffness k and mass m (row-major, 2x2 for a bar, 4x4 for a beam,
+ * local DOFs as in the file comment) of one element.  Errors: MM_EVALUE for
+ * a non-positive or non-finite property ("L", "E", "A", "I", "rho") or a
+ * lumped beam mass ("mass"). */
+int mm_fem_element_matrices(mm_fem_kind kind, mm_fem_mass mass,
+                            const mm_fem_element *el, double *k, double *m,
+                            mm_error *err);
+
+/* ---- modal analysis ------------------------------------------------------- */
+
+/* The first nmodes elastic modes (1 <= nmodes <= MM_FEM_MAX_MODES) of the
+ * mesh: assembles K and M on the free DOFs, solves, detects rigid-body
+ * modes, fills res as documented in mm_fem_modes.  opt may be NULL.
+ * Errors as in the file comment. */
+int mm_fem_modes_solve(const mm_fem_problem *p, size_t nmodes,
+                       const mm_fem_options *opt, mm_fem_modes *res,
+                       mm_error *err);
+
+/* ---- closed-form references ----------------------------------------------- */
+
+typedef enum mm_fem_beam_eq {
+    MM_FEM_COSCOSH_MINUS1,   /* cos bL cosh bL = -1: clamped-free */
+    MM_FEM_COSCOSH_PLUS1,    /* cos bL cosh bL = +1: clamped-clamped, free-free */
+    MM_FEM_TAN_TANH          /* tan bL = tanh bL: clamped-pinned, free-pinned */
+} mm_fem_beam_eq;
+
+/* The n-th positive root (n >= 1) of the beam frequency equation, to full
+ * double precision: Newton's method on the equation divided by cosh bL
+ * (so the terms stay O(1)), from the asymptotic root (2n-1)pi/2,
+ * (2n+1)pi/2 or (4n+1)pi/4, converging in 3 to 6 steps.  1.8751040687...,
+ * 4.7300407448..., 3.9266023120... for n = 1.  Returns NaN for n < 1 or an
+ * unknown equation. */
+double mm_fem_beam_root(mm_fem_beam_eq eq, int n);
+
+/* Exact natural frequencies [rad/s] of the first nmodes elastic modes of
+ * the uniform continuum the mesh p approximates (p->elements must be NULL;
+ * kind, bc, uniform matter, n_el and mass do not):
+ *   bar, c = sqrt(E/rho):  fixed-free (2n-1) pi c / 2L;  fixed-fixed and
+ *                          free-free n pi c / L;
+ *   beam: (beta_n L)^2 sqrt(EI / (rho A L^4)) with beta_n L from
+ *         mm_fem_beam_root (cantilever: -1; clamped-clamped and free-free:
+ *         +1; fixed-pinned: tan = tanh) or n pi (simply supported).
+ * Errors: those of mm_fem_check, MM_EVALUE ("elements") for a per-element
+ * mesh, MM_ERANGE ("modes") for nmodes outside 1..MM_FEM_MAX_MODES. */
+int mm_fem_exact_omegas(const mm_fem_problem *p, size_t nmodes,
+                        double *omega, mm_error *err);
+
+#endif
