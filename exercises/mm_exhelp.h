@@ -14,7 +14,7 @@ void mm_linspace(double a, double b, int n, double *x);
 /* Largest |y[i]| over n values. */
 double mm_maxabs(const double *y, int n);
 
-/* Integrate the 1-DOF oscillator s from 0 to t_end with DOP853 (rtol 1e-9),
+/* Integrate the 1-DOF oscillator s from 0 to t_end with DOP853 (rtol 1e-8),
  * dense output onto t[0..n-1]; x and v receive displacement and velocity
  * (v may be NULL).  With stride > 0 it also reports the method and its
  * counters on res and checks the whole response against the closed form
@@ -29,5 +29,12 @@ int mm_ex_sdof_run(const mm_sdof *s, double t_end, int n, const double *t,
  * pass MM_SDOF_MAX_RADIANS, or the request would take too long. */
 #define MM_SDOF_MAX_RADIANS 1e4
 int mm_ex_sdof_work_check(const mm_sdof *s, double t_end, mm_error *err);
+
+/* A plot grid over [a, b] that also resolves a narrow feature (a resonance
+ * peak): n equally spaced points merged with nwin equally spaced points over
+ * [c - half, c + half] (clipped to [a, b]), sorted, exact repeats dropped.
+ * x needs room for n + nwin values; returns the number written (>= n).
+ * n >= 2, nwin >= 0, half >= 0. */
+int mm_ex_grid_refined(double a, double b, int n, double c, double half, int nwin, double *x);
 
 #endif

@@ -289,7 +289,8 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
     mm_buf_puts(b, "],\"checks\":[");
     for (const mm_check_node *c = r->checks.head; c; c = c->next) {
         double abs_err = fabs(c->value - c->reference);
-        double rel_err = c->reference != 0 ? abs_err / fabs(c->reference) : abs_err;
+        /* relative to a reference of (nearly) zero is undefined: left out */
+        double rel_err = abs_err / fabs(c->reference);
         double limit = c->relative ? c->tolerance * fabs(c->reference) : c->tolerance;
         int passed = abs_err <= limit;
         if (c != r->checks.head)
@@ -302,8 +303,10 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
         mm_buf_num(b, c->reference, c->name);
         mm_buf_puts(b, ",\"abs_error\":");
         mm_buf_num(b, abs_err, c->name);
-        mm_buf_puts(b, ",\"rel_error\":");
-        mm_buf_num(b, rel_err, c->name);
+        if (isfinite(rel_err)) {
+            mm_buf_puts(b, ",\"rel_error\":");
+            mm_buf_num(b, rel_err, c->name);
+        }
         mm_buf_puts(b, ",\"tolerance\":");
         mm_buf_num(b, c->tolerance, c->name);
         mm_buf_puts(b, c->relative ? ",\"tolerance_kind\":\"relative\"" : ",\"tolerance_kind\":\"absolute\"");
@@ -429,7 +432,10 @@ static int json_to_text(const cJSON *v, mm_buf *t, int depth, const char *name, 
 {
     char num[MM_DTOA_BUFSIZE];
     if (cJSON_IsNumber(v)) {
-        mm_buf_put(t, num, (size_t)mm_dtoa(v->valuedouble, num));
+        if (!isfinite(v->valuedouble))   /* 1e999 overflows in cJSON: as in a query, out of range */
+            mm_buf_puts(t, v->valuedouble < 0 ? "-1e999" : "1e999");
+        else
+            mm_buf_put(t, num, (size_t)mm_dtoa(v->valuedouble, num));
         return MM_OK;
     }
     if (cJSON_IsString(v)) {
@@ -454,10 +460,70 @@ static int json_to_text(const cJSON *v, mm_buf *t, int depth, const char *name, 
                         "%s must be a number, a text or an array of numbers", name);
 }
 
+/* cJSON turns the escape \u0000 into a NUL byte that ends the C string, so
+ * "1\u0000junk" would read as "1": find such an escape, or a raw NUL byte
+ * in a string, before parsing.
+ * Returns 1 when a string holds one, with *param the parameter whose value
+ * it is in (the last key met two objects deep; "" when the NUL is in a key
+ * or outside params), printable ASCII only. */
+static int json_has_nul(const char *s, size_t n, char *param, size_t size)
+{
+    int depth = 0, in_str = 0;
+    size_t start = 0;
+    param[0] = '\0';
+    for (size_t i = 0; i < n; i++) {
+        char c = s[i];
+        if (!in_str) {
+            if (c == '"')
+                in_str = 1, start = i + 1;
+            else if (c == '{' || c == '[')
+                depth++;
+            else if (c == '}' || c == ']')
+                depth--;
+            continue;
+        }
+        if (c == '\0' || c == '\\') {
+            if (c == '\0' || (i + 5 < n && s[i + 1] == 'u' && memcmp(s + i + 2, "0000", 4) == 0)) {
+                size_t j = i + 1;              /* a key itself?  then no parameter */
+                while (j < n && s[j] != '"')
+                    j += s[j] == '\\' ? 2 : 1;
+                for (j++; j < n && (s[j] == ' ' || s[j] == '\t' || s[j] == '\n' || s[j] == '\r'); j++)
+                    ;
+                if (j < n && s[j] == ':')
+                    param[0] = '\0';
+                return 1;
+            }
+            i++;
+        } else if (c == '"') {
+            in_str = 0;
+            size_t j = i + 1;
+            while (j < n && (s[j] == ' ' || s[j] == '\t' || s[j] == '\n' || s[j] == '\r'))
+                j++;
+            if (j < n && s[j] == ':' && depth == 2) {     /* a key of params */
+                size_t k = 0;
+                for (size_t q = start; q < i && k + 1 < size; q++)
+                    param[k++] = s[q] >= 0x20 && s[q] < 0x7f ? s[q] : '?';
+                param[k] = '\0';
+            } else if (j < n && s[j] == ':') {
+                param[0] = '\0';
+            }
+        }
+    }
+    return 0;
+}
+
 int mm_api_solve_json(const mm_exercise *ex, const char *body, size_t len, mm_buf *out)
 {
     mm_error err;
     mm_error_clear(&err);
+    char nul_param[sizeof err.param];
+    if (json_has_nul(body, len, nul_param, sizeof nul_param)) {
+        if (nul_param[0])
+            mm_error_set(&err, MM_EVALUE, nul_param, "%s contains a NUL character (\\u0000)", nul_param);
+        else
+            mm_error_set(&err, MM_EVALUE, "", "the body contains a NUL character (\\u0000) in a text");
+        return mm_api_error(out, &err);
+    }
     const char *end = NULL;
     cJSON *root = cJSON_ParseWithLengthOpts(body, len, &end, 0);
     if (!root) {
