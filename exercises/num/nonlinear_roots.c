@@ -1,0 +1,292 @@
+/* nonlinear_roots.c — num-nonlinear-roots: every root of f(x) = 0 on [a, b],
+ * the book's rroots(myfunc, -1, 10, 100, 1e-6) -> 1.0434.
+ *
+ *     f(x) = 0,   a <= x <= b                                            (1)
+ *
+ * Goal: find all the roots a scan can see, not just one: split [a, b] into n
+ * equal parts, keep each part whose ends have opposite signs of f (by the
+ * intermediate value theorem, eq. 2, it holds a root), and refine each to
+ * the tolerance tol on x with Brent's method (bisection safeguarding
+ * secant and inverse quadratic steps).  Learn what such a scan misses: roots
+ * of even multiplicity (no sign change) and pairs of roots closer than
+ * (b - a) / n, and what fools it: poles and jumps.
+ * Checks: each root against plain bisection restarted from its part (a
+ * slower method whose error bound is certain, eq. 3), and a sign change of
+ * f across x +- tol around each root.
+ * Reference: R. P. Brent, Algorithms for Minimization without Derivatives,
+ * Prentice-Hall 1973, ch. 4; G. E. Forsythe, M. A. Malcolm, C. B. Moler,
+ * Computer Methods for Mathematical Computations, Prentice-Hall 1977, zeroin.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "mm_exhelp.h"
+#include "mm_expr.h"
+#include "mm_roots.h"
+
+#define MAXN 1000
+#define MAXPOLES 16
+#define PLOT 801
+
+enum { P_F, P_A, P_B, P_N, P_TOL };
+
+static const mm_param params[] = {
+    [P_F] = {"f", "function f(x)", "", MM_EXPR, 0, 0, 0, "x^3+sin(x)-2", .vars = "x",
+             .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e"},
+    [P_A] = {"a", "left end of the interval", "", MM_REAL, -1, -1e6, 1e6, .help = "search from x = a"},
+    [P_B] = {"b", "right end of the interval", "", MM_REAL, 10, -1e6, 1e6, .help = "to x = b > a"},
+    [P_N] = {"n", "number of subintervals", "", MM_INT, 100, 1, MAXN,
+             .help = "[a, b] is cut into n equal parts; two roots in one part are missed, so raise n to separate them"},
+    [P_TOL] = {"tol", "tolerance on x", "", MM_REAL, 1e-6, 1e-15, 1,
+               .help = "each root is within tol of a sign change of f (absolute, in units of x)"},
+};
+
+static int check(const mm_value *in, mm_error *err)
+{
+    if (!(in[P_B].x > in[P_A].x))
+        return mm_error_set(err, MM_ERANGE, "b", "b must be greater than a = %g; got %g", in[P_A].x, in[P_B].x);
+    return MM_OK;
+}
+
+typedef struct fctx {
+    mm_expr *e;
+    long evals;
+} fctx;
+
+static int feval(double x, double *fx, void *ctx)
+{
+    fctx *c = ctx;
+    c->evals++;
+    *fx = mm_expr_eval(c->e, &x);
+    return 0;
+}
+
+static double f1(fctx *c, double x)
+{
+    double y;
+    feval(x, &y, c);
+    return y;
+}
+
+/* Plain bisection of the part [xl, xr] (f changes sign across it) down to
+ * width w: a sign change of f is then within w of the midpoint *x,
+ * whatever f does.  Returns 0, or -1 if f stops being finite. */
+static int bisect(fctx *c, double xl, double xr, double fl, double w, double *x)
+{
+    for (int it = 0; it < 200 && xr - xl > w && xr - xl > 4 * DBL_EPSILON * fmax(fabs(xl), fabs(xr)); it++) {
+        double xm = xl + 0.5 * (xr - xl), fm = f1(c, xm);
+        if (!isfinite(fm))
+            return -1;
+        if (fm == 0) {
+            *x = xm;
+            return 0;
+        }
+        if ((fm < 0) == (fl < 0)) {
+            xl = xm;
+            fl = fm;
+        } else {
+            xr = xm;
+        }
+    }
+    *x = xl + 0.5 * (xr - xl);
+    return 0;
+}
+
+/* x by the scan's own formula (mm_roots.c), so the parts are the same. */
+static double grid(double a, double b, int n, int i) { return i >= n ? b : i <= 0 ? a : a + (b - a) * i / n; }
+
+static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
+{
+    const double a = in[P_A].x, b = in[P_B].x, tol = in[P_TOL].x;
+    const int n = (int)in[P_N].x;
+
+    mm_roots_problem prob = {.f = feval, .params = c, .a = a, .b = b};
+    mm_roots_options opt;
+    mm_roots_options_init(&opt);
+    opt.n = n;
+    opt.tol = tol;
+    double poles[MAXPOLES];
+    mm_roots_result rr = {.roots = mm_res_alloc(res, (size_t)(n + 1) * sizeof(mm_roots_root)),
+                          .cap = n + 1, .poles = poles, .pole_cap = MAXPOLES};
+    if (!rr.roots)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    int rc = mm_roots_solve(&prob, &opt, &rr, err);
+    if (rc == MM_ENOCONV)
+        return mm_error_set(err, MM_ENOCONV, "tol", "a root could not be refined to tol = %g in %d steps "
+                            "(f is too rough there); raise tol", tol, opt.max_iter);
+    if (rc != MM_OK)
+        return rc;
+    const int nr = rr.nroots;
+
+    static const char *const cols[] = {"x", "fx", "iterations"};
+    static const char *const units[] = {"", "", ""};
+    mm_table *t = mm_res_table(res, "roots", nr, 3, cols, units);
+    mm_series *sr = mm_res_series(res, "roots", "roots", "", "x", "", nr);
+    if (!t || !sr)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    int nsuspect = 0;
+    double wmax = 0, xmax = 0;
+    for (int i = 0; i < nr; i++) {
+        const mm_roots_root *z = &rr.roots[i];
+        t->cell[3 * i] = z->x;
+        t->cell[3 * i + 1] = z->fx;
+        t->cell[3 * i + 2] = z->iterations;
+        sr->x[i] = z->x;
+        sr->y[i] = 0;
+        nsuspect += (z->flags & MM_ROOTS_SUSPECT) != 0;
+        wmax = fmax(wmax, z->width);
+        xmax = fmax(xmax, fabs(z->x));
+    }
+    mm_res_scalar(res, "count", "number of roots found", "", nr);
+    if (nr > 0)
+        mm_res_scalar(res, "x1", "the first (smallest) root", "", rr.roots[0].x);
+    else
+        mm_res_scalar_text(res, "x1", "the first (smallest) root", "", 0, "none found");
+    long scan_evals = c->evals;
+
+    /* check 1: every root against bisection restarted from its part, to a
+     * width of tol/4: Brent's claim is |x - root| <= tol + 4 eps |x|.
+     * check 2: a sign change of f across x +- h, h covering Brent's final
+     * bracket: for a continuous f, a root within h of x.
+     * When the two methods land on different roots although x has its own
+     * sign change, the part holds three or more roots: not an error, but n
+     * is too small to separate them. */
+    double worst = 0, allowed = 1.25 * tol + 12 * DBL_EPSILON * xmax;
+    int lost = 0, nosign = 0, crowded = 0;
+    for (int i = 0; i < nr; i++) {
+        const mm_roots_root *z = &rr.roots[i];
+        if (z->flags & MM_ROOTS_EXACT)
+            continue;                                /* f(x) = 0 exactly: proven */
+        double h = tol + 8 * DBL_EPSILON * fabs(z->x), fm = f1(c, z->x - h), fp = f1(c, z->x + h);
+        int own = fm == 0 || fp == 0 || (fm < 0) != (fp < 0);
+        nosign += !own;
+        int k = (int)floor((z->x - a) / (b - a) * n), found = 0;
+        for (int j = k - 1; j <= k + 1 && !found; j++) {
+            if (j < 0 || j >= n)
+                continue;
+            double xl = grid(a, b, n, j), xr = grid(a, b, n, j + 1), fl = f1(c, xl), fr = f1(c, xr), xb;
+            if (!(z->x >= xl && z->x <= xr) || !isfinite(fl) || !isfinite(fr) || fl == 0 || fr == 0 ||
+                (fl < 0) == (fr < 0))
+                continue;
+            found = 1;
+            if (bisect(c, xl, xr, fl, 0.25 * tol, &xb) != 0)
+                lost++;
+            else if (fabs(z->x - xb) > allowed && own)
+                crowded++;
+            else
+                worst = fmax(worst, fabs(z->x - xb));
+        }
+        lost += !found;
+    }
+    mm_res_check_abs(res, "worst |x_Brent - x_bisection| (bisection from the same part, to tol/4)", worst, 0,
+                     allowed);
+    if (lost)
+        mm_res_check_abs(res, "roots bisection could not confirm (no sign change of f across their part)", lost,
+                         0, 0);
+    mm_res_check_abs(res, "roots without a sign change of f between x - tol and x + tol", nosign, 0, 0);
+    if (crowded)
+        mm_res_warn(res, "%d part%s of width %.3g hold%s three or more roots (bisection found another one than "
+                    "Brent's method): roots are missed there; raise n", crowded, crowded > 1 ? "s" : "",
+                    (b - a) / n, crowded > 1 ? "" : "s");
+
+    /* the plot: f over [a, b]; points where f is not finite are left out */
+    double *xs = mm_res_alloc(res, PLOT * sizeof *xs), *ys = mm_res_alloc(res, PLOT * sizeof *ys);
+    if (!xs || !ys)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_linspace(a, b, PLOT, xs);
+    int np = 0, bad = 0, plot_changes = 0;
+    double first_bad = 0, prev = NAN;
+    for (int i = 0; i < PLOT; i++) {
+        double y = mm_expr_eval(c->e, &xs[i]);
+        /* zero crossings the plot shows, between neighbouring finite samples
+         * (a zero sample counts once) */
+        if (isfinite(y) && (y == 0 || (isfinite(prev) && prev != 0 && (prev < 0) != (y < 0))))
+            plot_changes++;
+        prev = y;
+        if (isfinite(y)) {
+            xs[np] = xs[i];
+            ys[np++] = y;
+        } else if (!bad++) {
+            first_bad = xs[i];
+        }
+    }
+    if (plot_changes > nr + rr.npoles)
+        mm_res_warn(res, "the plot crosses or touches zero %d times, but the scan found %d root%s%s: roots closer "
+                    "than a part (%.3g), roots that only touch zero, and roots beside points where f is not finite "
+                    "are missed; raise n", plot_changes, nr, nr == 1 ? "" : "s", rr.npoles ? " and poles" : "",
+                    (b - a) / n);
+    mm_series *sf = mm_res_series(res, "f", "f(x)", "", "x", "", np);
+    if (!sf)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    memcpy(sf->x, xs, np * sizeof *xs);
+    memcpy(sf->y, ys, np * sizeof *ys);
+
+    mm_res_method(res, "subdivision into n parts, Brent's method in each bracket", 0);
+    mm_res_method_stat(res, "evaluations", (double)scan_evals);
+    mm_res_method_stat(res, "max_iterations", rr.max_iterations);
+    mm_res_method_stat(res, "error_estimate", wmax);
+
+    if (bad)
+        mm_res_warn(res, "f is not finite at %d of the %d plot points (first at x = %.6g: a pole or a value "
+                    "outside the domain, such as sqrt of a negative number); they are left out of the plot",
+                    bad, PLOT, first_bad);
+    if (rr.npoles) {
+        char list[120] = "";
+        for (int i = 0; i < rr.npoles && i < MAXPOLES && strlen(list) < 90; i++) {
+            size_t l = strlen(list);
+            snprintf(list + l, sizeof list - l, "%s%.6g", i ? ", " : "", poles[i]);
+        }
+        mm_res_warn(res, "%d sign change%s at a pole, not a root (|f| grows as the bracket shrinks): x = %s%s",
+                    rr.npoles, rr.npoles > 1 ? "s are" : " is", list, rr.npoles > MAXPOLES ? ", ..." : "");
+    }
+    if (rr.nskipped)
+        mm_res_warn(res, "%d part%s skipped because f is not finite there", rr.nskipped,
+                    rr.nskipped > 1 ? "s were" : " was");
+    if (nsuspect)
+        mm_res_warn(res, "%d root%s a large residual |f(x)|: a jump of f through zero (or a very steep root) "
+                    "rather than a smooth crossing; look at the plot", nsuspect, nsuspect > 1 ? "s have" : " has");
+    if (nr == 0)
+        mm_res_warn(res, "no sign change of f on [%g, %g] with n = %d: f may have no root there, only roots "
+                    "where it touches zero without crossing (such as x^2), or two roots within one part; "
+                    "raise n or look at the plot", a, b, n);
+    return MM_OK;
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    static const char *const vars[] = {"x"};
+    fctx c = {NULL, 0};
+    int rc = mm_expr_compile(in[P_F].text, vars, 1, &c.e, err);
+    if (rc != MM_OK) {
+        if (err)
+            snprintf(err->param, sizeof err->param, "f");
+        return rc;
+    }
+    rc = run(in, &c, res, err);
+    mm_expr_free(c.e);
+    return rc;
+}
+
+static const char *const references[] = {
+    "R. P. Brent, Algorithms for Minimization without Derivatives, Prentice-Hall 1973, ch. 4",
+    "G. E. Forsythe, M. A. Malcolm, C. B. Moler, Computer Methods for Mathematical Computations, "
+    "Prentice-Hall 1977, section 7.2 (zeroin)",
+    NULL,
+};
+
+const mm_exercise mm_ex_num_nonlinear_roots = {
+    .id = "num-nonlinear-roots",
+    .chapter = 1,
+    .section = "1.4.2",
+    .title = "Roots of a nonlinear function",
+    .summary = "Every root of f(x) = 0 on an interval: subdivide, keep the sign changes, refine each by Brent's method.",
+    .tags = "nonlinear equation, roots, bisection, Brent, sign change",
+    .theory = "exercises/num/nonlinear_roots.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

@@ -1,0 +1,537 @@
+/* test_ex_num.c — the chapter 1 exercises (num-*) through the full pipeline
+ * (text parameters -> validation -> check -> solve -> JSON), read back by
+ * cJSON.  References are computed independently: exact rationals by hand,
+ * or mpmath at 40 digits (quoted with the call that produced them).
+ * Besides the book's own answers, the hard cases: nearly singular and
+ * singular matrices, repeated polynomial roots, indefinite stiffness,
+ * poles, syntax errors, and the quadrature of num-plot on known integrals.
+ */
+#include "mm_test.h"
+
+#include <cJSON.h>
+#include <float.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mm_api.h"
+
+#define EPS DBL_EPSILON
+
+/* ---- running a request ------------------------------------------------------ */
+
+typedef struct answer {
+    int status;
+    cJSON *doc;
+} answer;
+
+/* Solve exercise id with name=value pairs given as "name", "value", ...,
+ * NULL. */
+static answer solve(const char *id, ...)
+{
+    const mm_exercise *ex = mm_exercise_find(id);
+    if (!ex)
+        fail_msg("no exercise %s in the registry", id);
+    mm_input in[MM_MAX_PARAMS];
+    int n = 0;
+    va_list ap;
+    va_start(ap, id);
+    for (const char *name; (name = va_arg(ap, const char *)) != NULL && n < MM_MAX_PARAMS; n++) {
+        const char *text = va_arg(ap, const char *);
+        in[n] = (mm_input){name, text, strlen(name), strlen(text)};
+    }
+    va_end(ap);
+    mm_buf out;
+    mm_buf_init(&out, MM_ANSWER_MAX);
+    answer a;
+    a.status = mm_api_solve(ex, in, n, &out);
+    a.doc = cJSON_Parse(out.p);
+    if (!a.doc)
+        fail_msg("%s: the answer is not JSON: %.200s", id, out.p ? out.p : "(null)");
+    mm_buf_free(&out);
+    return a;
+}
+
+static const cJSON *named(const cJSON *doc, const char *list, const char *name)
+{
+    const cJSON *e;
+    cJSON_ArrayForEach(e, cJSON_GetObjectItem(doc, list)) {
+        const cJSON *n = cJSON_GetObjectItem(e, "name");
+        if (cJSON_IsString(n) && strcmp(n->valuestring, name) == 0)
+            return e;
+    }
+    return NULL;
+}
+
+static double scalar(const answer *a, const char *name)
+{
+    const cJSON *s = named(a->doc, "scalars", name);
+    if (!s)
+        fail_msg("no scalar %s", name);
+    return cJSON_GetObjectItem(s, "value")->valuedouble;
+}
+
+static int has_scalar(const answer *a, const char *name) { return named(a->doc, "scalars", name) != NULL; }
+
+/* Cell (row, col) of table name: its number, or NaN when it holds text
+ * (then *text, if given, receives it). */
+static double cell(const answer *a, const char *table, int row, int col, const char **text)
+{
+    const cJSON *t = named(a->doc, "tables", table);
+    if (!t)
+        fail_msg("no table %s", table);
+    const cJSON *c = cJSON_GetArrayItem(cJSON_GetArrayItem(cJSON_GetObjectItem(t, "rows"), row), col);
+    if (!c)
+        fail_msg("table %s has no cell (%d, %d)", table, row, col);
+    if (cJSON_IsString(c)) {
+        if (text)
+            *text = c->valuestring;
+        return NAN;
+    }
+    return c->valuedouble;
+}
+
+static int rows(const answer *a, const char *table)
+{
+    const cJSON *t = named(a->doc, "tables", table);
+    if (!t)
+        fail_msg("no table %s", table);
+    return cJSON_GetArraySize(cJSON_GetObjectItem(t, "rows"));
+}
+
+/* 200 and every check passed, at least one check. */
+static void all_passed(const answer *a, const char *what)
+{
+    if (a->status != 200) {
+        char *s = cJSON_PrintUnformatted(a->doc);
+        fail_msg("%s: status %d: %.300s", what, a->status, s);
+    }
+    const cJSON *c;
+    int n = 0;
+    cJSON_ArrayForEach(c, cJSON_GetObjectItem(a->doc, "checks")) {
+        n++;
+        if (!cJSON_IsTrue(cJSON_GetObjectItem(c, "passed"))) {
+            char *s = cJSON_PrintUnformatted(c);
+            fail_msg("%s: check failed: %s", what, s);
+        }
+    }
+    if (n == 0)
+        fail_msg("%s: no checks", what);
+}
+
+/* Is there a warning containing word? */
+static int warned(const answer *a, const char *word)
+{
+    const cJSON *w;
+    cJSON_ArrayForEach(w, cJSON_GetObjectItem(a->doc, "warnings"))
+        if (cJSON_IsString(w) && strstr(w->valuestring, word))
+            return 1;
+    return 0;
+}
+
+static void error_is(const answer *a, int status, const char *code, const char *param)
+{
+    const cJSON *e = cJSON_GetObjectItem(a->doc, "error");
+    const cJSON *c = cJSON_GetObjectItem(e, "code"), *p = cJSON_GetObjectItem(e, "param");
+    if (a->status != status || !cJSON_IsString(c) || strcmp(c->valuestring, code) ||
+        !cJSON_IsString(p) || strcmp(p->valuestring, param)) {
+        char *s = cJSON_PrintUnformatted(a->doc);
+        fail_msg("want %d %s naming %s, got %d: %.300s", status, code, param, a->status, s);
+    }
+}
+
+static const char *error_message(const answer *a)
+{
+    return cJSON_GetObjectItem(cJSON_GetObjectItem(a->doc, "error"), "message")->valuestring;
+}
+
+static void done(answer *a) { cJSON_Delete(a->doc); }
+
+/* ==== num-complex ============================================================== */
+
+static void complex_book_square_should_be_3_plus_4i(void **state)
+{
+    (void)state;
+    answer a = solve("num-complex", NULL);          /* (2+i)^2 */
+    all_passed(&a, "num-complex defaults");
+    check_abs(scalar(&a, "re"), 3, 0, "(2+i)^2: exact in rectangular arithmetic");
+    check_abs(scalar(&a, "im"), 4, 0, "(2+i)^2: exact");
+    check_rel(scalar(&a, "modulus"), 5, EPS, "|3+4i| = 5 (hypot, correctly rounded here)");
+    check_rel(scalar(&a, "argument"), atan2(4, 3), EPS, "arg(3+4i)");
+    done(&a);
+}
+
+static void complex_operations_should_match_hand_results(void **state)
+{
+    (void)state;
+    /* (3+4i)/(1+2i) = (3+4i)(1-2i)/5 = (11-2i)/5 */
+    answer a = solve("num-complex", "op", "divide", "a_re", "3", "a_im", "4", "b_re", "1", "b_im", "2", NULL);
+    all_passed(&a, "divide");
+    check_rel(scalar(&a, "re"), 2.2, 4 * EPS, "Re (3+4i)/(1+2i) = 11/5");
+    check_rel(scalar(&a, "im"), -0.4, 4 * EPS, "Im = -2/5");
+    done(&a);
+    /* (1+i)^8 = 16, (1+i)^-8 = 1/16: powers of 2, exact */
+    a = solve("num-complex", "op", "power", "a_re", "1", "a_im", "1", "n", "8", NULL);
+    all_passed(&a, "power 8");
+    check_abs(scalar(&a, "re"), 16, 0, "(1+i)^8 = 16 by repeated squaring, exact");
+    check_abs(scalar(&a, "im"), 0, 0, "(1+i)^8 is real");
+    done(&a);
+    a = solve("num-complex", "op", "power", "a_re", "1", "a_im", "1", "n", "-8", NULL);
+    all_passed(&a, "power -8");
+    check_abs(scalar(&a, "re"), 1.0 / 16, 0, "(1+i)^-8 = 1/16 exact");
+    done(&a);
+    /* the fifth roots of -32: principal root 2 e^(i pi/5) */
+    a = solve("num-complex", "op", "roots", "a_re", "-32", "a_im", "0", "n", "5", NULL);
+    all_passed(&a, "roots");
+    check_rel(scalar(&a, "re"), 2 * cos(M_PI / 5), 4 * EPS, "Re 2 e^(i pi/5)");
+    check_rel(scalar(&a, "im"), 2 * sin(M_PI / 5), 4 * EPS, "Im 2 e^(i pi/5)");
+    done(&a);
+}
+
+static void complex_division_by_zero_and_bad_n_should_be_refused(void **state)
+{
+    (void)state;
+    answer a = solve("num-complex", "op", "divide", "b_re", "0", "b_im", "0", NULL);
+    error_is(&a, 422, "no_solution", "b_re");
+    done(&a);
+    a = solve("num-complex", "op", "roots", "n", "0", NULL);
+    error_is(&a, 400, "out_of_range", "n");
+    done(&a);
+    a = solve("num-complex", "op", "power", "n", "-12", "a_re", "1e-30", "a_im", "0", NULL);
+    error_is(&a, 422, "no_solution", "n");       /* 1e360 overflows */
+    done(&a);
+}
+
+/* ==== num-linear-system ========================================================= */
+
+static void linear_system_should_give_the_book_solution(void **state)
+{
+    (void)state;
+    answer a = solve("num-linear-system", NULL);
+    all_passed(&a, "num-linear-system defaults");
+    /* exact: x = (2980/3, -6020/3, 1010); cond ~ 88 loses ~2 digits */
+    check_rel(scalar(&a, "x1"), 2980.0 / 3, 1e-13, "x1 = 993.33");
+    check_rel(scalar(&a, "x2"), -6020.0 / 3, 1e-13, "x2 = -2006.7");
+    check_rel(scalar(&a, "x3"), 1010, 1e-13, "x3 = 1010");
+    /* mpmath svd_r at 40 digits: 88.448279920698623521... */
+    check_rel(scalar(&a, "cond"), 88.44827992069862352, 1e-13, "cond_2(A)");
+    assert_true(scalar(&a, "residual") < 1e-10);
+    assert_false(warned(&a, "nearly singular"));
+    done(&a);
+}
+
+static void nearly_singular_system_should_carry_cond_and_a_warning(void **state)
+{
+    (void)state;
+    /* row 3 = 2 row 2 - row 1 + (0,0,1e-6): cond ~ 1e8 */
+    answer a = solve("num-linear-system", "A", "1,2,3;4,5,6;7,8,9.000001", NULL);
+    all_passed(&a, "nearly singular");
+    double c = scalar(&a, "cond");
+    assert_true(c > 5e7 && c < 5e8);
+    assert_true(warned(&a, "nearly singular"));
+    /* Cramer with exact rationals, det A = -3e-6: x3 = 1.01e9 for the decimal
+     * matrix.  9.000001 is stored with a relative error ~1e-16, which
+     * cond ~ 1e8 turns into ~1e-8 in x (eq. 6) */
+    check_rel(scalar(&a, "x3"), 1.01e9, 3e-8, "x3 of the nearly singular system");
+    done(&a);
+}
+
+static void singular_and_misshapen_systems_should_be_refused(void **state)
+{
+    (void)state;
+    answer a = solve("num-linear-system", "A", "1,2,3;4,5,6;7,8,9", NULL);
+    error_is(&a, 422, "no_solution", "A");
+    assert_non_null(strstr(error_message(&a), "singular"));
+    done(&a);
+    a = solve("num-linear-system", "A", "1,2,3;4,5,6", "b", "1,2", NULL);
+    error_is(&a, 400, "out_of_range", "A");
+    done(&a);
+    a = solve("num-linear-system", "A", "1,2;3,4", "b", "1,2,3", NULL);
+    error_is(&a, 400, "out_of_range", "b");
+    done(&a);
+}
+
+/* ==== num-eigen ================================================================== */
+
+static void eigen_chain_should_match_the_closed_form(void **state)
+{
+    (void)state;
+    answer a = solve("num-eigen", NULL);
+    all_passed(&a, "num-eigen defaults");
+    assert_int_equal(rows(&a, "eigen"), 3);
+    /* fixed-free chain of 3 equal springs and masses:
+     * lambda_j = 4 (k/m) sin^2((2j - 1) pi / 14) */
+    for (int j = 1; j <= 3; j++) {
+        double s = sin((2 * j - 1) * M_PI / 14), lam = 400 * s * s;
+        check_rel(cell(&a, "eigen", j - 1, 0, NULL), lam, 1e-13, "lambda_j, closed form");
+        check_rel(cell(&a, "eigen", j - 1, 1, NULL), sqrt(lam), 1e-13, "omega_j = sqrt(lambda_j)");
+    }
+    done(&a);
+}
+
+static void indefinite_stiffness_should_report_unstable_in_words(void **state)
+{
+    (void)state;
+    /* K = [100,-200;-200,100], M = I: lambda = 100 -+ 200 = -100, 300 */
+    answer a = solve("num-eigen", "K", "100,-200;-200,100", "M", "1,0;0,1", NULL);
+    all_passed(&a, "indefinite K");
+    check_rel(cell(&a, "eigen", 0, 0, NULL), -100, 1e-13, "negative eigenvalue kept in lambda");
+    const char *text = NULL;
+    double w = cell(&a, "eigen", 0, 1, &text);
+    assert_true(isnan(w));
+    assert_non_null(text);
+    assert_non_null(strstr(text, "unstable"));
+    check_rel(cell(&a, "eigen", 1, 1, NULL), sqrt(300), 1e-13, "the stable mode's omega");
+    assert_int_equal((int)scalar(&a, "unstable_modes"), 1);
+    assert_true(warned(&a, "negative"));
+    done(&a);
+    /* a free chain: one rigid-body mode, omega = 0 */
+    a = solve("num-eigen", "K", "100,-100;-100,100", "M", "1,0;0,1", NULL);
+    all_passed(&a, "free chain");
+    check_abs(cell(&a, "eigen", 0, 1, NULL), 0, 0, "rigid-body mode: omega = 0");
+    assert_true(warned(&a, "rigid-body"));
+    done(&a);
+}
+
+static void bad_mass_or_stiffness_should_be_named(void **state)
+{
+    (void)state;
+    answer a = solve("num-eigen", "K", "100,-100;-99,100", "M", "1,0;0,1", NULL);
+    error_is(&a, 400, "bad_value", "K");
+    done(&a);
+    a = solve("num-eigen", "K", "100,-100;-100,100", "M", "1,0;0,-1", NULL);
+    error_is(&a, 422, "no_solution", "M");
+    done(&a);
+    a = solve("num-eigen", "K", "100,-100;-100,100", "M", "1,0,0;0,1,0;0,0,1", NULL);
+    error_is(&a, 400, "out_of_range", "M");
+    done(&a);
+}
+
+/* ==== num-poly-roots =============================================================== */
+
+static void poly_roots_should_give_the_book_roots(void **state)
+{
+    (void)state;
+    answer a = solve("num-poly-roots", NULL);
+    all_passed(&a, "num-poly-roots defaults");
+    assert_int_equal(rows(&a, "roots"), 3);
+    /* mpmath polyroots at 50 digits (as in test_poly.c) */
+    check_rel(cell(&a, "roots", 0, 0, NULL), -1.6506291914393882189, 4 * EPS, "real root");
+    check_abs(cell(&a, "roots", 0, 1, NULL), 0, 0, "real root has im = 0");
+    check_rel(cell(&a, "roots", 1, 0, NULL), -0.17468540428030589056, 4 * EPS, "Re of the pair");
+    check_rel(cell(&a, "roots", 1, 1, NULL), 1.5468688872313962771, 4 * EPS, "Im, positive first");
+    check_rel(cell(&a, "roots", 2, 1, NULL), -1.5468688872313962771, 4 * EPS, "the conjugate");
+    done(&a);
+}
+
+static void repeated_roots_should_be_flagged_with_their_accuracy(void **state)
+{
+    (void)state;
+    answer a = solve("num-poly-roots", "p", "1,-3,3,-1", NULL);   /* (x-1)^3 */
+    all_passed(&a, "(x-1)^3");
+    assert_true(warned(&a, "multiplicity"));
+    for (int i = 0; i < 3; i++) {
+        assert_int_equal((int)cell(&a, "roots", i, 4, NULL), 3);
+        double re = cell(&a, "roots", i, 0, NULL), im = cell(&a, "roots", i, 1, NULL);
+        double err = cell(&a, "roots", i, 3, NULL);
+        /* the estimate must cover the true error, and be of size eps^(1/3) */
+        assert_true(hypot(re - 1, im) <= err);
+        assert_true(err > 1e-7 && err < 1e-3);
+    }
+    done(&a);
+}
+
+static void leading_zeros_and_zero_polynomials_should_be_handled(void **state)
+{
+    (void)state;
+    answer a = solve("num-poly-roots", "p", "0,0,1,2,3,4", NULL);
+    all_passed(&a, "leading zeros");
+    check_abs(scalar(&a, "degree"), 3, 0, "degree after dropping two zeros");
+    assert_true(warned(&a, "degree is 3"));
+    done(&a);
+    a = solve("num-poly-roots", "p", "0,0,0", NULL);
+    error_is(&a, 400, "bad_value", "p");
+    done(&a);
+    a = solve("num-poly-roots", "p", "5", NULL);            /* a constant: no roots */
+    assert_int_equal(a.status, 200);
+    assert_int_equal(rows(&a, "roots"), 0);
+    done(&a);
+    /* a root near 1e300 beside one at -1: the backward error stays finite */
+    a = solve("num-poly-roots", "p", "1e-300,1,1", NULL);
+    all_passed(&a, "huge root");
+    done(&a);
+}
+
+/* ==== num-polyfit ================================================================== */
+
+static void polyfit_should_give_the_book_line(void **state)
+{
+    (void)state;
+    answer a = solve("num-polyfit", NULL);
+    all_passed(&a, "num-polyfit defaults");
+    /* exact: slope 196/67 = 2.92537..., intercept 537/67 = 8.01493... */
+    check_rel(scalar(&a, "c0"), 196.0 / 67, 1e-14, "slope");
+    check_rel(scalar(&a, "c1"), 537.0 / 67, 1e-14, "intercept");
+    /* mpmath: sqrt(sum r^2 / 3) with the exact line = 0.89775840249686961272 */
+    check_rel(scalar(&a, "rms_residual"), 0.89775840249686961272, 1e-13, "rms residual");
+    done(&a);
+}
+
+static void polyfit_joint_limits_should_name_the_parameter(void **state)
+{
+    (void)state;
+    answer a = solve("num-polyfit", "degree", "3", NULL);
+    error_is(&a, 400, "out_of_range", "degree");
+    done(&a);
+    a = solve("num-polyfit", "y", "1,2", NULL);
+    error_is(&a, 400, "out_of_range", "y");
+    done(&a);
+    /* degree 2 through 3 points: interpolation, residual 0, said so */
+    a = solve("num-polyfit", "degree", "2", NULL);
+    all_passed(&a, "interpolation");
+    assert_true(scalar(&a, "rms_residual") < 1e-12);
+    assert_true(warned(&a, "interpolation"));
+    done(&a);
+    /* data far from 0 and degree 8: the x^k coefficients cancel; warned */
+    a = solve("num-polyfit", "x", "1000,1001,1002,1003,1004,1005,1006,1007,1008,1009", "y",
+              "3,1,4,1,5,9,2,6,5,3", "degree", "8", NULL);
+    all_passed(&a, "cancelling coefficients");
+    assert_true(warned(&a, "cancel"));
+    done(&a);
+}
+
+/* ==== num-nonlinear-roots ============================================================ */
+
+static void nonlinear_roots_should_find_the_book_root(void **state)
+{
+    (void)state;
+    answer a = solve("num-nonlinear-roots", NULL);
+    all_passed(&a, "num-nonlinear-roots defaults");
+    assert_int_equal(rows(&a, "roots"), 1);
+    /* mpmath findroot: 1.0433859882095546575661309292305695767 */
+    check_abs(cell(&a, "roots", 0, 0, NULL), 1.0433859882095546576, 1e-6, "root within tol");
+    done(&a);
+}
+
+static void nonlinear_roots_conventions(void **state)
+{
+    (void)state;
+    /* a root on a grid point is reported once: f = x on [-1, 1], n = 2 */
+    answer a = solve("num-nonlinear-roots", "f", "x", "a", "-1", "b", "1", "n", "2", NULL);
+    all_passed(&a, "root on the grid");
+    assert_int_equal(rows(&a, "roots"), 1);
+    check_abs(cell(&a, "roots", 0, 0, NULL), 0, 0, "x = 0 exactly");
+    done(&a);
+    /* tan: roots -pi, 0, pi; the four poles are not roots */
+    a = solve("num-nonlinear-roots", "f", "tan(x)", "a", "-5", "b", "5", NULL);
+    all_passed(&a, "tan");
+    assert_int_equal(rows(&a, "roots"), 3);
+    check_abs(cell(&a, "roots", 2, 0, NULL), M_PI, 1e-6, "pi within tol");
+    assert_true(warned(&a, "pole"));
+    done(&a);
+    /* several roots per part: bisection may find another one; warned, not failed */
+    a = solve("num-nonlinear-roots", "f", "sin(1/x)", "a", "0.01", "b", "1", "n", "10", "tol", "1e-15", NULL);
+    all_passed(&a, "sin(1/x)");
+    assert_true(warned(&a, "raise n"));
+    done(&a);
+}
+
+static void nonlinear_roots_bad_input_should_be_named(void **state)
+{
+    (void)state;
+    answer a = solve("num-nonlinear-roots", "f", "x^3+*sin(x)", NULL);
+    error_is(&a, 400, "bad_value", "f");
+    assert_non_null(strstr(error_message(&a), "position 5"));
+    done(&a);
+    a = solve("num-nonlinear-roots", "a", "3", "b", "3", NULL);
+    error_is(&a, 400, "out_of_range", "b");
+    done(&a);
+}
+
+/* ==== num-plot ======================================================================= */
+
+static void plot_should_read_the_book_curve(void **state)
+{
+    (void)state;
+    answer a = solve("num-plot", NULL);
+    all_passed(&a, "num-plot defaults");
+    /* mpmath: root of cos x (x^2+1) = 2x sin x, x = 0.79801699184237010331,
+     * f there 0.43741415827900997202.  The value is flat at the peak, so
+     * golden section finds f to ~eps but x only to ~sqrt(eps). */
+    check_rel(scalar(&a, "max"), 0.43741415827900997202, 4 * EPS, "largest value");
+    check_abs(scalar(&a, "x_max"), 0.79801699184237010331, 1e-7, "where");
+    check_rel(scalar(&a, "min"), -0.43741415827900997202, 4 * EPS, "odd: the mirror image");
+    check_abs(scalar(&a, "integral"), 0, 1e-14, "odd function over [-5, 5]");
+    done(&a);
+    a = solve("num-plot", "a", "0", NULL);
+    all_passed(&a, "[0, 5]");
+    /* mpmath quad: 0.64816188354952220827 */
+    check_rel(scalar(&a, "integral"), 0.64816188354952220827, 1e-13, "area on [0, 5]");
+    done(&a);
+}
+
+static void plot_quadrature_should_be_exact_where_it_must(void **state)
+{
+    (void)state;
+    /* Kronrod 15 is exact for degree <= 22, Gauss-Legendre 5 for <= 9 */
+    answer a = solve("num-plot", "f", "x^12", "a", "-1", "b", "1", NULL);
+    all_passed(&a, "x^12");
+    check_rel(scalar(&a, "integral"), 2.0 / 13, 8 * EPS, "integral of x^12 over [-1, 1]");
+    done(&a);
+    a = solve("num-plot", "f", "x^2", "a", "0", "b", "3", NULL);
+    all_passed(&a, "x^2");
+    check_rel(scalar(&a, "integral"), 9, 4 * EPS, "integral of x^2 over [0, 3]");
+    /* trapezoid on 101 points: error (b - a) h^2 / 12 * f'' = 3 * 0.03^2 / 6 */
+    check_rel(scalar(&a, "integral_plot"), 9 + 3 * 0.03 * 0.03 / 6, 1e-12, "trapezoid error formula");
+    done(&a);
+    /* the case that defeated Romberg: ~240 oscillations, not resolved by the
+     * plot; mpmath quad: 3.1824371681217349404e-07 */
+    a = solve("num-plot", "a", "-946.800828727981", "b", "542.1488481085796", "points", "61", NULL);
+    all_passed(&a, "oscillatory");
+    check_abs(scalar(&a, "integral"), 3.1824371681217349404e-07, 1e-14, "many oscillations");
+    assert_true(warned(&a, "misses detail"));
+    done(&a);
+}
+
+static void plot_non_finite_values_should_be_left_out(void **state)
+{
+    (void)state;
+    answer a = solve("num-plot", "f", "1/x", "a", "-1", "b", "1", NULL);
+    assert_int_equal(a.status, 200);                        /* the JSON parsed: no NaN */
+    assert_true(warned(&a, "not finite"));
+    assert_false(has_scalar(&a, "integral"));
+    check_abs(scalar(&a, "points"), 100, 0, "101 samples, x = 0 left out");
+    done(&a);
+    a = solve("num-plot", "f", "sqrt(-1-x^2)", NULL);
+    error_is(&a, 422, "no_solution", "f");
+    done(&a);
+    a = solve("num-plot", "f", "sin(", NULL);
+    error_is(&a, 400, "bad_value", "f");
+    done(&a);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(complex_book_square_should_be_3_plus_4i),
+        cmocka_unit_test(complex_operations_should_match_hand_results),
+        cmocka_unit_test(complex_division_by_zero_and_bad_n_should_be_refused),
+        cmocka_unit_test(linear_system_should_give_the_book_solution),
+        cmocka_unit_test(nearly_singular_system_should_carry_cond_and_a_warning),
+        cmocka_unit_test(singular_and_misshapen_systems_should_be_refused),
+        cmocka_unit_test(eigen_chain_should_match_the_closed_form),
+        cmocka_unit_test(indefinite_stiffness_should_report_unstable_in_words),
+        cmocka_unit_test(bad_mass_or_stiffness_should_be_named),
+        cmocka_unit_test(poly_roots_should_give_the_book_roots),
+        cmocka_unit_test(repeated_roots_should_be_flagged_with_their_accuracy),
+        cmocka_unit_test(leading_zeros_and_zero_polynomials_should_be_handled),
+        cmocka_unit_test(polyfit_should_give_the_book_line),
+        cmocka_unit_test(polyfit_joint_limits_should_name_the_parameter),
+        cmocka_unit_test(nonlinear_roots_should_find_the_book_root),
+        cmocka_unit_test(nonlinear_roots_conventions),
+        cmocka_unit_test(nonlinear_roots_bad_input_should_be_named),
+        cmocka_unit_test(plot_should_read_the_book_curve),
+        cmocka_unit_test(plot_quadrature_should_be_exact_where_it_must),
+        cmocka_unit_test(plot_non_finite_values_should_be_left_out),
+    };
+    return cmocka_run_group_tests_name("exercises of chapter 1", tests, NULL, NULL);
+}
