@@ -92,7 +92,9 @@ char *mm_res_strdup(mm_result *r, const char *s);
 int mm_res_scalar(mm_result *r, const char *name, const char *label,
                   const char *unit, double value);
 
-/* A scalar with a word beside the number, e.g. regime 0 "underdamped". */
+/* A scalar with a word beside the number, e.g. regime 0 "underdamped".
+ * text is copied into the arena.  (name, label and unit of every builder
+ * function are kept as pointers: pass string literals.) */
 int mm_res_scalar_text(mm_result *r, const char *name, const char *label,
                        const char *unit, double value, const char *text);
 

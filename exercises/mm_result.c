@@ -90,7 +90,9 @@ int mm_res_scalar_text(mm_result *r, const char *name, const char *label,
     s->name = name;
     s->label = label;
     s->unit = unit ? unit : "";
-    s->text = text;
+    s->text = text ? mm_res_strdup(r, text) : NULL;   /* copied: may be a stack buffer */
+    if (text && !s->text)
+        return MM_ENOMEM;
     s->value = value;
     APPEND(r->scalars, s);
     return MM_OK;

@@ -1,0 +1,307 @@
+/* dispersion.c — vib-dispersion: a wave packet in a bar (no dispersion)
+ * and in a beam (flexural waves, dispersive): phase velocity, group
+ * velocity, and the packet spreading.
+ *
+ *     bar:  omega = c k,  c = sqrt(E / rho);
+ *     beam: omega = a k^2,  a = sqrt(E I / (rho A)) = h sqrt(E / (12 rho))      (1)-(2)
+ *
+ * Goal: see the crests of a packet move at the phase velocity omega/k while
+ * the packet itself — its envelope, where the energy is — moves at the
+ * group velocity d omega/dk (eqs. 3-4 of the theory): equal in the bar,
+ * twice the phase velocity in the beam, where the packet also spreads
+ * (eq. 7) because its short waves outrun its long ones.
+ * Method: the initial packet (eq. 5) is sampled on a periodic domain, its
+ * Fourier coefficients taken by the FFT, and every mode advanced exactly in
+ * time by its own phase exp(-i omega(k) t) and summed again (eq. 6).  No
+ * time stepping: the only errors are sampling and rounding.
+ * Checks: the packet at time t against the closed forms (the translated
+ * packet for the bar; the Gaussian chirp of eq. 7 for the beam); the speed
+ * of the envelope's centroid, measured on the superposed modes, against the
+ * group velocity; the measured r.m.s. width against eq. (8).
+ * Reference: K. F. Graff, Wave Motion in Elastic Solids, Dover 1991,
+ * sections 1.3 and 3.1; G. B. Whitham, Linear and Nonlinear Waves, Wiley
+ * 1974, ch. 11.
+ */
+#include <complex.h>
+#include <float.h>
+#include <math.h>
+
+#include "mm_exhelp.h"
+#include "mm_fourier.h"
+
+enum { P_MEDIUM, P_E, P_RHO, P_H, P_LAMBDA, P_CYCLES, P_AMP, P_T };
+enum { M_BEAM, M_BAR };
+
+static const char *const media[] = {"beam", "bar", NULL};
+
+#define MARGIN 9.0             /* envelope widths kept either side: exp(-81/2) */
+#define MAX_WAVES 250          /* domain length in carrier wavelengths */
+#define SUM_RESTART 64         /* the mode sum's rotation restarts exactly this often */
+
+static const mm_param params[] = {
+    [P_MEDIUM] = {"medium", "medium", "", MM_CHOICE, M_BEAM, 0, 0, .choices = media,
+                  .help = "beam: bending waves, omega = a k^2 (dispersive); bar: longitudinal waves, omega = c k"},
+    [P_E] = {"E", "Young's modulus", "Pa", MM_REAL, 2.1e11, 1e6, 1e12, .help = "steel 2.1e11, aluminium 7e10"},
+    [P_RHO] = {"rho", "density", "kg/m^3", MM_REAL, 7850, 10, 3e4, .help = "steel 7850, aluminium 2700"},
+    [P_H] = {"h", "beam thickness", "m", MM_REAL, 0.01, 1e-4, 1,
+             .help = "depth of the rectangular section, I/A = h^2/12 (beam only)"},
+    [P_LAMBDA] = {"wavelength", "carrier wavelength", "m", MM_REAL, 0.2, 1e-3, 100,
+                  .help = "wavelength 2 pi/k0 of the waves inside the packet"},
+    [P_CYCLES] = {"cycles", "packet width in wavelengths", "", MM_REAL, 1.5, 1.3, 6,
+                  .help = "sigma, the Gaussian envelope's half-width, in carrier wavelengths"},
+    [P_AMP] = {"A", "amplitude", "m", MM_REAL, 1e-3, 1e-9, 1, .help = "largest displacement at t = 0"},
+    [P_T] = {"t", "time", "s", MM_REAL, 3e-3, 1e-7, 10,
+             .help = "when the packet is shown the second time; the domain must stay under 250 wavelengths"},
+};
+
+typedef struct wave {
+    int medium;
+    double c, a;           /* bar speed [m/s]; beam constant [m^2/s] */
+    double k0, sigma, A, t;
+} wave;
+
+static wave model(const mm_value *in)
+{
+    wave w = {.medium = (int)in[P_MEDIUM].x, .A = in[P_AMP].x, .t = in[P_T].x};
+    w.c = sqrt(in[P_E].x / in[P_RHO].x);
+    w.a = in[P_H].x * sqrt(in[P_E].x / (12 * in[P_RHO].x));
+    w.k0 = 2 * M_PI / in[P_LAMBDA].x;
+    w.sigma = in[P_CYCLES].x * in[P_LAMBDA].x;
+    return w;
+}
+
+static double omega_of(const wave *w, double k) { return w->medium == M_BAR ? w->c * k : w->a * k * k; }
+static double group_of(const wave *w, double k) { return w->medium == M_BAR ? w->c : 2 * w->a * k; }
+static double sigma_t(const wave *w)                                  /* eq. (8) */
+{
+    if (w->medium == M_BAR)
+        return w->sigma;
+    double beta = 2 * w->a * w->t / (w->sigma * w->sigma);
+    return w->sigma * sqrt(1 + beta * beta);
+}
+
+/* The domain [xl, xr]: MARGIN envelope widths either side of the packet at
+ * t = 0 (centre 0) and at t (centre c_g t). */
+static void domain(const wave *w, double *xl, double *xr)
+{
+    *xl = -MARGIN * w->sigma;
+    *xr = group_of(w, w->k0) * w->t + MARGIN * sigma_t(w);
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    wave w = model(in);
+    double xl, xr, lambda = in[P_LAMBDA].x;
+    domain(&w, &xl, &xr);
+    if ((xr - xl) / lambda > MAX_WAVES) {
+        double cg = group_of(&w, w.k0);
+        return mm_error_set(err, MM_ERANGE, "t",
+                            "t must be shorter: by t = %g s the packet (group velocity %.4g m/s) has moved and "
+                            "spread over %.0f wavelengths, more than the %d a plot can show; try t below %.3g s",
+                            w.t, cg, (xr - xl) / lambda, MAX_WAVES,
+                            fmax(0, (MAX_WAVES * lambda - 2 * MARGIN * w.sigma) / (cg + 2 * MARGIN * w.a / w.sigma)));
+    }
+    return MM_OK;
+}
+
+/* Closed form of the complex packet, eqs. (5) and (7):
+ *   psi = A / sqrt(1 + i beta) exp(i (k0 x - w0 t)) exp(-(x - cg t)^2 / (2 sigma^2 (1 + i beta)))
+ * with beta = 2 a t / sigma^2 for the beam, beta = 0 for the bar. */
+static double complex exact_psi(const wave *w, double x, double t)
+{
+    double w0 = omega_of(w, w->k0), cg = group_of(w, w->k0);
+    double beta = w->medium == M_BAR ? 0 : 2 * w->a * t / (w->sigma * w->sigma);
+    double complex q = 1 + I * beta, y = x - cg * t;
+    double ph = fmod(w->k0 * x - w0 * t, 2 * M_PI);
+    return w->A / csqrt(q) * cexp(I * ph) * cexp(-y * y / (2 * w->sigma * w->sigma * q));
+}
+
+/* psi(x, t) = c_0 + 2 sum_j c_j exp(i (k_j (x - xl) - omega_j t)), eq. (6):
+ * C_j = c_j exp(-i omega_j t) once per mode, then exp(i j dk X) by rotation
+ * in j, restarted exactly every SUM_RESTART modes. */
+static void mode_sum(const double complex *C, int jlo, int jhi, double dk, double complex c0, const double *x,
+                     int n, double xl, double complex *psi)
+{
+    for (int i = 0; i < n; i++) {
+        double X = x[i] - xl;
+        double complex step = cexp(I * fmod(dk * X, 2 * M_PI)), e = 0, sum = 0;
+        for (int j = jlo; j <= jhi; j++) {
+            if ((j - jlo) % SUM_RESTART == 0)
+                e = cexp(I * fmod((double)j * dk * X, 2 * M_PI));
+            else
+                e *= step;
+            sum += C[j - jlo] * e;
+        }
+        psi[i] = c0 + 2 * sum;
+    }
+}
+
+/* Centroid and r.m.s. width of |psi|^2 on an even grid (trapezoid; the
+ * ends are negligible). */
+static void moments(const double *x, const double complex *psi, int n, double *centre, double *width)
+{
+    double s0 = 0, s1 = 0, s2 = 0;
+    for (int i = 0; i < n; i++) {
+        double p = creal(psi[i]) * creal(psi[i]) + cimag(psi[i]) * cimag(psi[i]);
+        s0 += p;
+        s1 += p * x[i];
+    }
+    *centre = s1 / s0;
+    for (int i = 0; i < n; i++) {
+        double p = creal(psi[i]) * creal(psi[i]) + cimag(psi[i]) * cimag(psi[i]), d = x[i] - *centre;
+        s2 += p * d * d;
+    }
+    *width = sqrt(s2 / s0);
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    wave w = model(in);
+    const double t = w.t, lambda = in[P_LAMBDA].x, h = in[P_H].x;
+    const double w0 = omega_of(&w, w.k0), cp = w0 / w.k0, cg = group_of(&w, w.k0);
+    double xl, xr;
+    domain(&w, &xl, &xr);
+    const double L = xr - xl;
+
+    /* samples: the spectrum exp(-sigma^2 (k - k0)^2 / 2) must be negligible
+     * (exp(-50)) at the Nyquist wavenumber pi/dx: pi/dx >= k0 + 10/sigma */
+    long N = 64;
+    while (M_PI * (double)N / L < w.k0 + 10 / w.sigma)
+        N *= 2;
+    const double dx = L / (double)N, dk = 2 * M_PI / L;
+    double *u0 = mm_res_alloc(res, sizeof *u0 * (size_t)N);
+    size_t nb = mm_fourier_bins((size_t)N);
+    double *cr = mm_res_alloc(res, sizeof *cr * nb), *ci = mm_res_alloc(res, sizeof *ci * nb);
+    if (!u0 || !cr || !ci)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (long n = 0; n < N; n++)
+        u0[n] = creal(exact_psi(&w, xl + (double)n * dx, 0));           /* eq. (5) */
+    int rc = mm_fourier_dft(u0, (size_t)N, cr, ci, err);
+    if (rc != MM_OK)
+        return rc;
+
+    /* the modes that matter: |c_j| above 1e-17 of the largest */
+    double cmax = 0;
+    for (size_t j = 1; j < nb; j++)
+        cmax = fmax(cmax, hypot(cr[j], ci[j]));
+    int jlo = (int)nb - 1, jhi = 1;
+    for (size_t j = 1; j + 1 < nb; j++)                               /* the Nyquist bin is left out */
+        if (hypot(cr[j], ci[j]) > 1e-17 * cmax) {
+            jlo = (int)j < jlo ? (int)j : jlo;
+            jhi = (int)j;
+        }
+    int nm = jhi - jlo + 1;
+    double complex *C0 = mm_res_alloc(res, sizeof *C0 * (size_t)nm), *Ct = mm_res_alloc(res, sizeof *Ct * (size_t)nm);
+    if (!C0 || !Ct)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int j = jlo; j <= jhi; j++) {
+        double k = j * dk;
+        double ph = fmod(omega_of(&w, k) * t, 2 * M_PI);
+        C0[j - jlo] = cr[j] + I * ci[j];
+        Ct[j - jlo] = C0[j - jlo] * cexp(-I * ph);                     /* each mode's own phase, eq. (6) */
+    }
+
+    /* ---- the packet at 0 and at t on the plot grid ---- */
+    int np = (int)ceil(8 * L / lambda) + 1;
+    np = np < 501 ? 501 : np > 2001 ? 2001 : np;
+    mm_series *s0 = mm_res_series(res, "u0", "packet at t = 0", "m", "x", "m", np);
+    mm_series *st = mm_res_series(res, "u", "packet at time t", "m", "x", "m", np);
+    mm_series *e0 = mm_res_series(res, "envelope0", "envelope at t = 0", "m", "x", "m", np);
+    mm_series *et = mm_res_series(res, "envelope", "envelope at time t", "m", "x", "m", np);
+    double complex *p0 = mm_res_alloc(res, sizeof *p0 * (size_t)np), *pt = mm_res_alloc(res, sizeof *pt * (size_t)np);
+    if (!s0 || !st || !e0 || !et || !p0 || !pt)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_linspace(xl, xr, np, s0->x);
+    double complex c0 = cr[0];
+    mode_sum(C0, jlo, jhi, dk, c0, s0->x, np, xl, p0);
+    mode_sum(Ct, jlo, jhi, dk, c0, s0->x, np, xl, pt);
+    double worst = 0, worst0 = 0;
+    for (int i = 0; i < np; i++) {
+        double x = s0->x[i];
+        st->x[i] = e0->x[i] = et->x[i] = x;
+        s0->y[i] = creal(p0[i]);
+        st->y[i] = creal(pt[i]);
+        e0->y[i] = cabs(p0[i]);
+        et->y[i] = cabs(pt[i]);
+        worst = fmax(worst, fabs(st->y[i] - creal(exact_psi(&w, x, t))));
+        worst0 = fmax(worst0, fabs(s0->y[i] - creal(exact_psi(&w, x, 0))));
+    }
+    double xc0, xct, wd0, wdt;
+    moments(s0->x, p0, np, &xc0, &wd0);
+    moments(s0->x, pt, np, &xct, &wdt);
+    double speed = (xct - xc0) / t;
+
+    /* ---- dispersion curves: phase and group velocity against k ---- */
+    mm_series *vp = mm_res_series(res, "phase_velocity", "phase velocity omega/k", "m/s", "k", "rad/m", 201);
+    mm_series *vg = mm_res_series(res, "group_velocity", "group velocity d omega/dk", "m/s", "k", "rad/m", 201);
+    if (!vp || !vg)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_linspace(0, 2.5 * w.k0, 201, vp->x);
+    for (int i = 0; i < 201; i++) {
+        double k = vp->x[i];
+        vg->x[i] = k;
+        vp->y[i] = w.medium == M_BAR ? w.c : w.a * k;
+        vg->y[i] = group_of(&w, k);
+    }
+
+    /* ---- scalars ---- */
+    mm_res_scalar(res, "k0", "carrier wavenumber 2 pi / wavelength", "rad/m", w.k0);
+    mm_res_scalar(res, "omega0", "carrier angular frequency omega(k0)", "rad/s", w0);
+    mm_res_scalar(res, "f0", "carrier frequency", "Hz", w0 / (2 * M_PI));
+    mm_res_scalar(res, "phase_velocity", "phase velocity omega/k at k0", "m/s", cp);
+    mm_res_scalar(res, "group_velocity", "group velocity d omega/dk at k0", "m/s", cg);
+    mm_res_scalar(res, "ratio", "group / phase velocity", "", cg / cp);
+    mm_res_scalar(res, "centre_speed", "speed of the envelope's centroid (measured)", "m/s", speed);
+    mm_res_scalar(res, "travel", "distance the packet travelled", "m", xct - xc0);
+    mm_res_scalar(res, "crest_slip", "wavelengths the crests slip through the envelope, (c_g - c_p) t / wavelength", "",
+                  (cg - cp) * t / lambda);
+    mm_res_scalar(res, "width0", "r.m.s. width of the envelope at t = 0 (measured)", "m", wd0);
+    mm_res_scalar(res, "width", "r.m.s. width of the envelope at t (measured)", "m", wdt);
+    mm_res_scalar(res, "spread", "width at t / width at 0", "", wdt / wd0);
+
+    /* ---- checks ---- */
+    double tol_u = 1e-9 * w.A;
+    mm_res_check_abs(res, "packet at t = 0: mode sum vs eq. (5) (sampling and FFT) [m]", worst0, 0, tol_u);
+    mm_res_check_abs(res, w.medium == M_BAR
+                              ? "packet at t: mode sum vs the initial packet moved by c t, eq. (7) with beta = 0 [m]"
+                              : "packet at t: mode sum vs the Gaussian chirp, eq. (7) [m]",
+                     worst, 0, tol_u);
+    /* the centroid is found to ~1e-12 sigma; the speed then to that over t */
+    mm_res_check_abs(res, "centroid speed of |psi|^2 (measured) vs group velocity d omega/dk [m/s]", speed, cg,
+                     1e-8 * cg + 1e-9 * w.sigma / t);
+    mm_res_check_rel(res, "r.m.s. width at t (measured) vs sigma_t / sqrt 2, eq. (8) [m]", wdt, sigma_t(&w) / M_SQRT2,
+                     1e-8);
+
+    mm_res_method(res, "FFT of the sampled packet, each mode advanced by exp(-i omega(k) t), modes summed", 0);
+    mm_res_method_stat(res, "samples", (double)N);
+    mm_res_method_stat(res, "modes", nm);
+    mm_res_method_stat(res, "domain_wavelengths", L / lambda);
+
+    if (w.medium == M_BEAM && lambda < 10 * h)
+        mm_res_warn(res, "the wavelength is only %.2g times the thickness: Euler-Bernoulli theory (eq. 2) needs "
+                         "wavelengths well above 10 h; a real beam (Timoshenko) is slower here", lambda / h);
+    return MM_OK;
+}
+
+static const char *const references[] = {
+    "K. F. Graff, Wave Motion in Elastic Solids, Dover 1991, sections 1.3 (dispersion, group velocity) and 3.1",
+    "G. B. Whitham, Linear and Nonlinear Waves, Wiley 1974, ch. 11",
+    "S. S. Rao, Mechanical Vibrations, 6th ed., Pearson 2017, ch. 8 (continuous systems)",
+    NULL,
+};
+
+const mm_exercise mm_ex_vib_dispersion = {
+    .id = "vib-dispersion",
+    .chapter = 5,
+    .section = "5.3",
+    .title = "Phase and group velocity: a wave packet in a beam and in a bar",
+    .summary = "A wave packet travels at the group velocity while its crests move at the phase velocity; in a "
+               "beam the packet spreads, in a bar it keeps its shape.",
+    .tags = "waves, dispersion, phase velocity, group velocity, wave packet, beam, bar",
+    .theory = "exercises/vib/dispersion.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

@@ -1,0 +1,337 @@
+/* harmonics.c — vib-harmonics: the sum of two harmonic motions; beats, the
+ * envelope, periodicity, and the Lissajous figure of one against the other.
+ *
+ *     x(t) = A1 cos(w1 t + phi1) + A2 cos(w2 t + phi2)                    (1)
+ *
+ * Goal: see that two close frequencies beat — the sum swells and fades
+ * with the beat period 2 pi / |w1 - w2| between |A1 - A2| and A1 + A2
+ * (the envelope, eq. 4 of the theory) — and that the sum is periodic only
+ * when w1 / w2 is a ratio of whole numbers (eq. 6), which is also when the
+ * Lissajous figure closes.
+ * The motion is a closed form, so the checks compare two closed forms that
+ * are computed differently (the direct sum (1) against the envelope-phase
+ * form (3), and the product form (5) when A1 = A2), and, when the motion
+ * does beat, *measurements* on the signal against the formulas: the carrier
+ * peaks (local maxima of x, found by Brent's method on x' = 0) reach up to
+ * A1 + A2, and the minima of the peak heights recur with the beat period.
+ * Reference: S. S. Rao, Mechanical Vibrations, 6th ed., section 1.10;
+ * A. P. French, Vibrations and Waves, Norton 1971, ch. 2.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+
+#include "mm_exhelp.h"
+#include "mm_roots.h"
+
+enum { P_A1, P_W1, P_PHI1, P_A2, P_W2, P_PHI2, P_TEND, P_POINTS };
+
+#define MAX_RADIANS 2e4        /* t_end times the faster frequency: ~3200 periods */
+#define MAX_Q 1000             /* largest denominator of w1/w2 called periodic */
+#define MAX_MINIMA 4000
+
+static const mm_param params[] = {
+    [P_A1] = {"A1", "amplitude 1", "m", MM_REAL, 1, 1e-6, 1e3, .help = "amplitude of the first harmonic"},
+    [P_W1] = {"omega1", "angular frequency 1", "rad/s", MM_REAL, 10, 0.01, 1e3,
+              .help = "angular frequency of the first harmonic"},
+    [P_PHI1] = {"phi1", "phase 1", "rad", MM_REAL, 0, -M_PI, M_PI, .help = "phase angle of the first harmonic"},
+    [P_A2] = {"A2", "amplitude 2", "m", MM_REAL, 1, 1e-6, 1e3,
+              .help = "amplitude of the second harmonic; equal amplitudes cancel fully at the beat nodes"},
+    [P_W2] = {"omega2", "angular frequency 2", "rad/s", MM_REAL, 11, 0.01, 1e3,
+              .help = "close to omega1 the sum beats; a whole-number ratio makes it periodic"},
+    [P_PHI2] = {"phi2", "phase 2", "rad", MM_REAL, 0, -M_PI, M_PI, .help = "phase angle of the second harmonic"},
+    [P_TEND] = {"t_end", "duration", "s", MM_REAL, 20, 0.01, 1e3,
+                .help = "length of the plotted motion; at most 2e4 radians of the faster harmonic"},
+    [P_POINTS] = {"points", "plot points", "", MM_INT, 2001, 101, 4001,
+                  .help = "samples of each plotted curve"},
+};
+
+typedef struct harm {
+    double A1, w1, p1, A2, w2, p2;
+} harm;
+
+static harm model(const mm_value *in)
+{
+    return (harm){in[P_A1].x, in[P_W1].x, in[P_PHI1].x, in[P_A2].x, in[P_W2].x, in[P_PHI2].x};
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    double wmax = fmax(in[P_W1].x, in[P_W2].x), t_end = in[P_TEND].x;
+    if (t_end * wmax > MAX_RADIANS)
+        return mm_error_set(err, MM_ERANGE, "t_end",
+                            "t_end must be at most %g s with the faster harmonic at %g rad/s (%g radians, "
+                            "about 3200 periods); got %g s", MAX_RADIANS / wmax, wmax, MAX_RADIANS, t_end);
+    return MM_OK;
+}
+
+static double x_sum(const harm *h, double t)                      /* eq. (1) */
+{
+    return h->A1 * cos(h->w1 * t + h->p1) + h->A2 * cos(h->w2 * t + h->p2);
+}
+
+/* The envelope and the phase of eq. (3): x = E cos(w1 t + phi1 + psi),
+ * E = |A1 + A2 e^{i Delta}|, Delta = (w2 - w1) t + phi2 - phi1. */
+static double envelope(const harm *h, double t, double *psi)
+{
+    double d = (h->w2 - h->w1) * t + (h->p2 - h->p1);
+    double re = h->A1 + h->A2 * cos(d), im = h->A2 * sin(d);
+    if (psi)
+        *psi = atan2(im, re);
+    return hypot(re, im);                                          /* eq. (4), no cancellation */
+}
+
+static int dx_dt(double t, double *fx, void *ctx)
+{
+    const harm *h = ctx;
+    *fx = -h->A1 * h->w1 * sin(h->w1 * t + h->p1) - h->A2 * h->w2 * sin(h->w2 * t + h->p2);
+    return 0;
+}
+
+/* w1/w2 = p/q with q <= MAX_Q, to 1e-9 relative (continued fraction). */
+static int rational(double r, long *p, long *q)
+{
+    long h0 = 0, h1 = 1, k0 = 1, k1 = 0;
+    double x = r;
+    for (int i = 0; i < 40; i++) {
+        double a = floor(x);
+        long h2 = (long)a * h1 + h0, k2 = (long)a * k1 + k0;
+        if (k2 > MAX_Q)
+            return 0;
+        h0 = h1; h1 = h2; k0 = k1; k1 = k2;
+        if (fabs((double)h1 / (double)k1 - r) <= 1e-9 * r) {
+            *p = h1;
+            *q = k1;
+            return 1;
+        }
+        if (x - a < 1e-15)
+            return 0;
+        x = 1 / (x - a);
+    }
+    return 0;
+}
+
+/* Times of the envelope's minima measured on the signal: the heights p_i
+ * of successive carrier peaks sample E(t_i); where p_i^2 dips (below the
+ * mean level A1^2 + A2^2) a parabola through three neighbours gives the
+ * bottom.  Dips closer than half a beat period are one dip.  Returns the
+ * number stored in tmin. */
+static int envelope_minima(const double *tp, const double *pp, int np, const harm *h, double Tb,
+                           double *tmin, double *ymin)
+{
+    int nm = 0;
+    double level = h->A1 * h->A1 + h->A2 * h->A2;
+    for (int i = 1; i + 1 < np && nm < MAX_MINIMA; i++) {
+        double y0 = pp[i - 1] * pp[i - 1], y1 = pp[i] * pp[i], y2 = pp[i + 1] * pp[i + 1];
+        if (!(y1 < y0 && y1 <= y2 && y1 < level))
+            continue;
+        /* vertex of the parabola through (t0,y0), (t1,y1), (t2,y2) */
+        double a = tp[i - 1] - tp[i], b = tp[i + 1] - tp[i];
+        double da = y0 - y1, db = y2 - y1;
+        double den = 2 * (da * b - db * a);
+        double tv = tp[i] + (den != 0 ? (da * b * b - db * a * a) / den : 0);
+        if (tv < tp[i - 1] || tv > tp[i + 1])
+            tv = tp[i];
+        if (nm > 0 && tv - tmin[nm - 1] < 0.5 * Tb) {
+            if (y1 < ymin[nm - 1]) {
+                tmin[nm - 1] = tv;
+                ymin[nm - 1] = y1;
+            }
+            continue;
+        }
+        tmin[nm] = tv;
+        ymin[nm] = y1;
+        nm++;
+    }
+    return nm;
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    harm h = model(in);
+    const double t_end = in[P_TEND].x;
+    const int n = (int)in[P_POINTS].x;
+    const double dw = fabs(h.w1 - h.w2), wm = 0.5 * (h.w1 + h.w2), wmax = fmax(h.w1, h.w2);
+    const double Emax = h.A1 + h.A2, Emin = fabs(h.A1 - h.A2);
+
+    /* ---- periodicity, eq. (6) ---- */
+    long p = 0, q = 0;
+    int periodic = rational(h.w1 / h.w2, &p, &q);
+    double Tp = periodic ? 2 * M_PI * (double)p / h.w1 : 0;   /* p periods of x1 = q periods of x2 */
+    char ptext[96];
+    if (periodic)
+        snprintf(ptext, sizeof ptext, "periodic: omega1/omega2 = %ld/%ld", p, q);
+    else
+        snprintf(ptext, sizeof ptext, "not periodic: omega1/omega2 is no ratio p/q with q <= %d", MAX_Q);
+
+    /* ---- scalars ---- */
+    if (dw > 0) {
+        mm_res_scalar(res, "beat_period", "beat period 2 pi / |omega1 - omega2|", "s", 2 * M_PI / dw);
+        mm_res_scalar(res, "beat_frequency", "beat frequency |omega1 - omega2| / (2 pi)", "Hz", dw / (2 * M_PI));
+    }
+    mm_res_scalar(res, "carrier_omega", "mean angular frequency (omega1 + omega2)/2", "rad/s", wm);
+    mm_res_scalar(res, "envelope_max", "largest envelope A1 + A2", "m", Emax);
+    mm_res_scalar(res, "envelope_min", "smallest envelope |A1 - A2|", "m", Emin);
+    /* the text must outlive solve: a copy in the arena */
+    mm_res_scalar_text(res, "periodic", "is the sum periodic?", "", periodic, mm_res_strdup(res, ptext));
+    if (periodic)
+        mm_res_scalar(res, "period", "period of the sum", "s", Tp);
+
+    /* ---- series ---- */
+    mm_series *sx = mm_res_series(res, "x", "x1 + x2", "m", "t", "s", n);
+    mm_series *se = mm_res_series(res, "envelope", "envelope +E(t)", "m", "t", "s", n);
+    mm_series *sl = mm_res_series(res, "envelope_lower", "envelope -E(t)", "m", "t", "s", n);
+    mm_series *s1 = mm_res_series(res, "x1", "first harmonic x1", "m", "t", "s", n);
+    mm_series *s2 = mm_res_series(res, "x2", "second harmonic x2", "m", "t", "s", n);
+    mm_series *lj = mm_res_series(res, "lissajous", "Lissajous figure: x2 against x1", "m", "x1", "m", n);
+    if (!sx || !se || !sl || !s1 || !s2 || !lj)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_linspace(0, t_end, n, sx->x);
+    double worst_form = 0, worst_prod = 0;
+    int equal = fabs(h.A1 - h.A2) <= 1e-12 * Emax;
+    for (int i = 0; i < n; i++) {
+        double t = sx->x[i], psi;
+        se->x[i] = sl->x[i] = s1->x[i] = s2->x[i] = t;
+        s1->y[i] = h.A1 * cos(h.w1 * t + h.p1);
+        s2->y[i] = h.A2 * cos(h.w2 * t + h.p2);
+        sx->y[i] = s1->y[i] + s2->y[i];
+        double E = envelope(&h, t, &psi);
+        se->y[i] = E;
+        sl->y[i] = -E;
+        worst_form = fmax(worst_form, fabs(sx->y[i] - E * cos(h.w1 * t + h.p1 + psi)));      /* eq. (3) */
+        if (equal) {                                                                           /* eq. (5) */
+            double xp = 2 * h.A1 * cos(0.5 * ((h.w2 - h.w1) * t + h.p2 - h.p1)) *
+                        cos(0.5 * ((h.w1 + h.w2) * t + h.p1 + h.p2));
+            worst_prod = fmax(worst_prod, fabs(sx->y[i] - xp));
+        }
+    }
+    /* the Lissajous figure over one common period if it fits, else over t_end */
+    double tl = periodic && Tp <= t_end ? Tp : t_end;
+    for (int i = 0; i < n; i++) {
+        double t = tl * i / (n - 1);
+        lj->x[i] = h.A1 * cos(h.w1 * t + h.p1);
+        lj->y[i] = h.A2 * cos(h.w2 * t + h.p2);
+    }
+    /* rounding of cos at arguments up to w t_end: a few eps times the argument */
+    double tol_form = 16 * DBL_EPSILON * (1 + wmax * t_end + M_PI) * Emax;
+    mm_res_check_abs(res, "direct sum (1) vs envelope-phase form (3): worst difference [m]", worst_form, 0, tol_form);
+    if (equal)
+        mm_res_check_abs(res, "direct sum (1) vs product form (5) (A1 = A2): worst difference [m]", worst_prod, 0,
+                         tol_form);
+
+    /* ---- measurements on the signal: carrier peaks by Brent on x' = 0 ---- */
+    int nsub = (int)ceil(8 * t_end * wmax / (2 * M_PI)) + 8;        /* 8 parts per period of the faster one */
+    mm_roots_problem prob = {.f = dx_dt, .params = &h, .a = 0, .b = t_end};
+    mm_roots_options opt;
+    mm_roots_options_init(&opt);
+    opt.n = nsub;
+    opt.tol = 1e-11 / wmax;
+    mm_roots_result rr = {.cap = nsub + 1};
+    rr.roots = mm_res_alloc(res, sizeof *rr.roots * (size_t)rr.cap);
+    double *tp = mm_res_alloc(res, sizeof *tp * (size_t)rr.cap), *pp = mm_res_alloc(res, sizeof *pp * (size_t)rr.cap);
+    if (!rr.roots || !tp || !pp)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    int rc = mm_roots_solve(&prob, &opt, &rr, err);
+    if (rc != MM_OK)
+        return rc;
+    int np = 0;
+    for (int i = 0; i < rr.nroots; i++) {
+        double t = rr.roots[i].x;
+        double x2 = -h.A1 * h.w1 * h.w1 * cos(h.w1 * t + h.p1) - h.A2 * h.w2 * h.w2 * cos(h.w2 * t + h.p2);
+        if (x2 < 0) {                                                /* a maximum of x */
+            tp[np] = t;
+            pp[np] = x_sum(&h, t);
+            np++;
+        }
+    }
+    double pmax = -INFINITY, pmin = INFINITY, excess = 0;
+    for (int i = 0; i < np; i++) {
+        pmax = fmax(pmax, pp[i]);
+        pmin = fmin(pmin, pp[i]);
+        excess = fmax(excess, pp[i] - envelope(&h, tp[i], NULL));
+    }
+    mm_res_method(res, "closed form; carrier peaks by Brent's method on x'(t) = 0", 0);
+    mm_res_method_stat(res, "subintervals", nsub);
+    mm_res_method_stat(res, "peaks", np);
+    mm_res_method_stat(res, "evaluations", (double)rr.nevals);
+    if (np > 0) {
+        mm_res_scalar(res, "peak_max", "highest carrier peak (measured)", "m", pmax);
+        mm_res_scalar(res, "peak_min", "lowest carrier peak (measured)", "m", pmin);
+        mm_res_check_abs(res, "carrier peaks never rise above the envelope (4): worst excess [m]", fmax(0, excess), 0,
+                         tol_form);
+    }
+
+    /* Beats: the carrier much faster than the beat, a visible modulation
+     * (the smaller amplitude at least 5 % of the larger). */
+    double Tb = dw > 0 ? 2 * M_PI / dw : INFINITY, Tc = 2 * M_PI / wm;
+    int beats = dw > 0 && wm >= 5 * dw && fmin(h.A1, h.A2) >= 0.05 * fmax(h.A1, h.A2);
+    if (!beats) {
+        if (dw == 0)
+            mm_res_warn(res, "equal frequencies: no beats; the sum is one harmonic of amplitude %g m", Emax);
+        else if (wm < 5 * dw)
+            mm_res_warn(res, "the frequencies are far apart (beat period %.3g s, only %.2g carrier periods): "
+                             "no clear beats to measure; bring omega2 closer to omega1", Tb, Tb / Tc);
+        else
+            mm_res_warn(res, "the smaller amplitude is under 5 %% of the larger: the envelope hardly moves "
+                             "(between %g and %g m); the beat period is not measured", Emin, Emax);
+        return MM_OK;
+    }
+    /* The highest peak: near an envelope maximum the nearest carrier peak is
+     * within half a carrier period pi/theta', theta' = (A1 w1 + A2 w2)/(A1 + A2),
+     * where E falls by at most |E''| (pi/theta')^2 / 2, E'' = A1 A2 dw^2 / (A1 + A2);
+     * doubled for the peak's own offset from E. */
+    double thp = (h.A1 * h.w1 + h.A2 * h.w2) / Emax;
+    if (t_end >= Tb + 2 * Tc) {
+        double tol_peak = h.A1 * h.A2 * dw * dw / Emax * (M_PI / thp) * (M_PI / thp) + tol_form;
+        mm_res_check_abs(res, "highest carrier peak vs the envelope maximum A1 + A2 [m]", pmax, Emax, tol_peak);
+    }
+    double *tmin = mm_res_alloc(res, sizeof *tmin * MAX_MINIMA), *ymin = mm_res_alloc(res, sizeof *ymin * MAX_MINIMA);
+    if (!tmin || !ymin)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    int nm = envelope_minima(tp, pp, np, &h, Tb, tmin, ymin);
+    int regular = nm >= 2;
+    for (int i = 1; i < nm; i++)
+        if (fabs(tmin[i] - tmin[i - 1] - Tb) > 0.5 * Tb)
+            regular = 0;
+    if (regular) {
+        double Tm = (tmin[nm - 1] - tmin[0]) / (nm - 1);
+        mm_res_scalar(res, "beat_period_measured", "beat period measured between envelope minima", "s", Tm);
+        /* each bottom is placed to within half a carrier period */
+        mm_res_check_abs(res, "beat period: measured between envelope minima vs 2 pi/|omega1 - omega2| [s]", Tm, Tb,
+                         Tc / (nm - 1));
+    } else if (t_end >= 2.5 * Tb) {
+        mm_res_warn(res, "the envelope minima could not be told apart (%d found): the beat period is not measured",
+                    nm);
+    } else {
+        mm_res_warn(res, "t_end = %g s holds fewer than two envelope minima: raise it above %.3g s to measure the "
+                         "beat period", t_end, 2.5 * Tb);
+    }
+    double per_period = (n - 1) / (t_end * wmax / (2 * M_PI));
+    if (per_period < 8)
+        mm_res_warn(res, "the plot has %.1f points per period of the faster harmonic: it cannot draw the carrier; "
+                         "shorten t_end or raise points", per_period);
+    return MM_OK;
+}
+
+static const char *const references[] = {
+    "S. S. Rao, Mechanical Vibrations, 6th ed., Pearson 2017, section 1.10 (harmonic motion, beats)",
+    "A. P. French, Vibrations and Waves, Norton 1971, ch. 2 (superposed vibrations, Lissajous figures)",
+    "R. P. Brent, Algorithms for Minimization without Derivatives, Prentice-Hall 1973, ch. 4",
+    NULL,
+};
+
+const mm_exercise mm_ex_vib_harmonics = {
+    .id = "vib-harmonics",
+    .chapter = 5,
+    .section = "5.2",
+    .title = "Two harmonics: beats and Lissajous figures",
+    .summary = "The sum of two harmonic motions: beats and their envelope, when the sum is periodic, and the "
+               "Lissajous figure of one against the other.",
+    .tags = "harmonic motion, beats, envelope, periodic motion, Lissajous",
+    .theory = "exercises/vib/harmonics.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

@@ -1,0 +1,377 @@
+/* test_ex_vib2.c — the hard cases of the chapter-5 signal exercises, through
+ * the real pipeline (mm_api_solve: text parameters -> validation -> solve ->
+ * JSON), read back with cJSON:
+ *   vib-dft:               a frequency between bins leaks, the Hann window
+ *                          reduces it; a bin-centred one does not leak;
+ *                          a component above fs/2 is warned about and shows
+ *                          up at its alias; a non-finite sample is refused;
+ *   vib-fourier-series:    the Gibbs overshoot tends to 8.95 % of the jump
+ *                          (square like 1/K^2, sawtooth like 1/(2(K+1)));
+ *                          coefficients against the closed forms;
+ *   vib-fourier-transform: first zeros at 1/tau, 2/tau, 3/(2 tau); moving
+ *                          the pulse changes only the phase;
+ *   vib-dispersion:        group velocity twice the phase velocity in the
+ *                          beam, equal in the bar, and the bar keeps shape;
+ *   vib-harmonics:         the beat period measured on the signal. */
+#include "mm_test.h"
+
+#include <cJSON.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mm_api.h"
+#include "mm_fourier.h"
+
+/* ---- running a request ------------------------------------------------------ */
+
+typedef struct answer {
+    int status;
+    cJSON *doc;
+} answer;
+
+/* query: "a=1&b=2" (no URL encoding; values must not contain '&'). */
+static answer solve(const char *id, const char *query)
+{
+    const mm_exercise *ex = mm_exercise_find(id);
+    assert_non_null(ex);
+    static char buf[4096];
+    snprintf(buf, sizeof buf, "%s", query);
+    mm_input in[MM_MAX_PARAMS];
+    int n = 0;
+    for (char *save = NULL, *tok = strtok_r(buf, "&", &save); tok; tok = strtok_r(NULL, "&", &save)) {
+        char *eq = strchr(tok, '=');
+        assert_non_null(eq);
+        *eq = '\0';
+        in[n] = (mm_input){tok, eq + 1, strlen(tok), strlen(eq + 1)};
+        n++;
+    }
+    mm_buf out;
+    mm_buf_init(&out, MM_ANSWER_MAX);
+    answer a = {.status = mm_api_solve(ex, in, n, &out)};
+    a.doc = cJSON_Parse(out.p);
+    if (!a.doc)
+        fail_msg("%s?%s: the answer is not JSON", id, query);
+    mm_buf_free(&out);
+    return a;
+}
+
+/* Solve, insist on 200 with every check passed. */
+static cJSON *solve_ok(const char *id, const char *query)
+{
+    answer a = solve(id, query);
+    if (a.status != 200) {
+        char *s = cJSON_PrintUnformatted(a.doc);
+        fail_msg("%s?%s: status %d: %.300s", id, query, a.status, s);
+    }
+    const cJSON *c;
+    cJSON_ArrayForEach(c, cJSON_GetObjectItem(a.doc, "checks")) {
+        if (!cJSON_IsTrue(cJSON_GetObjectItem(c, "passed"))) {
+            char *s = cJSON_PrintUnformatted(c);
+            fail_msg("%s?%s: check failed: %s", id, query, s);
+        }
+    }
+    return a.doc;
+}
+
+static double scalar(const cJSON *doc, const char *name)
+{
+    const cJSON *s;
+    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, "scalars")) {
+        if (strcmp(cJSON_GetObjectItem(s, "name")->valuestring, name) == 0)
+            return cJSON_GetObjectItem(s, "value")->valuedouble;
+    }
+    fail_msg("no scalar %s", name);
+    return NAN;
+}
+
+static int warned(const cJSON *doc, const char *text)
+{
+    const cJSON *w;
+    cJSON_ArrayForEach(w, cJSON_GetObjectItem(doc, "warnings")) {
+        if (strstr(w->valuestring, text))
+            return 1;
+    }
+    return 0;
+}
+
+/* Cell (row, column name) of a table. */
+static double cell(const cJSON *doc, const char *table, int row, const char *col)
+{
+    const cJSON *t;
+    cJSON_ArrayForEach(t, cJSON_GetObjectItem(doc, "tables")) {
+        if (strcmp(cJSON_GetObjectItem(t, "name")->valuestring, table))
+            continue;
+        int c = 0;
+        const cJSON *name;
+        cJSON_ArrayForEach(name, cJSON_GetObjectItem(t, "columns")) {
+            if (strcmp(name->valuestring, col) == 0)
+                break;
+            c++;
+        }
+        const cJSON *r = cJSON_GetArrayItem(cJSON_GetObjectItem(t, "rows"), row);
+        assert_non_null(r);
+        const cJSON *v = cJSON_GetArrayItem(r, c);
+        assert_non_null(v);
+        return v->valuedouble;
+    }
+    fail_msg("no table %s", table);
+    return NAN;
+}
+
+/* ---- vib-dft ------------------------------------------------------------------ */
+
+static void dft_frequency_between_bins_should_leak_and_hann_should_reduce_it(void **state)
+{
+    (void)state;
+    /* 10.3515625 Hz = 26.5 bins of 100/256 Hz: the worst case, half a bin off */
+    cJSON *rect = solve_ok("vib-dft", "signal=sin(2*pi*10.3515625*t)&fs=100&N=256&window=rect");
+    cJSON *hann = solve_ok("vib-dft", "signal=sin(2*pi*10.3515625*t)&fs=100&N=256&window=hann");
+    double lr = scalar(rect, "leakage"), lh = scalar(hann, "leakage");
+    /* eq. (5) at delta = 1/2, bins 1/|k - 26.5|^2; the peak is bin 26 (the
+     * first of two equal ones), so bins 24..28 count as the peak:
+     * 1 - (2 (4 + 4/9) + 4/25) / pi^2 = 8.3 % (N = 256 is not infinite: 8.1 %) */
+    check_abs(lr, 1 - (2 * (4 + 4.0 / 9) + 4.0 / 25) / (M_PI * M_PI), 0.005, "rect leakage half a bin off");
+    assert_true(lh < 1e-3);                       /* Hann: skirt falls like distance^-3 */
+    assert_true(lh < lr / 50);
+    /* scalloping: rect 2/pi = 0.637 (-3.9 dB), Hann 0.849 (-1.4 dB); N finite: a little off */
+    check_abs(scalar(rect, "peak_amplitude"), 2 / M_PI, 0.01, "rect peak half a bin off");
+    check_abs(scalar(hann, "peak_amplitude"), 0.849, 0.01, "Hann peak half a bin off");
+    assert_true(warned(rect, "leakage"));
+    assert_false(warned(hann, "leakage"));
+    cJSON_Delete(rect);
+    cJSON_Delete(hann);
+
+    /* on a bin (10 Hz = bin 20 of 0.5 Hz): no leakage, amplitude exact, both windows */
+    const char *w[] = {"rect", "hann"};
+    for (int i = 0; i < 2; i++) {
+        char q[160];
+        snprintf(q, sizeof q, "signal=sin(2*pi*10*t)&fs=100&N=200&window=%s", w[i]);
+        cJSON *d = solve_ok("vib-dft", q);
+        check_abs(scalar(d, "leakage"), 0, 1e-12, "bin-centred sine: no leakage");
+        check_rel(scalar(d, "peak_amplitude"), 1, 1e-12, "bin-centred sine reads its amplitude");
+        check_rel(scalar(d, "peak_frequency"), 10, 1e-12, "bin-centred sine: its frequency");
+        check_rel(cell(d, "peaks", 0, "f"), 10, 1e-12, "peaks table, first row");
+        cJSON_Delete(d);
+    }
+}
+
+static void dft_component_above_nyquist_should_be_warned_and_seen_at_its_alias(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-dft", "signal=sin(2*pi*70*t)&fs=100&N=200");
+    assert_true(warned(d, "aliasing"));
+    assert_true(warned(d, "30 Hz"));              /* |70 - 100| */
+    check_abs(scalar(d, "peak_frequency"), 30, 1e-9, "70 Hz sampled at 100 Hz reads 30 Hz");
+    check_abs(scalar(d, "above_nyquist"), 1, 1e-6, "all the power lies above fs/2");
+    cJSON_Delete(d);
+
+    /* a square wave has harmonics without end: always aliased */
+    d = solve_ok("vib-dft", "signal=sign(sin(2*pi*5*t))&fs=100&N=256");
+    assert_true(warned(d, "aliasing"));
+    cJSON_Delete(d);
+
+    /* the default (5 and 12 Hz at 100 Hz): no warning */
+    d = solve_ok("vib-dft", "");
+    assert_false(warned(d, "aliasing"));
+    assert_true(scalar(d, "above_nyquist") < 1e-9);
+    check_rel(cell(d, "peaks", 0, "f"), 5.078125, 1e-12, "largest peak at the bin nearest 5 Hz");
+    check_rel(cell(d, "peaks", 1, "f"), 12.109375, 1e-12, "second peak at the bin nearest 12 Hz (30.72 bins)");
+    cJSON_Delete(d);
+
+    /* fs just above twice the frequency: no alias, peak where it belongs */
+    d = solve_ok("vib-dft", "signal=sin(2*pi*70*t)&fs=200&N=200");
+    assert_false(warned(d, "aliasing"));
+    check_abs(scalar(d, "peak_frequency"), 70, 1e-9, "sampled fast enough");
+    cJSON_Delete(d);
+}
+
+static void dft_non_finite_samples_should_be_refused_naming_signal(void **state)
+{
+    (void)state;
+    answer a = solve("vib-dft", "signal=1/t");          /* inf at t = 0 */
+    assert_int_equal(a.status, 400);
+    const cJSON *e = cJSON_GetObjectItem(a.doc, "error");
+    assert_string_equal(cJSON_GetObjectItem(e, "param")->valuestring, "signal");
+    cJSON_Delete(a.doc);
+    a = solve("vib-dft", "signal=sqrt(t-1)");            /* NaN before t = 1 */
+    assert_int_equal(a.status, 400);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetObjectItem(a.doc, "error"), "param")->valuestring, "signal");
+    cJSON_Delete(a.doc);
+    a = solve("vib-dft", "signal=sin(2*pi*x)");          /* unknown variable */
+    assert_int_equal(a.status, 400);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetObjectItem(a.doc, "error"), "param")->valuestring, "signal");
+    cJSON_Delete(a.doc);
+    /* a pole between the samples: solved, but the aliasing test says it could not look */
+    cJSON *d = solve_ok("vib-dft", "signal=1/(t-0.005)");
+    assert_true(warned(d, "aliasing not tested"));
+    cJSON_Delete(d);
+}
+
+/* ---- vib-fourier-series -------------------------------------------------------- */
+
+static void gibbs_overshoot_should_tend_to_nine_percent_of_the_jump(void **state)
+{
+    (void)state;
+    const double G = 0.089489872236083;     /* Si(pi)/pi - 1/2 */
+    const int K[] = {25, 100, 400};
+    double prev = INFINITY;
+    for (int i = 0; i < 3; i++) {
+        char q[80];
+        snprintf(q, sizeof q, "wave=square&terms=%d&A=2", K[i]);
+        cJSON *d = solve_ok("vib-fourier-series", q);
+        double frac = scalar(d, "overshoot_fraction"), n = (K[i] + 1) / 2;
+        /* eq. (11): within pi^2/(72 n^2), plus the coefficients' aliasing */
+        check_abs(frac, G, M_PI * M_PI / (72 * n * n) + 1e-5, "square: overshoot / jump");
+        check_rel(scalar(d, "overshoot"), 2 * 2 * frac, 1e-12, "overshoot = fraction x jump 2A");
+        assert_true(fabs(frac - G) < prev);
+        prev = fabs(frac - G);
+        cJSON_Delete(d);
+    }
+    check_abs(prev, 0, 1e-5, "square, K = 400: 8.95 % to 1e-5");
+    for (int i = 0; i < 3; i++) {
+        char q[80];
+        snprintf(q, sizeof q, "wave=sawtooth&terms=%d", K[i]);
+        cJSON *d = solve_ok("vib-fourier-series", q);
+        double frac = scalar(d, "overshoot_fraction");
+        /* eq. (13): G - 1/(2(K+1)) within pi^2/(36 (K+1)^2) */
+        check_abs(frac, G - 0.5 / (K[i] + 1), M_PI * M_PI / (36.0 * (K[i] + 1) * (K[i] + 1)) + 1e-5,
+                  "sawtooth: overshoot / jump approaches like 1/(2(K+1))");
+        cJSON_Delete(d);
+    }
+    /* the triangle has no jump: max S_K < A, by the tail of eq. (14) */
+    cJSON *d = solve_ok("vib-fourier-series", "wave=triangle&terms=25");
+    double tail = 0;
+    for (int k = 27; k < 2000001; k += 2)
+        tail += 1.0 / ((double)k * k);
+    check_abs(scalar(d, "overshoot"), -8 / (M_PI * M_PI) * tail, 1e-6, "triangle: the corner is rounded");
+    assert_true(scalar(d, "overshoot") < 0);
+    cJSON_Delete(d);
+}
+
+static void fourier_coefficients_should_match_the_closed_forms(void **state)
+{
+    (void)state;
+    /* terms = 9 samples N = 4096 points per period; the tolerances are the
+     * aliasing bounds of eq. (9) (they are nearly attained) */
+    const double N2 = 4096.0 * 4096.0;
+    cJSON *d = solve_ok("vib-fourier-series", "wave=square&terms=9&A=3");
+    for (int k = 0; k <= 9; k++) {
+        double b = k % 2 ? 4 * 3 / (k * M_PI) : 0;
+        check_abs(cell(d, "coefficients", k, "k"), k, 0, "k column");
+        check_abs(cell(d, "coefficients", k, "b_k"), b, 1.01 * 4 * M_PI / 3 * 3 * k / (N2 - k * k) + 1e-14,
+                  "square b_k = 4A/(k pi), odd k");
+        check_abs(cell(d, "coefficients", k, "a_k"), 0, 1e-12, "square a_k = 0");
+    }
+    cJSON_Delete(d);
+    d = solve_ok("vib-fourier-series", "wave=sawtooth&terms=9&T=2");
+    for (int k = 1; k <= 9; k++)
+        check_abs(cell(d, "coefficients", k, "b_k"), -2 / (k * M_PI), 1.01 * 2 * M_PI / 3 * k / (N2 - k * k) + 1e-14,
+                  "sawtooth b_k = -2A/(k pi)");
+    cJSON_Delete(d);
+    d = solve_ok("vib-fourier-series", "wave=triangle&terms=9");
+    for (int k = 1; k <= 9; k++)
+        check_abs(cell(d, "coefficients", k, "a_k"), k % 2 ? 8 / (M_PI * M_PI * k * k) : 0,
+                  8 / (3 * (4096.0 - k) * (4096.0 - k)) + 1e-14, "triangle a_k = 8A/(pi k)^2, odd k");
+    cJSON_Delete(d);
+}
+
+/* ---- vib-fourier-transform ------------------------------------------------------ */
+
+static void pulse_spectra_should_have_their_first_zeros_where_the_closed_forms_say(void **state)
+{
+    (void)state;
+    const char *p[] = {"rectangular", "triangular", "half-sine"};
+    const double z[] = {1, 2, 1.5};
+    for (int i = 0; i < 3; i++) {
+        char q[120];
+        snprintf(q, sizeof q, "pulse=%s&duration=0.1&fs=1000&N=1024", p[i]);
+        cJSON *d = solve_ok("vib-fourier-transform", q);
+        /* 100 samples across the pulse: the zero moves by O(dt^2) (kinks) or not at all */
+        check_rel(scalar(d, "first_zero_times_duration"), z[i], 1e-3, p[i]);
+        cJSON_Delete(d);
+    }
+    cJSON *d = solve_ok("vib-fourier-transform", "pulse=gaussian&duration=0.1");
+    check_rel(scalar(d, "half_amplitude_frequency"), sqrt(log(2) / 2) / (M_PI * 0.1 / 6), 1e-9, "Gaussian");
+    cJSON_Delete(d);
+
+    /* moving the pulse changes only the phase: the same magnitudes */
+    cJSON *a = solve_ok("vib-fourier-transform", "pulse=half-sine&t_c=0.2");
+    cJSON *b = solve_ok("vib-fourier-transform", "pulse=half-sine&t_c=-7.3");
+    const cJSON *sa = cJSON_GetArrayItem(cJSON_GetObjectItem(a, "series"), 0);
+    const cJSON *sb = cJSON_GetArrayItem(cJSON_GetObjectItem(b, "series"), 0);
+    assert_string_equal(cJSON_GetObjectItem(sa, "name")->valuestring, "magnitude");
+    int n = cJSON_GetArraySize(cJSON_GetObjectItem(sa, "y"));
+    assert_int_equal(n, cJSON_GetArraySize(cJSON_GetObjectItem(sb, "y")));
+    for (int i = 0; i < n; i++)
+        check_abs(cJSON_GetArrayItem(cJSON_GetObjectItem(sa, "y"), i)->valuedouble,
+                  cJSON_GetArrayItem(cJSON_GetObjectItem(sb, "y"), i)->valuedouble, 1e-15,
+                  "|X(f)| does not depend on t_c");
+    cJSON_Delete(a);
+    cJSON_Delete(b);
+
+    /* jumps between samples: first-order error, warned */
+    d = solve_ok("vib-fourier-transform", "duration=0.1055");
+    assert_true(warned(d, "between samples"));
+    check_rel(scalar(d, "first_zero"), 1 / 0.105, 1e-6, "the sampled rectangle is 0.105 s long");
+    cJSON_Delete(d);
+}
+
+/* ---- vib-dispersion ------------------------------------------------------------- */
+
+static void beam_packet_should_travel_at_twice_the_phase_velocity_and_spread(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-dispersion", "medium=beam");
+    check_rel(scalar(d, "ratio"), 2, 1e-15, "beam: c_g = 2 c_p");
+    check_rel(scalar(d, "centre_speed"), scalar(d, "group_velocity"), 1e-9, "centroid at the group velocity");
+    assert_true(scalar(d, "spread") > 1.3);
+    cJSON_Delete(d);
+    d = solve_ok("vib-dispersion", "medium=bar");
+    check_rel(scalar(d, "ratio"), 1, 1e-15, "bar: c_g = c_p");
+    check_rel(scalar(d, "centre_speed"), sqrt(2.1e11 / 7850), 1e-9, "bar: sqrt(E/rho)");
+    check_rel(scalar(d, "spread"), 1, 1e-9, "bar: the packet keeps its width");
+    cJSON_Delete(d);
+    answer a = solve("vib-dispersion", "medium=bar&t=1");   /* 5 km of travel: too long to show */
+    assert_int_equal(a.status, 400);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetObjectItem(a.doc, "error"), "param")->valuestring, "t");
+    cJSON_Delete(a.doc);
+}
+
+/* ---- vib-harmonics -------------------------------------------------------------- */
+
+static void beat_period_should_be_measured_on_the_signal(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-harmonics", "omega1=10&omega2=10.7071&A2=0.7&phi2=1&t_end=60");
+    check_rel(scalar(d, "beat_period_measured"), 2 * M_PI / 0.7071, 1e-3, "beat period from the envelope minima");
+    check_abs(scalar(d, "peak_max"), 1.7, 0.02, "highest carrier peak reaches A1 + A2");
+    check_abs(scalar(d, "periodic"), 0, 0, "10 : 10.7071 is no small ratio");
+    cJSON_Delete(d);
+    d = solve_ok("vib-harmonics", "");
+    check_abs(scalar(d, "periodic"), 1, 0, "10 : 11");
+    check_rel(scalar(d, "period"), 2 * M_PI, 1e-12, "period of 10 : 11 rad/s");
+    cJSON_Delete(d);
+}
+
+/* FFTW's cached plans freed at the end, so leak checkers see nothing left. */
+static int teardown(void **state)
+{
+    (void)state;
+    mm_fourier_cleanup();
+    return 0;
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(dft_frequency_between_bins_should_leak_and_hann_should_reduce_it),
+        cmocka_unit_test(dft_component_above_nyquist_should_be_warned_and_seen_at_its_alias),
+        cmocka_unit_test(dft_non_finite_samples_should_be_refused_naming_signal),
+        cmocka_unit_test(gibbs_overshoot_should_tend_to_nine_percent_of_the_jump),
+        cmocka_unit_test(fourier_coefficients_should_match_the_closed_forms),
+        cmocka_unit_test(pulse_spectra_should_have_their_first_zeros_where_the_closed_forms_say),
+        cmocka_unit_test(beam_packet_should_travel_at_twice_the_phase_velocity_and_spread),
+        cmocka_unit_test(beat_period_should_be_measured_on_the_signal),
+    };
+    return cmocka_run_group_tests_name("vibration signal exercises", tests, NULL, teardown);
+}
