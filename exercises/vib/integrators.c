@@ -1,0 +1,545 @@
+/* integrators.c — vib-integrators: one oscillator, six time integrators,
+ * every error next to its cost.
+ *
+ *     x'' + 2 zeta omega_n x' + omega_n^2 x = F cos(omega t),
+ *     x(0) = x0,  x'(0) = v0                                            (1)
+ *
+ * Goal: choose an integrator with open eyes.  The same problem, whose exact
+ * solution is known, is solved by central difference, Newmark's average
+ * acceleration, Stormer-Verlet (second order, one force evaluation per
+ * step), classical Runge-Kutta (fourth order, four evaluations) and the
+ * adaptive Dormand-Prince pairs DOPRI5 and DOP853.  A table gives, for the
+ * step h and tolerance rtol chosen, each method's steps, evaluations and
+ * achieved error; a work-precision sweep gives error against step and
+ * against cost, and the observed orders are checked against theory.  A long
+ * free run shows what a method does to energy: average acceleration keeps
+ * it, Verlet keeps it bounded, RK4 drains it at exactly the rate its
+ * stability function predicts.
+ * Reference: E. Hairer, S. P. Norsett, G. Wanner, Solving Ordinary
+ * Differential Equations I, Springer 1993 (II.1, II.4-II.6); T. J. R.
+ * Hughes, The Finite Element Method, Dover 2000, ch. 9 (Newmark).
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "mm_exhelp.h"
+#include "mm_newmark.h"
+#include "mm_ode.h"
+
+enum { P_OMEGA_N, P_ZETA, P_F, P_OMEGA, P_X0, P_V0, P_TEND, P_H, P_RTOL, P_PERIODS };
+
+static const mm_param params[] = {
+    [P_OMEGA_N] = {"omega_n", "natural frequency", "rad/s", MM_REAL, 10, 0.1, 1e3,
+                   .help = "sqrt(k/m) of the oscillator"},
+    [P_ZETA] = {"zeta", "damping ratio", "", MM_REAL, 0.05, 0, 2, .help = "c / (2 sqrt(k m))"},
+    [P_F] = {"F", "force per unit mass", "m/s^2", MM_REAL, 1, 0, 1e3,
+             .help = "amplitude of the force divided by the mass; 0 gives free vibration"},
+    [P_OMEGA] = {"omega", "forcing frequency", "rad/s", MM_REAL, 8, 0, 1e3,
+                 .help = "angular frequency of the force"},
+    [P_X0] = {"x0", "initial displacement", "m", MM_REAL, 0.01, -10, 10, .help = "x at t = 0"},
+    [P_V0] = {"v0", "initial velocity", "m/s", MM_REAL, 0, -1e3, 1e3, .help = "dx/dt at t = 0"},
+    [P_TEND] = {"t_end", "duration", "s", MM_REAL, 10, 1e-2, 1e4,
+                .help = "simulated time; at most 1e4 radians of the fastest motion"},
+    [P_H] = {"h", "step of the fixed-step methods", "s", MM_REAL, 0.01, 1e-5, 10,
+             .help = "central difference, Newmark, Verlet and RK4 take this step; try it near 2/omega_n"},
+    [P_RTOL] = {"rtol", "tolerance of the adaptive methods", "", MM_REAL, 1e-6, 1e-12, 1e-2,
+                .help = "relative tolerance of DOPRI5 and DOP853 (the absolute one is rtol times the motion's size)"},
+    [P_PERIODS] = {"periods", "length of the energy run", "periods", MM_INT, 1000, 10, 5000,
+                   .help = "free undamped periods integrated at 20 steps per period to watch the energy"},
+};
+
+#define MAX_STEPS 50000L        /* steps of one fixed-step run */
+#define SWEEP_STEPS 16384L      /* finest run of a work-precision sweep */
+#define SWEEP_EVALS 100000L     /* an adaptive sweep stops after a run this costly */
+#define PLOT 500                /* samples of each curve */
+
+enum { M_CD, M_AA, M_VERLET, M_RK4, M_DOPRI5, M_DOP853, NM };
+static const char *const mname[NM] = {"central-difference", "newmark-average-acceleration", "stormer-verlet",
+                                      "rk4", "dopri5", "dop853"};
+static const int morder[NM] = {2, 2, 2, 4, 5, 8};
+
+typedef struct problem {
+    mm_sdof s;             /* m = 1: the closed form of eq. (1) */
+    mm_sdof_props p;
+    double t_end, scale;   /* scale: largest |x| of the exact motion */
+    double *buf_t, *buf_x; /* scratch for MAX_STEPS + 2 step points */
+    double *buf_y;         /* 2 (MAX_STEPS + 2) states of the Runge-Kutta runs */
+} problem;
+
+typedef struct outcome {
+    int ok;                /* 0: the run blew up (unstable) */
+    long steps, evals, rejected;
+    double h, err;         /* step (mean step if adaptive), max |x - x_exact| over the step points */
+    int n;                 /* step points in buf_t, buf_x */
+} outcome;
+
+static mm_sdof model(const mm_value *in)
+{
+    double wn = in[P_OMEGA_N].x;
+    return (mm_sdof){.m = 1, .k = wn * wn, .c = 2 * in[P_ZETA].x * wn, .F0 = in[P_F].x,
+                     .omega = in[P_OMEGA].x, .x0 = in[P_X0].x, .v0 = in[P_V0].x};
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    mm_sdof s = model(in);
+    double t_end = in[P_TEND].x, h = in[P_H].x;
+    if (t_end / h > MAX_STEPS)
+        return mm_error_set(err, MM_ERANGE, "h", "h = %g s takes %.3g steps to cover t_end = %g s; at most %ld "
+                            "fit one request: make h at least %.3g s", h, t_end / h, t_end, MAX_STEPS,
+                            t_end / MAX_STEPS);
+    return mm_ex_sdof_work_check(&s, t_end, err);
+}
+
+/* ---- the runs ------------------------------------------------------------------ */
+
+/* Largest |x - exact| over the step points in buf: all of them up to 2000,
+ * else 2000 evenly spread ones and the last (the closed form costs more than
+ * a step; the sample keeps every request fast). */
+static double max_error(const problem *pb, int n)
+{
+    double e = 0;
+    int stride = n > 2000 ? (n + 1999) / 2000 : 1;
+    for (int i = 0; i < n; i += stride)
+        e = fmax(e, fabs(pb->buf_x[i] - mm_sdof_x(&pb->s, &pb->p, pb->buf_t[i], NULL)));
+    if (n > 0)
+        e = fmax(e, fabs(pb->buf_x[n - 1] - mm_sdof_x(&pb->s, &pb->p, pb->buf_t[n - 1], NULL)));
+    return e;
+}
+
+static int force_fn(double t, const double *q, const double *qd, double *F, void *ctx)
+{
+    (void)q;
+    (void)qd;
+    const mm_sdof *s = ctx;
+    F[0] = s->F0 * cos(s->omega * t);
+    return 0;
+}
+
+/* Central difference, average acceleration or Verlet with step h over
+ * [0, t_end] (mm_newmark), every step point into buf. */
+static int run_newmark(problem *pb, int m, double h, double t_end, outcome *o, mm_error *err)
+{
+    double M = 1, C = pb->s.c, K = pb->s.k, q0 = pb->s.x0, v0 = pb->s.v0;
+    mm_newmark_problem prob = {.n = 1, .M = &M, .C = &C, .K = &K, .force = pb->s.F0 ? force_fn : NULL,
+                               .force_kind = MM_NEWMARK_FORCE_TIME, .params = &pb->s, .q0 = &q0,
+                               .qd0 = &v0, .t0 = 0, .t_end = t_end};
+    mm_newmark_options opt;
+    mm_newmark_options_init(&opt);
+    opt.method = m == M_CD ? MM_NEWMARK_CENTRAL : m == M_AA ? MM_NEWMARK_AVERAGE : MM_NEWMARK_VERLET;
+    opt.h = h;
+    opt.max_steps = MAX_STEPS + 1;
+    mm_newmark_result r = {.t = pb->buf_t, .q = pb->buf_x, .max_rows = MAX_STEPS + 2};
+    *o = (outcome){.h = h};
+    int rc = mm_newmark_check(&prob, &opt, err);
+    mm_newmark_work *w = rc == MM_OK ? mm_newmark_work_alloc(1) : NULL;
+    if (rc == MM_OK && !w)
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    if (rc == MM_OK)
+        rc = mm_newmark_solve(&prob, &opt, w, &r, err);
+    mm_newmark_work_free(w);
+    o->steps = r.steps;
+    o->evals = r.force_evals ? r.force_evals : r.steps + 1;   /* F = 0: the force is still "evaluated" */
+    if (rc == MM_ENONFINITE)
+        return MM_OK;                     /* unstable: reported, not an error */
+    if (rc != MM_OK)
+        return rc;
+    o->ok = 1;
+    o->n = r.rows;
+    o->err = max_error(pb, r.rows);
+    return MM_OK;
+}
+
+static int rhs(double t, const double *y, double *dy, void *ctx)
+{
+    const mm_sdof *s = ctx;
+    dy[0] = y[1];
+    dy[1] = s->F0 * cos(s->omega * t) - s->c * y[1] - s->k * y[0];
+    return 0;
+}
+
+/* RK4 with step h, or DOPRI5 / DOP853 at tolerance rtol (mm_ode), every
+ * accepted step point into buf. */
+static int run_rk(problem *pb, int m, double h, double rtol, double t_end, outcome *o, mm_error *err)
+{
+    double y0[2] = {pb->s.x0, pb->s.v0};
+    size_t cap = MAX_STEPS + 2;
+    double *ys = pb->buf_y;
+    mm_ode_problem prob = {.n = 2, .f = rhs, .params = &pb->s, .t0 = 0, .t_end = t_end, .y0 = y0};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = m == M_RK4 ? MM_ODE_RK4 : m == M_DOPRI5 ? MM_ODE_DOPRI5 : MM_ODE_DOP853;
+    if (m == M_RK4) {
+        opt.h = h;
+    } else {
+        opt.rtol = rtol;
+        opt.atol = rtol * pb->scale;
+    }
+    opt.max_steps = MAX_STEPS;
+    mm_ode_result r = {0};
+    r.t_steps = pb->buf_t;
+    r.y_steps = ys;
+    r.steps_cap = cap;
+    *o = (outcome){.h = h};
+    int rc = mm_ode_check(&prob, &opt, &r, err);
+    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
+    if (rc == MM_OK && !w)
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    if (rc == MM_OK)
+        rc = mm_ode_solve(&prob, &opt, w, &r, err);
+    mm_ode_work_free(w);
+    o->steps = r.n_accepted;
+    o->evals = r.n_eval;
+    o->rejected = r.n_rejected;
+    if (m != M_RK4)
+        o->h = r.n_accepted ? r.t_reached / r.n_accepted : 0;
+    if (rc == MM_ENONFINITE || (m != M_RK4 && rc == MM_ENOCONV))
+        return MM_OK;                     /* unstable, or too costly: reported */
+    if (rc != MM_OK)
+        return rc;
+    o->ok = 1;
+    o->n = (int)r.n_stored;
+    for (int i = 0; i < o->n; i++)
+        pb->buf_x[i] = ys[2 * i];
+    o->err = max_error(pb, o->n);
+    return MM_OK;
+}
+
+static int run(problem *pb, int m, double h, double rtol, double t_end, outcome *o, mm_error *err)
+{
+    if (m <= M_VERLET)
+        return run_newmark(pb, m, h, t_end, o, err);
+    return run_rk(pb, m, h, rtol, t_end, o, err);
+}
+
+/* Slope of log(err) against log(h) by least squares over the (up to) four
+ * finest steps whose error lies in the asymptotic range [1e-11, 1e-2] of
+ * the motion's size (above: the step is too coarse for the leading error
+ * term to rule; below: round-off).  h is decreasing.  Returns the number
+ * of points used. */
+static int observed_order(const double *h, const double *e, int n, double scale, double *p)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int k = 0;
+    for (int i = n - 1; i >= 0 && k < 4; i--) {
+        if (!(e[i] <= 1e-2 * scale && e[i] >= 1e-11 * scale))
+            continue;
+        double x = log(h[i]), y = log(e[i]);
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+        k++;
+    }
+    if (k >= 3)
+        *p = (k * sxy - sx * sy) / (k * sxx - sx * sx);
+    return k;
+}
+
+/* ---- the long free run: energy ------------------------------------------------- */
+
+typedef struct energy_run {
+    double drift_end;      /* E/E0 - 1 at the end */
+    double worst;          /* max |E/E0 - 1| */
+    double modified;       /* Verlet: max |Em/Em0 - 1| of the modified energy */
+} energy_run;
+
+/* Free undamped x'' + w^2 x = 0 from x = 1, N steps of h, by method m;
+ * the relative energy error sampled into series se (stride steps apart). */
+static int energy_view(int m, double w, double h, long N, long stride, mm_series *se, energy_run *er,
+                       double *tb, double *xb, double *vb, mm_result *res, mm_error *err)
+{
+    int rows;
+    if (m == M_RK4) {
+        double y0[2] = {1, 0};
+        double *ys = mm_res_alloc(res, 2 * (size_t)(N + 1) * sizeof *ys);
+        if (!ys)
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        mm_sdof s = {.m = 1, .k = w * w};
+        mm_ode_problem prob = {.n = 2, .f = rhs, .params = &s, .t0 = 0, .t_end = N * h, .y0 = y0};
+        mm_ode_options opt;
+        mm_ode_options_init(&opt);
+        opt.method = MM_ODE_RK4;
+        opt.h = h;
+        opt.max_steps = N + 1;
+        mm_ode_result r = {0};
+        r.t_steps = tb;
+        r.y_steps = ys;
+        r.steps_cap = (size_t)N + 1;
+        mm_ode_work *wk = mm_ode_work_alloc(2);
+        int rc = wk ? mm_ode_solve(&prob, &opt, wk, &r, err) : mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        mm_ode_work_free(wk);
+        if (rc != MM_OK)
+            return rc;
+        rows = 0;
+        for (long k = 0; k <= N; k += stride) {
+            tb[rows] = tb[k];
+            xb[rows] = ys[2 * k];
+            vb[rows++] = ys[2 * k + 1];
+        }
+        if ((N % stride) != 0) {
+            tb[rows] = tb[N];
+            xb[rows] = ys[2 * N];
+            vb[rows++] = ys[2 * N + 1];
+        }
+    } else {
+        double M = 1, K = w * w, q0 = 1, v0 = 0;
+        mm_newmark_problem prob = {.n = 1, .M = &M, .K = &K, .q0 = &q0, .qd0 = &v0, .t0 = 0, .t_end = N * h};
+        mm_newmark_options opt;
+        mm_newmark_options_init(&opt);
+        opt.method = m == M_AA ? MM_NEWMARK_AVERAGE : MM_NEWMARK_VERLET;
+        opt.h = h;
+        opt.stride = stride;
+        mm_newmark_result r = {.t = tb, .q = xb, .qd = vb, .max_rows = PLOT + 2};
+        int rc = mm_newmark_check(&prob, &opt, err);
+        mm_newmark_work *wk = rc == MM_OK ? mm_newmark_work_alloc(1) : NULL;
+        if (rc == MM_OK)
+            rc = wk ? mm_newmark_solve(&prob, &opt, wk, &r, err) : mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        mm_newmark_work_free(wk);
+        if (rc != MM_OK)
+            return rc;
+        rows = r.rows;
+    }
+    double T = 2 * M_PI / w, a = (w * h) * (w * h) / 4;
+    double E0 = 0.5 * w * w, Em0 = E0 * (1 - a);     /* x0 = 1, v0 = 0 */
+    *er = (energy_run){0};
+    se->n = rows;
+    for (int i = 0; i < rows; i++) {
+        double E = 0.5 * vb[i] * vb[i] + 0.5 * w * w * xb[i] * xb[i];
+        double Em = 0.5 * vb[i] * vb[i] + 0.5 * w * w * xb[i] * xb[i] * (1 - a);
+        se->x[i] = tb[i] / T;
+        se->y[i] = E / E0 - 1;
+        er->worst = fmax(er->worst, fabs(E / E0 - 1));
+        er->modified = fmax(er->modified, fabs(Em / Em0 - 1));
+        er->drift_end = E / E0 - 1;
+    }
+    return MM_OK;
+}
+
+/* |R(i z)|^2 of classical Runge-Kutta, R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24:
+ * with z = i y, |R|^2 = (1 - y^2/2 + y^4/24)^2 + (y - y^3/6)^2 = 1 - y^6/72 + y^8/576. */
+static double rk4_gain2(double y)
+{
+    double re = 1 - y * y / 2 + y * y * y * y / 24, im = y - y * y * y / 6;
+    return re * re + im * im;
+}
+
+/* ---- solve ----------------------------------------------------------------------- */
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    problem pb = {.s = model(in), .t_end = in[P_TEND].x};
+    mm_sdof_props_get(&pb.s, &pb.p);
+    double h = in[P_H].x, rtol = in[P_RTOL].x, wn = pb.p.omega_n, zeta = in[P_ZETA].x;
+    double t_end = pb.t_end, wmax = fmax(wn, pb.s.omega);
+    int periods = (int)in[P_PERIODS].x;
+    int rc;
+
+    pb.buf_t = mm_res_alloc(res, 4 * (MAX_STEPS + 2) * sizeof(double));
+    if (!pb.buf_t)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    pb.buf_x = pb.buf_t + MAX_STEPS + 2;
+    pb.buf_y = pb.buf_x + MAX_STEPS + 2;
+
+    /* the exact motion, and its size */
+    mm_series *sx = mm_res_series(res, "x_exact", "exact displacement", "m", "t", "s", 2 * PLOT + 1);
+    if (!sx)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_linspace(0, t_end, 2 * PLOT + 1, sx->x);
+    for (int i = 0; i <= 2 * PLOT; i++)
+        sx->y[i] = mm_sdof_x(&pb.s, &pb.p, sx->x[i], NULL);
+    pb.scale = fmax(mm_maxabs(sx->y, 2 * PLOT + 1), 1e-300);
+
+    mm_res_scalar(res, "omega_n", "natural frequency", "rad/s", wn);
+    mm_res_scalar(res, "omega_n_h", "omega_n h: radians per step of the fixed-step methods", "", wn * h);
+    mm_res_scalar(res, "h_stable_explicit", "stability limit of central difference and Verlet, 2/omega_n", "s",
+                  2 / wn);
+    mm_res_scalar(res, "amplitude", "largest |x| of the exact motion", "m", pb.scale);
+
+    /* ---- the table: each method at the chosen h or rtol ---- */
+    static const char *const cols[] = {"method", "order", "step", "steps", "evaluations", "rejected",
+                                       "max_error", "relative_error"};
+    static const char *const units[] = {"", "", "s", "", "", "", "m", ""};
+    mm_table *tab = mm_res_table(res, "methods", NM, 8, cols, units);
+    if (!tab)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    long total_evals = 0;
+    for (int m = 0; m < NM; m++) {
+        outcome o;
+        if ((rc = run(&pb, m, h, rtol, t_end, &o, err)) != MM_OK)
+            return rc;
+        total_evals += o.evals;
+        double *row = tab->cell + 8 * m;
+        const char **txt = tab->text + 8 * m;
+        txt[0] = mname[m];
+        row[1] = morder[m];
+        row[2] = o.h;
+        row[3] = (double)o.steps;
+        row[4] = (double)o.evals;
+        row[5] = (double)o.rejected;
+        if (o.ok) {
+            row[6] = o.err;
+            row[7] = o.err / pb.scale;
+        } else {
+            txt[6] = txt[7] = m <= M_RK4 ? "unstable: the step is above the stability limit"
+                                         : "not finished: more than 5e4 steps";
+        }
+        /* the computed curve, at up to PLOT of its step points */
+        if (o.ok && o.n >= 2) {
+            char name[48];
+            snprintf(name, sizeof name, "x_%s", mname[m]);
+            int stride = (o.n + PLOT - 1) / PLOT, ns = (o.n - 1) / stride + 1;
+            mm_series *sm = mm_res_series(res, mm_res_strdup(res, name), mname[m], "m", "t", "s", ns);
+            if (!sm)
+                return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+            for (int i = 0; i < ns; i++) {
+                sm->x[i] = pb.buf_t[i * stride];
+                sm->y[i] = pb.buf_x[i * stride];
+            }
+        }
+    }
+    if (wn * h >= 2)
+        mm_res_warn(res, "omega_n h = %.3g is above 2: central difference and Verlet are unstable%s; "
+                         "average acceleration stays stable but is inaccurate", wn * h,
+                    wn * h > 2 * M_SQRT2 ? ", and so is RK4 above 2 sqrt(2) without damping" : "");
+
+    /* ---- work-precision sweeps, over at most 20 periods of the fastest
+     * motion (long runs would leave no room for fine steps) ---- */
+    double t_sw = fmin(t_end, 20 * 2 * M_PI / wmax);
+    double h0 = fmin(0.5 / wmax, t_sw / 8);
+    mm_res_scalar(res, "t_sweep", "time span of the work-precision sweeps", "s", t_sw);
+    double order[NM] = {0};
+    int order_pts[NM] = {0};
+    for (int m = 0; m < NM; m++) {
+        double hs[24], es[24], cs[24];
+        int n = 0;
+        for (int k = 0; k < 24; k++) {
+            outcome o;
+            double hk = h0 / ldexp(1, k), tol = pow(10, -3 - k);
+            if (m <= M_RK4 && t_sw / hk > SWEEP_STEPS)
+                break;
+            if (m > M_RK4 && tol < 1e-13)
+                break;
+            if ((rc = run(&pb, m, hk, tol, t_sw, &o, err)) != MM_OK)
+                return rc;
+            total_evals += o.evals;
+            if (!o.ok)
+                break;
+            hs[n] = m <= M_RK4 ? hk : o.h;
+            es[n] = fmax(o.err, 1e-300);
+            cs[n++] = (double)o.evals;
+            if (m > M_RK4 && o.evals > SWEEP_EVALS)
+                break;
+        }
+        char name[48], label[96];
+        snprintf(name, sizeof name, "work_%s", mname[m]);
+        snprintf(label, sizeof label, "max error against evaluations, %s", mname[m]);
+        mm_series *sw = mm_res_series(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "m",
+                                      "evaluations", "", n);
+        if (!sw)
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        for (int i = 0; i < n; i++) {
+            sw->x[i] = cs[i];
+            sw->y[i] = es[i];
+        }
+        if (m <= M_RK4) {
+            snprintf(name, sizeof name, "step_%s", mname[m]);
+            snprintf(label, sizeof label, "max error against step, %s", mname[m]);
+            mm_series *sh = mm_res_series(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "m", "h",
+                                          "s", n);
+            if (!sh)
+                return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+            for (int i = 0; i < n; i++) {
+                sh->x[i] = hs[i];
+                sh->y[i] = es[i];
+            }
+            order_pts[m] = observed_order(hs, es, n, pb.scale, &order[m]);
+        }
+    }
+    /* observed orders against theory: 2, 2, 4, and Verlet 2 without
+     * damping.  With damping Verlet's damping force sees the half-step
+     * velocity, an error of first order in zeta omega_n h beside the second
+     * order error of the rest: which one shows depends on zeta, omega and h,
+     * so that order is reported but not checked. */
+    static const char *const oname[4] = {"order_central_difference", "order_newmark", "order_verlet",
+                                         "order_rk4"};
+    for (int m = 0; m <= M_RK4; m++) {
+        if (order_pts[m] < 3)
+            continue;
+        mm_res_scalar(res, oname[m], "observed order (slope of log error against log h)", "", order[m]);
+        if (m == M_VERLET && zeta > 0)
+            continue;
+        int expect = morder[m];
+        char name[120];
+        snprintf(name, sizeof name, "%s: observed order vs %d", mname[m], expect);
+        mm_res_check_abs(res, mm_res_strdup(res, name), order[m], expect, 0.3);
+    }
+
+    /* ---- the long free run: what happens to energy ---- */
+    double hE = 2 * M_PI / wn / 20;
+    long N = 20L * periods, stride = (N + PLOT - 1) / PLOT;
+    double *tb = mm_res_alloc(res, (size_t)(N + 1) * sizeof *tb);
+    double *xb = mm_res_alloc(res, (size_t)(PLOT + 2) * sizeof *xb), *vb = mm_res_alloc(res, (size_t)(PLOT + 2) * sizeof *vb);
+    if (!tb || !xb || !vb)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    static const int em[3] = {M_AA, M_VERLET, M_RK4};
+    static const char *const ename[3] = {"energy_newmark", "energy_verlet", "energy_rk4"};
+    static const char *const elabel[3] = {"relative energy error, average acceleration",
+                                          "relative energy error, Stormer-Verlet",
+                                          "relative energy error, RK4"};
+    energy_run er[3];
+    for (int j = 0; j < 3; j++) {
+        mm_series *se = mm_res_series(res, ename[j], elabel[j], "", "t/T", "periods", PLOT + 2);
+        if (!se)
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        if ((rc = energy_view(em[j], wn, hE, N, stride, se, &er[j], tb, xb, vb, res, err)) != MM_OK)
+            return rc;
+        total_evals += em[j] == M_RK4 ? 4 * N : N;
+    }
+    double y = wn * hE, a = y * y / 4;
+    mm_res_scalar(res, "energy_drift_rk4", "RK4: relative energy change after the run", "", er[2].drift_end);
+    mm_res_scalar(res, "energy_error_verlet", "Verlet: largest relative energy error", "", er[1].worst);
+    mm_res_scalar(res, "energy_error_newmark", "average acceleration: largest relative energy error", "",
+                  er[0].worst);
+    /* RK4 maps (omega x, v) by a rotation-and-scaling: the energy is
+     * multiplied by exactly |R(i omega h)|^2 each step, eq. (7) */
+    double predicted = expm1((double)N * log(rk4_gain2(y)));
+    mm_res_check_abs(res, "RK4: energy change over the run vs |R(i omega h)|^(2N) - 1, eq. (7)", er[2].drift_end,
+                     predicted, 1e-9 + 1e-9 * fabs(predicted));
+    /* Verlet conserves the modified energy v^2/2 + w^2 x^2 (1 - (w h)^2/4)/2
+     * exactly, so the true energy stays within (w h)^2 / (4 - (w h)^2), eq. (8) */
+    mm_res_check_abs(res, "Verlet: modified energy conserved, eq. (8)", er[1].modified, 0, 1e-10);
+    mm_res_check_abs(res, "Verlet: energy error within the bound (w h)^2/(4 - (w h)^2), eq. (8)",
+                     fmax(0, er[1].worst - a / (1 - a)), 0, 1e-12);
+    /* average acceleration conserves the energy of a linear undamped system */
+    mm_res_check_abs(res, "average acceleration: energy conserved, eq. (6)", er[0].worst, 0, 1e-10);
+
+    mm_res_method(res, "central difference, Newmark average acceleration, Stormer-Verlet, RK4 (step h); "
+                       "DOPRI5, DOP853 (tolerance rtol)", h);
+    mm_res_method_stat(res, "rtol", rtol);
+    mm_res_method_stat(res, "evaluations", (double)total_evals);
+    return MM_OK;
+}
+
+static const char *const references[] = {
+    "E. Hairer, S. P. Norsett, G. Wanner, Solving Ordinary Differential Equations I, 2nd ed., Springer 1993, "
+    "sections II.1, II.4-II.6",
+    "E. Hairer, C. Lubich, G. Wanner, Geometric Numerical Integration, 2nd ed., Springer 2006, ch. I and IX",
+    "T. J. R. Hughes, The Finite Element Method, Dover 2000, ch. 9 (Newmark methods)",
+    NULL,
+};
+
+const mm_exercise mm_ex_vib_integrators = {
+    .id = "vib-integrators",
+    .chapter = 5,
+    .section = "5.8",
+    .title = "Time integrators compared: error against cost",
+    .summary = "One oscillator by central difference, Newmark, Verlet, RK4, DOPRI5 and DOP853: errors, costs, orders, energy.",
+    .tags = "vibration, numerical methods, time integration, Newmark, Runge-Kutta, work-precision, energy",
+    .theory = "exercises/vib/integrators.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};
