@@ -34,7 +34,10 @@ void mm_sdof_props_get(const mm_sdof *s, mm_sdof_props *p)
 
     double re = s->k - s->m * s->omega * s->omega;   /* dynamic stiffness k - m w^2 + i c w */
     double im = s->c * s->omega;
-    p->resonant = (re == 0.0 && im == 0.0);
+    /* no damping and |k - m w^2| within 1e-9 k: the beat period is then over
+     * 1e9 natural periods, so no steady state is ever reached (and X would
+     * be a meaningless 1e9 F0/k or more) */
+    p->resonant = (im == 0.0 && fabs(re) <= 1e-9 * s->k);
     if (p->resonant) {
         p->X = 0.0;
         p->phase = M_PI / 2;

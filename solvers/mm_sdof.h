@@ -40,7 +40,8 @@ typedef struct mm_sdof_props {
     double zeta;           /* damping ratio c / (2 sqrt(k m)) */
     double omega_d;        /* damped frequency omega_n sqrt(1 - zeta^2) [rad/s]; 0 unless under */
     int regime;            /* enum mm_sdof_regime */
-    int resonant;          /* 1: c = 0 and omega = omega_n, no steady state */
+    int resonant;          /* 1: c = 0 and |k - m omega^2| <= 1e-9 k: no steady
+                              state is ever reached (X is then reported as 0) */
     double X;              /* steady amplitude F0 / |k - m omega^2 + i c omega| [m]; 0 if resonant */
     double phase;          /* lag of the steady state behind the force, in [0, pi] [rad] */
     double magnification;  /* X / (F0/k), dimensionless (1/|1 - r^2 + 2 i zeta r|) */

@@ -124,9 +124,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             rc = measure_steady(&s, &p, res, &Xm, &phm, err);
             if (rc != MM_OK)
                 return rc;
-            /* DOP853 at rtol 1e-9 over 2 periods: about 1e-9 relative */
-            mm_res_check_rel(res, "X: measured on the steady orbit vs eq. (4)", Xm, p.X, 1e-7);
-            mm_res_check_abs(res, "phase: measured on the steady orbit vs eq. (4)", phm, p.phase, 1e-7);
+            /* DOP853 at rtol 1e-8 over 2 periods: about 1e-8 relative (seen up
+             * to 1e-7 in sweeps); 1e-6 leaves room */
+            mm_res_check_rel(res, "X: measured on the steady orbit vs eq. (4)", Xm, p.X, 1e-6);
+            /* compare angles, not numbers: -0.001 and 2 pi - 0.001 agree */
+            phm = p.phase + remainder(phm - p.phase, 2 * M_PI);
+            mm_res_check_abs(res, "phase: measured on the steady orbit vs eq. (4)", phm, p.phase, 1e-6);
         }
     }
 
