@@ -21,6 +21,41 @@ double mm_maxabs(const double *y, int n)
     return m;
 }
 
+int mm_ex_ode_grid(size_t n, mm_ode_rhs f, void *ctx, const double *y0, double t_end,
+                   int nt, const double *t, double rtol, double atol, double h_max,
+                   double *x, double *v, mm_ode_result *r, mm_result *res, mm_error *err)
+{
+    double *y = mm_res_alloc(res, n * (size_t)nt * sizeof *y);
+    if (!y)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_ode_problem prob = {.n = n, .f = f, .params = ctx, .t0 = 0, .t_end = t_end, .y0 = y0};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = MM_ODE_DOP853;
+    opt.rtol = rtol;
+    opt.atol = atol > 0 ? atol : rtol;
+    opt.h_max = h_max;
+    opt.max_steps = 1000000;
+    *r = (mm_ode_result){0};
+    r->t_out = t;
+    r->nout = (size_t)nt;
+    r->y_out = y;
+    int rc = mm_ode_check(&prob, &opt, r, err);
+    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(n) : NULL;
+    if (rc == MM_OK)
+        rc = mm_ode_solve(&prob, &opt, w, r, err);
+    mm_ode_work_free(w);
+    if (rc != MM_OK)
+        return rc;
+    for (int i = 0; i < nt; i++) {
+        if (x)
+            x[i] = y[n * (size_t)i];
+        if (v && n > 1)
+            v[i] = y[n * (size_t)i + 1];
+    }
+    return MM_OK;
+}
+
 /* m x'' + c x' + k x = F0 cos(omega t) as y = (x, v). */
 static int sdof_rhs(double t, const double *y, double *dy, void *params)
 {
@@ -58,10 +93,6 @@ int mm_ex_sdof_run(const mm_sdof *s, double t_end, int n, const double *t,
                    double *x, double *v, int stride, mm_result *res, mm_error *err)
 {
     double y0[2] = {s->x0, s->v0};
-    double *y = mm_res_alloc(res, 2 * (size_t)n * sizeof *y);
-    if (!y)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-
     mm_sdof_props p;
     mm_sdof_props_get(s, &p);
     /* A first guess of the motion's size for the absolute tolerance; after
@@ -74,53 +105,34 @@ int mm_ex_sdof_run(const mm_sdof *s, double t_end, int n, const double *t,
     double scale = fmax(fmax(fabs(s->x0), fabs(s->v0) / fmax(p.omega_n, 1 / t_end)), forced);
     if (!(scale > 0))
         scale = 1;
-
-    mm_ode_problem prob = {.n = 2, .f = sdof_rhs, .params = (void *)s,
-                           .t0 = 0, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = 1e-8;
-    opt.atol = 1e-8 * scale;
-    opt.max_steps = 1000000;
     /* at most one radian of the fastest motion per step: larger steps stay
      * stable but the error estimate of a step that long undervalues the
      * fast mode (an overdamped case lost 7e-7 of its size at 11 s steps) */
-    opt.h_max = 1.0 / work_rate(s);
-    mm_ode_result r = {0};
-    r.t_out = t;
-    r.nout = (size_t)n;
-    r.y_out = y;
-    int rc = mm_ode_check(&prob, &opt, &r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-    double peak = 0;
-    for (int i = 0; rc == MM_OK && i < n; i++)
-        peak = fmax(peak, fabs(y[2 * i]));
+    const double rtol = 1e-8, h_max = 1.0 / work_rate(s);
+    mm_ode_result r;
+    int rc = mm_ex_ode_grid(2, sdof_rhs, (void *)s, y0, t_end, n, t, rtol, rtol * scale, h_max,
+                            x, v, &r, res, err);
+    double peak = rc == MM_OK ? mm_maxabs(x, n) : 0;
+    long first_steps = 0, first_evals = 0;
     if (rc == MM_OK && peak > 0 && peak < 0.5 * scale) {
-        scale = peak;
-        opt.atol = 1e-8 * scale;
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
+        first_steps = r.n_accepted + r.n_rejected;
+        first_evals = r.n_eval;
+        rc = mm_ex_ode_grid(2, sdof_rhs, (void *)s, y0, t_end, n, t, rtol, rtol * peak, h_max,
+                            x, v, &r, res, err);
     }
-    mm_ode_work_free(w);
     if (rc != MM_OK)
         return rc;
-
-    for (int i = 0; i < n; i++) {
-        x[i] = y[2 * i];
-        if (v)
-            v[i] = y[2 * i + 1];
-    }
 
     if (stride <= 0)
         return MM_OK;
 
     mm_res_method(res, "dop853 (Dormand-Prince 8(5,3), dense output)", 0);
-    mm_res_method_stat(res, "rtol", opt.rtol);
+    mm_res_method_stat(res, "rtol", rtol);
     mm_res_method_stat(res, "steps", (double)r.n_accepted);
     mm_res_method_stat(res, "rejected", (double)r.n_rejected);
-    mm_res_method_stat(res, "evaluations", (double)r.n_eval);
+    mm_res_method_stat(res, "evaluations", (double)(r.n_eval + first_evals));
+    if (first_evals)             /* the cost of the run that found the scale */
+        mm_res_method_stat(res, "scaling_run_steps", (double)first_steps);
     mm_res_method_stat(res, "error_estimate", r.err_sum);
 
     /* the whole response against the closed form: the worst point */

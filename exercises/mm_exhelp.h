@@ -5,6 +5,7 @@
 #define MM_EXHELP_H
 
 #include "mm_exercise.h"
+#include "mm_ode.h"
 #include "mm_sdof.h"
 
 /* n equally spaced values from a to b into x (n >= 2), written as
@@ -13,6 +14,15 @@ void mm_linspace(double a, double b, int n, double *x);
 
 /* Largest |y[i]| over n values. */
 double mm_maxabs(const double *y, int n);
+
+/* Integrate y' = f(t, y), n equations, from t = 0 with y0 to t_end by
+ * DOP853 at rtol and atol (h_max > 0 caps the step), and write the dense
+ * output at the nt times t: x[i] = y_0(t_i), v[i] = y_1(t_i) (x or v may be
+ * NULL).  r receives the solver's counters.  Scratch comes from res's arena.
+ * Returns MM_OK, or the solver's code with err filled. */
+int mm_ex_ode_grid(size_t n, mm_ode_rhs f, void *ctx, const double *y0, double t_end,
+                   int nt, const double *t, double rtol, double atol, double h_max,
+                   double *x, double *v, mm_ode_result *r, mm_result *res, mm_error *err);
 
 /* Integrate the 1-DOF oscillator s from 0 to t_end with DOP853 (rtol 1e-8),
  * dense output onto t[0..n-1]; x and v receive displacement and velocity

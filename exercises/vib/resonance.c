@@ -67,37 +67,11 @@ static int run(const mm_sdof *s, const mm_sdof_props *p, double t_end, int n, co
                double *v, mm_ode_result *r, mm_result *res, mm_error *err)
 {
     double y0[2] = {0, 0};
-    double *y = mm_res_alloc(res, 2 * (size_t)n * sizeof *y);
-    if (!y)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     double scale = s->F0 * t_end / (s->m * p->omega_n);
     if (!p->resonant)
         scale = fmin(scale, p->X);
-    mm_ode_problem prob = {.n = 2, .f = rhs, .params = (void *)s, .t0 = 0, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = 1e-10;
-    opt.atol = 1e-10 * (scale > 0 ? scale : 1);
-    opt.max_steps = 1000000;
-    *r = (mm_ode_result){0};
-    r->t_out = t;
-    r->nout = (size_t)n;
-    r->y_out = y;
-    int rc = mm_ode_check(&prob, &opt, r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, r, err);
-    mm_ode_work_free(w);
-    if (rc != MM_OK)
-        return rc;
-    for (int i = 0; i < n; i++) {
-        if (x)
-            x[i] = y[2 * i];
-        if (v)
-            v[i] = y[2 * i + 1];
-    }
-    return MM_OK;
+    return mm_ex_ode_grid(2, rhs, (void *)s, y0, t_end, n, t, 1e-10, 1e-10 * (scale > 0 ? scale : 1), 0,
+                          x, v, r, res, err);
 }
 
 /* The slowly varying envelope, eq. (6): X |1 - exp(-(zeta omega_n + i delta) t)|
