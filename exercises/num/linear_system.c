@@ -7,11 +7,12 @@
  * which a good solver always makes tiny (backward stability, eq. 4), but
  * the condition number cond(A) = sigma_max / sigma_min (eq. 5), which
  * multiplies that tiny residual into the error of x (eq. 6).
- * Method: LU with partial pivoting after equilibration, one step of
- * iterative refinement (LAPACK dgesvx).  Checks: the residual computed in
- * compensated (twice-the-precision) arithmetic against the backward
- * stability bound, and a second solution by the singular value
- * decomposition (LAPACK dgelsd), which must agree within cond(A) * eps.
+ * Method: LU with partial pivoting after equilibration, then iterative
+ * refinement, repeated while it still helps, at most five steps (LAPACK
+ * dgesvx).  Checks: the residual computed in compensated
+ * (twice-the-precision) arithmetic against the backward stability bound,
+ * and a second solution by the singular value decomposition (LAPACK
+ * dgelsd), which must agree within cond(A) * eps.
  * Reference: G. Strang, Introduction to Linear Algebra, 5th ed., ch. 2 and
  * 7.3; N. J. Higham, Accuracy and Stability of Numerical Algorithms, 2nd
  * ed., SIAM 2002, ch. 7 and 9.

@@ -186,7 +186,9 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
         mm_res_scalar(res, "peak_frequency", "frequency of the largest peak", "Hz", freq[pk[0]]);
         mm_res_scalar(res, "peak_amplitude", "amplitude of the largest peak", "", amp[pk[0]]);
     }
-    mm_res_scalar(res, "leakage", "share of the power more than 2 bins from every listed peak", "", leakage);
+    mm_res_scalar(res, "leakage",
+                  "share of the power more than 2 bins from every peak (local maximum above 1e-3 of the largest)",
+                  "", leakage);
     mm_res_scalar(res, "coherent_gain", "window coherent gain (divided out)", "", gain);
 
     /* ---- checks ---- */

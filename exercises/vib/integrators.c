@@ -9,9 +9,12 @@
  * acceleration, Stormer-Verlet (second order, one force evaluation per
  * step), classical Runge-Kutta (fourth order, four evaluations) and the
  * adaptive Dormand-Prince pairs DOPRI5 and DOP853.  A table gives, for the
- * step h and tolerance rtol chosen, each method's steps, evaluations and
- * achieved error; a work-precision sweep gives error against step and
- * against cost, and the observed orders are checked against theory.  A long
+ * step h and tolerance rtol chosen, each method's step taken (t_end /
+ * ceil(t_end / h)), steps, evaluations and achieved error, or "unstable"
+ * with the reason when the method is past its stability limit at that step
+ * (or its error exceeds 10 times the motion); a work-precision sweep gives
+ * error against step and against cost, and the observed orders are checked
+ * against theory.  A long
  * free run shows what a method does to energy: average acceleration keeps
  * it, Verlet keeps it bounded, RK4 drains it at exactly the rate its
  * stability function predicts.
@@ -19,8 +22,10 @@
  * Differential Equations I, Springer 1993 (II.1, II.4-II.6); T. J. R.
  * Hughes, The Finite Element Method, Dover 2000, ch. 9 (Newmark).
  */
+#include <complex.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "mm_exhelp.h"
 #include "mm_newmark.h"
@@ -69,7 +74,8 @@ typedef struct problem {
 typedef struct outcome {
     int ok;                /* 0: the run blew up (unstable) */
     long steps, evals, rejected;
-    double h, err;         /* step (mean step if adaptive), max |x - x_exact| over the step points */
+    double h, err;         /* step taken (t_end / ceil(t_end / h); mean step if adaptive),
+                              max |x - x_exact| over the step points */
     int n;                 /* step points in buf_t, buf_x */
 } outcome;
 
@@ -116,6 +122,15 @@ static int force_fn(double t, const double *q, const double *qd, double *F, void
     return 0;
 }
 
+/* The step a fixed-step run of mm_newmark or mm_ode takes when asked for h
+ * over [0, T]: both make the steps equal, N = ceil(T / h) of T / N <= h each
+ * (with the same 1e-12 slack against rounding, see mm_ode.h). */
+static double step_taken(double T, double h)
+{
+    double N = ceil(T / h * (1.0 - 1e-12));
+    return T / fmax(N, 1.0);
+}
+
 /* Central difference, average acceleration or Verlet with step h over
  * [0, t_end] (mm_newmark), every step point into buf. */
 static int run_newmark(problem *pb, int m, double h, double t_end, outcome *o, mm_error *err)
@@ -130,8 +145,10 @@ static int run_newmark(problem *pb, int m, double h, double t_end, outcome *o, m
     opt.h = h;
     opt.max_steps = MAX_STEPS + 1;
     mm_newmark_result r = {.t = pb->buf_t, .q = pb->buf_x, .max_rows = MAX_STEPS + 2};
-    *o = (outcome){.h = h};
+    *o = (outcome){.h = step_taken(t_end, h)};
     int rc = mm_newmark_check(&prob, &opt, err);
+    if (rc == MM_OK)
+        o->h = t_end / (double)mm_newmark_step_count(&prob, &opt);   /* the steps it takes */
     mm_newmark_work *w = rc == MM_OK ? mm_newmark_work_alloc(1) : NULL;
     if (rc == MM_OK && !w)
         rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
@@ -180,7 +197,7 @@ static int run_rk(problem *pb, int m, double h, double rtol, double t_end, outco
     r.t_steps = pb->buf_t;
     r.y_steps = ys;
     r.steps_cap = cap;
-    *o = (outcome){.h = h};
+    *o = (outcome){.h = m == M_RK4 ? step_taken(t_end, h) : 0};
     int rc = mm_ode_check(&prob, &opt, &r, err);
     mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
     if (rc == MM_OK && !w)
@@ -324,6 +341,90 @@ static double rk4_gain2(double y)
     return re * re + im * im;
 }
 
+/* ---- stability of the fixed-step methods on eq. (1) ------------------------------- */
+
+/* One step of the free (F = 0) recursion of central difference, Verlet or
+ * average acceleration on x'' + c x' + k x = 0, as mm_newmark takes it:
+ * state (x, v, a) -> (x1, v1, a1). */
+static void newmark_step(int m, double k, double c, double h, const double s[3], double o[3])
+{
+    double x = s[0], v = s[1], a = s[2];
+    if (m == M_CD) {
+        double vt = v + h / 2 * a;
+        o[0] = x + h * v + h * h / 2 * a;
+        o[2] = (-k * o[0] - c * vt) / (1 + h / 2 * c);
+        o[1] = vt + h / 2 * o[2];
+    } else if (m == M_VERLET) {
+        double vt = v + h / 2 * a;                   /* damping sees the half-step velocity */
+        o[0] = x + h * vt;
+        o[2] = -k * o[0] - c * vt;
+        o[1] = vt + h / 2 * o[2];
+    } else {                                         /* beta = 1/4, gamma = 1/2 */
+        double xp = x + h * v + h * h / 4 * a, vp = v + h / 2 * a;
+        o[2] = (-k * xp - c * vp) / (1 + c * h / 2 + k * h * h / 4);
+        o[0] = xp + h * h / 4 * o[2];
+        o[1] = vp + h / 2 * o[2];
+    }
+}
+
+/* Spectral radius of the amplification matrix A of that step (Hughes,
+ * ch. 9): the new a follows from two combinations of the old state, so A
+ * (3 x 3) has rank 2, det A = 0, and its other eigenvalues solve
+ * l^2 - tr(A) l + (sum of the principal 2 x 2 minors) = 0. */
+static double newmark_radius(int m, double k, double c, double h)
+{
+    double A[3][3];
+    for (int j = 0; j < 3; j++) {
+        double e[3] = {j == 0, j == 1, j == 2}, o[3];
+        newmark_step(m, k, c, h, e, o);
+        for (int i = 0; i < 3; i++)
+            A[i][j] = o[i];
+    }
+    double tr = A[0][0] + A[1][1] + A[2][2];
+    double c1 = A[0][0] * A[1][1] - A[0][1] * A[1][0] + A[0][0] * A[2][2] - A[0][2] * A[2][0] +
+                A[1][1] * A[2][2] - A[1][2] * A[2][1];
+    double complex d = csqrt(tr * tr - 4 * c1);
+    return fmax(cabs((tr + d) / 2), cabs((tr - d) / 2));
+}
+
+/* Is fixed-step method m past its stability limit on eq. (1) at the step h
+ * it takes?  Central difference and Verlet: omega_n h >= 2 (with damping
+ * Verlet's damping force sees the half-step velocity and its limit drops
+ * below 2: then the spectral radius of its step says); average
+ * acceleration: spectral radius > 1 (never, for zeta >= 0); RK4: |R(lambda
+ * h)| > 1 for an eigenvalue lambda = omega_n (-zeta +- sqrt(zeta^2 - 1)) of
+ * the oscillator.  why receives the reason. */
+static int past_limit(int m, double wn, double zeta, double h, char *why, size_t len)
+{
+    double wh = wn * h;
+    if (m == M_RK4) {
+        double complex root = csqrt(zeta * zeta - 1);
+        double gain = 0;
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            double complex z = wh * (-zeta + sgn * root);
+            gain = fmax(gain, cabs(1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24));
+        }
+        snprintf(why, len, "|R(lambda h)| = %.4g > 1 at omega_n h = %.3g", gain, wh);
+        return gain > 1 + 1e-12;
+    }
+    if ((m == M_CD || m == M_VERLET) && wh >= 2) {
+        snprintf(why, len, "omega_n h = %.3g >= 2", wh);
+        return 1;
+    }
+    double rho = newmark_radius(m, wn * wn, 2 * zeta * wn, h);
+    snprintf(why, len, "spectral radius of the step %.4g > 1 at omega_n h = %.3g%s", rho, wh,
+             m == M_VERLET ? " (damping lowers Verlet's limit below 2)" : "");
+    return rho > 1 + 1e-12;
+}
+
+/* Append s to the string in buf (cap bytes) if it fits. */
+static void append(char *buf, size_t cap, const char *s)
+{
+    size_t l = strlen(buf), k = strlen(s);
+    if (l + k < cap)
+        memcpy(buf + l, s, k + 1);
+}
+
 /* ---- solve ----------------------------------------------------------------------- */
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -350,10 +451,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         sx->y[i] = mm_sdof_x(&pb.s, &pb.p, sx->x[i], NULL);
     pb.scale = fmax(mm_maxabs(sx->y, 2 * PLOT + 1), 1e-300);
 
+    /* the fixed-step methods take N = ceil(t_end / h) equal steps */
+    double h_taken = step_taken(t_end, h);
     mm_res_scalar(res, "omega_n", "natural frequency", "rad/s", wn);
-    mm_res_scalar(res, "omega_n_h", "omega_n h: radians per step of the fixed-step methods", "", wn * h);
-    mm_res_scalar(res, "h_stable_explicit", "stability limit of central difference and Verlet, 2/omega_n", "s",
-                  2 / wn);
+    mm_res_scalar(res, "h_taken", "step the fixed-step methods take, t_end / ceil(t_end / h)", "s", h_taken);
+    mm_res_scalar(res, "omega_n_h", "omega_n h: radians per step the fixed-step methods take", "", wn * h_taken);
+    mm_res_scalar(res, "h_stable_explicit",
+                  "stability limit of central difference (and of Verlet without damping), 2/omega_n", "s", 2 / wn);
     mm_res_scalar(res, "amplitude", "largest |x| of the exact motion", "m", pb.scale);
 
     /* ---- the table: each method at the chosen h or rtol ---- */
@@ -364,6 +468,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!tab)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     long total_evals = 0;
+    char unstable_list[160] = "";
     for (int m = 0; m < NM; m++) {
         outcome o;
         if ((rc = run(&pb, m, h, rtol, t_end, &o, err)) != MM_OK)
@@ -377,12 +482,29 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         row[3] = (double)o.steps;
         row[4] = (double)o.evals;
         row[5] = (double)o.rejected;
-        if (o.ok) {
-            row[6] = o.err;
-            row[7] = o.err / pb.scale;
-        } else {
-            txt[6] = txt[7] = m <= M_RK4 ? "unstable: the step is above the stability limit"
-                                         : "not finished: more than 5e4 steps";
+        row[6] = o.ok ? o.err : 0;                   /* replaced by a text when not ok */
+        row[7] = o.ok ? o.err / pb.scale : 0;
+        /* unstable: past the method's stability limit at the step taken, or
+         * blown up, or an error above 10 times the motion's size */
+        char why[160], l6[240], l7[240];
+        int past = m <= M_RK4 && past_limit(m, wn, zeta, o.h, why, sizeof why);
+        if (past) {
+            append(unstable_list, sizeof unstable_list, unstable_list[0] ? ", " : "");
+            append(unstable_list, sizeof unstable_list, mname[m]);
+        }
+        if (!o.ok && m > M_RK4) {
+            txt[6] = txt[7] = "not finished: more than 5e4 steps";
+        } else if (!o.ok) {
+            snprintf(l6, sizeof l6, "unstable: %s; the solution overflowed", past ? why : "blew up");
+            if (!(txt[6] = txt[7] = mm_res_strdup(res, l6)))
+                return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        } else if (past || o.err > 10 * pb.scale) {
+            if (!past)
+                snprintf(why, sizeof why, "error %.3g times the motion's size (> 10)", o.err / pb.scale);
+            snprintf(l6, sizeof l6, "unstable: %s; error %.3g m", why, o.err);
+            snprintf(l7, sizeof l7, "unstable: %s; error %.3g", why, o.err / pb.scale);
+            if (!(txt[6] = mm_res_strdup(res, l6)) || !(txt[7] = mm_res_strdup(res, l7)))
+                return mm_error_set(err, MM_ENOMEM, "", "out of memory");
         }
         /* the computed curve, at up to PLOT of its step points */
         if (o.ok && o.n >= 2) {
@@ -398,10 +520,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             }
         }
     }
-    if (wn * h >= 2)
-        mm_res_warn(res, "omega_n h = %.3g is above 2: central difference and Verlet are unstable%s; "
-                         "average acceleration stays stable but is inaccurate", wn * h,
-                    wn * h > 2 * M_SQRT2 ? ", and so is RK4 above 2 sqrt(2) without damping" : "");
+    if (unstable_list[0])
+        mm_res_warn(res, "at the step taken, h = %.4g s (omega_n h = %.3g), %s %s past the stability limit: "
+                    "the solution grows without bound whatever the physics does (see the table); average "
+                    "acceleration stays stable but is inaccurate at large steps", h_taken, wn * h_taken,
+                    unstable_list, strchr(unstable_list, ',') ? "are" : "is");
 
     /* ---- work-precision sweeps, over at most 20 periods of the fastest
      * motion (long runs would leave no room for fine steps) ---- */
@@ -425,7 +548,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             total_evals += o.evals;
             if (!o.ok)
                 break;
-            hs[n] = m <= M_RK4 ? hk : o.h;
+            hs[n] = o.h;                     /* the step taken (mean if adaptive) */
             es[n] = fmax(o.err, 1e-300);
             cs[n++] = (double)o.evals;
             if (m > M_RK4 && o.evals > SWEEP_EVALS)
@@ -514,8 +637,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* average acceleration conserves the energy of a linear undamped system */
     mm_res_check_abs(res, "average acceleration: energy conserved, eq. (6)", er[0].worst, 0, 1e-10);
 
-    mm_res_method(res, "central difference, Newmark average acceleration, Stormer-Verlet, RK4 (step h); "
-                       "DOPRI5, DOP853 (tolerance rtol)", h);
+    mm_res_method(res, "central difference, Newmark average acceleration, Stormer-Verlet, RK4 (step h, "
+                       "made t_end / ceil(t_end / h)); DOPRI5, DOP853 (tolerance rtol)", h_taken);
     mm_res_method_stat(res, "rtol", rtol);
     mm_res_method_stat(res, "evaluations", (double)total_evals);
     return MM_OK;

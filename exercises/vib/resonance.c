@@ -15,6 +15,7 @@
  * Reference: S. S. Rao, Mechanical Vibrations, 6th ed., sections 3.3-3.4.
  */
 #include <math.h>
+#include <stdio.h>
 
 #include "mm_exhelp.h"
 #include "mm_ode.h"
@@ -239,10 +240,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * first beat, at most 200 periods.  Measured only where the envelope
      * model (6) holds: light damping, a beat much slower than the carrier. */
     double T = 2 * M_PI / s.omega, ta = 20 / s.omega, tb = fmin(t_end, 200 * T);
-    if (p.zeta > 0)
-        tb = fmin(tb, 3 / (p.zeta * p.omega_n));
-    if (p.omega_d != s.omega)
-        tb = fmin(tb, M_PI / fabs(p.omega_d - s.omega));
+    enum { BY_T_END, BY_DAMPING, BY_BEAT } limit = BY_T_END;   /* what ends the window */
+    if (p.zeta > 0 && 3 / (p.zeta * p.omega_n) < tb) {
+        tb = 3 / (p.zeta * p.omega_n);
+        limit = BY_DAMPING;
+    }
+    if (p.omega_d != s.omega && M_PI / fabs(p.omega_d - s.omega) < tb) {
+        tb = M_PI / fabs(p.omega_d - s.omega);
+        limit = BY_BEAT;
+    }
     int narrow = p.zeta <= 0.1 && fabs(in[P_DETUNING].x) <= 0.2;
     if (s.F0 > 0 && narrow && tb - ta >= 3 * T) {
         double rate = 0, ref = s.F0 / (s.m * (p.omega_n + s.omega));
@@ -255,11 +261,23 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             mm_res_check_rel(res, "envelope growth: measured from the peaks vs F0/(m (omega_n + omega)), eq. (7)",
                              rate, ref, 0.01);
         }
+    } else if (s.F0 > 0 && !narrow) {
+        mm_res_warn(res, "with zeta > 0.1 or |detuning| > 0.2 the motion hardly grows before damping or "
+                    "detuning stop it: the growth rate of the envelope is not measured");
     } else if (s.F0 > 0) {
-        mm_res_warn(res, "%s: the growth rate of the envelope is not measured",
-                    !narrow ? "with zeta > 0.1 or |detuning| > 0.2 the motion hardly grows before "
-                              "damping or detuning stop it"
-                            : "t_end is too short for more than 3 periods of growth");
+        /* the window [ta, tb] holds fewer than 3 periods: say what ended it */
+        char head[160];
+        if (limit == BY_DAMPING)
+            snprintf(head, sizeof head, "damping ends the growth after 3 time constants, 3/(zeta omega_n) = "
+                     "%.3g s,", tb);
+        else if (limit == BY_BEAT)
+            snprintf(head, sizeof head, "the detuning turns the growth into a beat, whose first top at "
+                     "pi/|omega_d - omega| = %.3g s comes", tb);
+        else
+            snprintf(head, sizeof head, "t_end = %.3g s comes", tb);
+        mm_res_warn(res, "%s less than 3 periods (3 T = %.3g s) after t = 20/omega = %.3g s, where the peaks "
+                    "first follow the envelope: too few peaks of growth to fit, so the growth rate of the "
+                    "envelope is not measured", head, 3 * T, ta);
     }
 
     /* ---- the build-up reaches the steady amplitude ---- */

@@ -41,7 +41,7 @@ static int check(const mm_value *in, mm_error *err)
     return mm_ex_sdof_work_check(&s, in[P_TEND].x, err);
 }
 
-/* y = (x, v, D): D' = c v^2 is the work the damper has taken (eq. 6). */
+/* y = (x, v, D): D' = c v^2 is the work the damper has taken (eq. 5). */
 static int rhs_energy(double t, const double *y, double *dy, void *ctx)
 {
     (void)t;

@@ -391,11 +391,65 @@ static void polyfit_joint_limits_should_name_the_parameter(void **state)
     assert_true(scalar(&a, "rms_residual") < 1e-12);
     assert_true(warned(&a, "interpolation"));
     done(&a);
-    /* data far from 0 and degree 8: the x^k coefficients cancel; warned */
-    a = solve("num-polyfit", "x", "1000,1001,1002,1003,1004,1005,1006,1007,1008,1009", "y",
-              "3,1,4,1,5,9,2,6,5,3", "degree", "8", NULL);
-    all_passed(&a, "cancelling coefficients");
+}
+
+/* passed state of the first check whose name starts with prefix; fails the
+ * test when there is none */
+static int check_passed(const answer *a, const char *prefix)
+{
+    const cJSON *c;
+    cJSON_ArrayForEach(c, cJSON_GetObjectItem(a->doc, "checks")) {
+        const cJSON *n = cJSON_GetObjectItem(c, "name");
+        if (cJSON_IsString(n) && strncmp(n->valuestring, prefix, strlen(prefix)) == 0)
+            return cJSON_IsTrue(cJSON_GetObjectItem(c, "passed"));
+    }
+    fail_msg("no check named %s...", prefix);
+    return -1;
+}
+
+static void polyfit_cancelling_coefficients_should_fail_their_check_and_show_right_values(void **state)
+{
+    (void)state;
+    /* data far from 0 and degree 8: the terms c_k x^k reach 1e24 and cancel,
+     * so p(x) from the coefficients is off by ~1e7.  The check of the
+     * coefficients says so (passed:false), the warning too, and the fitted
+     * values, residuals, rms and curve shown (computed in t) are right. */
+    answer a = solve("num-polyfit", "x", "1000,1001,1002,1003,1004,1005,1006,1007,1008,1009", "y",
+                     "3,1,4,1,5,9,2,6,5,3", "degree", "8", NULL);
+    assert_int_equal(a.status, 200);
     assert_true(warned(&a, "cancel"));
+    assert_false(check_passed(&a, "p(x_i) from the coefficients"));
+    assert_true(check_passed(&a, "normal equations"));
+    assert_true(check_passed(&a, "fitted values: SVD vs normal equations"));
+    /* mpmath, 120 digits, normal equations in s = x - 1004.5 (exact):
+     * rms 0.6539693062814236539, fitted values below */
+    static const double want[10] = {3.009378856437679967, 0.9155902920608802962, 4.337638831756478815,
+                                    0.2121760592348827643, 6.181735911147675854, 7.818264088852324146,
+                                    2.787823940765117236, 5.662361168243521185, 5.084409707939119704,
+                                    2.990621143562320033};
+    static const double y[10] = {3, 1, 4, 1, 5, 9, 2, 6, 5, 3};
+    check_rel(scalar(&a, "rms_residual"), 0.6539693062814236539, 1e-10, "rms residual of the fit");
+    for (int i = 0; i < 10; i++) {
+        check_abs(cell(&a, "residuals", i, 2, NULL), want[i], 1e-10, "fitted value");
+        check_abs(cell(&a, "residuals", i, 3, NULL), y[i] - want[i], 1e-10, "residual");
+    }
+    /* the plotted curve stays on the scale of the data between the points
+     * (max 9.77) and swings to only ~100 in the 5 % margins, not ~1e7 */
+    const cJSON *sf = named(a.doc, "series", "fit");
+    assert_non_null(sf);
+    const cJSON *sx = cJSON_GetObjectItem(sf, "x"), *sy = cJSON_GetObjectItem(sf, "y");
+    assert_int_equal(cJSON_GetArraySize(sx), cJSON_GetArraySize(sy));
+    for (int i = 0; i < cJSON_GetArraySize(sx); i++) {
+        double xv = cJSON_GetArrayItem(sx, i)->valuedouble, yv = cJSON_GetArrayItem(sy, i)->valuedouble;
+        assert_true(fabs(yv) < (xv >= 1000 && xv <= 1009 ? 12 : 200));
+    }
+    done(&a);
+
+    /* degree 3: the terms still cancel (about 1e8 against 10) but 8 digits
+     * are left, and every check passes */
+    a = solve("num-polyfit", "x", "1000,1001,1002,1003,1004,1005,1006,1007,1008,1009", "y",
+              "3,1,4,1,5,9,2,6,5,3", "degree", "3", NULL);
+    all_passed(&a, "degree 3 far from 0");
     done(&a);
 }
 
@@ -526,6 +580,7 @@ int main(void)
         cmocka_unit_test(leading_zeros_and_zero_polynomials_should_be_handled),
         cmocka_unit_test(polyfit_should_give_the_book_line),
         cmocka_unit_test(polyfit_joint_limits_should_name_the_parameter),
+        cmocka_unit_test(polyfit_cancelling_coefficients_should_fail_their_check_and_show_right_values),
         cmocka_unit_test(nonlinear_roots_should_find_the_book_root),
         cmocka_unit_test(nonlinear_roots_conventions),
         cmocka_unit_test(nonlinear_roots_bad_input_should_be_named),

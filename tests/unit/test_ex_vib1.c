@@ -402,6 +402,66 @@ static void rk4_energy_should_fall_by_its_stability_function(void **state)
     cJSON_Delete(d);
 }
 
+/* The fixed-step methods take t_end / ceil(t_end / h): that is the step
+ * reported.  Past a method's stability limit (at that step) the table says
+ * unstable instead of showing the error as an ordinary number. */
+static void integrators_should_report_the_step_taken_and_label_instability(void **state)
+{
+    (void)state;
+    static const char *const fixed[4] = {"central-difference", "newmark-average-acceleration",
+                                         "stormer-verlet", "rk4"};
+    /* h = 0.03: 10 / 0.03 = 333.3, so 334 steps of 0.0299401... */
+    answer a = solve("vib-integrators", "h=0.03&periods=10");
+    assert_int_equal(a.status, 200);
+    for (int m = 0; m < 4; m++) {
+        assert_string_equal(cell(a.doc, "methods", m, "method")->valuestring, fixed[m]);
+        check_rel(cell(a.doc, "methods", m, "step")->valuedouble, 10.0 / ceil(10 / 0.03), 1e-15, "step taken");
+        assert_int_equal((int)cell(a.doc, "methods", m, "steps")->valuedouble, 334);
+        assert_true(cJSON_IsNumber(cell(a.doc, "methods", m, "max_error")));
+    }
+    check_rel(scalar(a.doc, "omega_n_h"), 10 * 10.0 / 334, 1e-15, "omega_n h at the step taken");
+    check_rel(scalar(a.doc, "h_taken"), 10.0 / 334, 1e-15, "h taken");
+    cJSON_Delete(a.doc);
+
+    /* h = 0.21: 48 steps of 0.2083 s, omega_n h = 2.08 > 2: central
+     * difference and Verlet unstable (their errors reach 1e8 m), average
+     * acceleration and RK4 (limit about 2.91 at zeta = 0.05) not */
+    a = solve("vib-integrators", "h=0.21&periods=10");
+    assert_int_equal(a.status, 200);
+    for (int m = 0; m < 4; m++)
+        check_rel(cell(a.doc, "methods", m, "step")->valuedouble, 10.0 / ceil(10 / 0.21), 1e-15, "step taken");
+    check_rel(scalar(a.doc, "omega_n_h"), 10 * 10.0 / 48, 1e-15, "omega_n h = 2.08");
+    for (int m = 0; m < 4; m++) {
+        const cJSON *e = cell(a.doc, "methods", m, "max_error"), *r = cell(a.doc, "methods", m, "relative_error");
+        if (m == 0 || m == 2) {
+            assert_true(cJSON_IsString(e) && cJSON_IsString(r));
+            assert_non_null(strstr(e->valuestring, "unstable"));
+            assert_non_null(strstr(e->valuestring, "omega_n h = 2.08"));
+            assert_non_null(strstr(r->valuestring, "unstable"));
+        } else {
+            assert_true(cJSON_IsNumber(e) && cJSON_IsNumber(r));
+            assert_true(r->valuedouble < 10);
+        }
+    }
+    cJSON_Delete(a.doc);
+
+    /* h = 0.30: RK4 at omega_n h = 2.94 is past its damped limit (|R| = 1.09)
+     * although its error has only doubled in 34 steps; h = 0.29 (2.86) not */
+    a = solve("vib-integrators", "h=0.30&periods=10");
+    assert_non_null(strstr(cell(a.doc, "methods", 3, "max_error")->valuestring, "|R(lambda h)|"));
+    cJSON_Delete(a.doc);
+    a = solve("vib-integrators", "h=0.29&periods=10");
+    assert_true(cJSON_IsNumber(cell(a.doc, "methods", 3, "max_error")));
+    cJSON_Delete(a.doc);
+
+    /* damping lowers Verlet's limit: zeta = 0.5, omega_n h = 1.3 (limit
+     * about 1.24) is unstable for Verlet only */
+    a = solve("vib-integrators", "zeta=0.5&h=0.13&periods=10");
+    assert_true(cJSON_IsNumber(cell(a.doc, "methods", 0, "max_error")));
+    assert_non_null(strstr(cell(a.doc, "methods", 2, "max_error")->valuestring, "unstable"));
+    cJSON_Delete(a.doc);
+}
+
 /* ---- vib-frequency-response ------------------------------------------------------------------ */
 
 static void frequency_response_peaks_should_match_the_formulas(void **state)
@@ -460,6 +520,7 @@ int main(void)
         cmocka_unit_test(newmark_should_report_newton_with_the_cubic_spring),
         cmocka_unit_test(newmark_should_refuse_bad_systems),
         cmocka_unit_test(rk4_energy_should_fall_by_its_stability_function),
+        cmocka_unit_test(integrators_should_report_the_step_taken_and_label_instability),
         cmocka_unit_test(frequency_response_peaks_should_match_the_formulas),
         cmocka_unit_test(transmissibility_should_be_one_at_root_two),
     };
