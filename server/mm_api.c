@@ -534,11 +534,19 @@ int mm_api_solve_json(const mm_exercise *ex, const char *body, size_t len, mm_bu
     }
     int status = 0;
     const cJSON *params = NULL;
-    if (!cJSON_IsObject(root)) {
+    size_t tail = end ? (size_t)(end - body) : len;   /* only white space may follow */
+    while (tail < len && (body[tail] == ' ' || body[tail] == '\t' || body[tail] == '\n' || body[tail] == '\r'))
+        tail++;
+    if (tail < len) {
+        mm_error_set(&err, MM_EJSON, "", "the body goes on after its JSON value (at byte %zu); "
+                     "send one object {\"params\":{...}}", tail);
+    } else if (!cJSON_IsObject(root)) {
         mm_error_set(&err, MM_EJSON, "", "the body must be an object {\"params\":{...}}");
     } else {
         for (const cJSON *e = root->child; e && !err.code; e = e->next) {
-            if (strcmp(e->string, "params") == 0 && cJSON_IsObject(e))
+            if (strcmp(e->string, "params") == 0 && cJSON_IsObject(e) && params)
+                mm_error_set(&err, MM_EJSON, "", "\"params\" is given twice; give it once");
+            else if (strcmp(e->string, "params") == 0 && cJSON_IsObject(e))
                 params = e;
             else
                 mm_error_set(&err, MM_EJSON, "", "the body must be {\"params\":{...}}; "

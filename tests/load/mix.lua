@@ -1,7 +1,16 @@
--- wrk script for `make loadtest`: cycle through the request paths in the
--- file named by MM_PATHS, each thread from its own offset; count statuses.
-local paths = {}
-for line in io.lines(os.getenv("MM_PATHS")) do paths[#paths + 1] = line end
+-- wrk script for `make loadtest`: cycle through the requests in the file
+-- named by MM_PATHS (a path to GET, or "POST path json" a line), each
+-- thread from its own offset; count statuses; print the percentiles.
+local reqs = {}
+local json = { ["Content-Type"] = "application/json" }
+for line in io.lines(os.getenv("MM_PATHS")) do
+  local path, body = line:match("^POST (%S+) (.*)$")
+  if path then
+    reqs[#reqs + 1] = wrk.format("POST", path, json, body)
+  else
+    reqs[#reqs + 1] = wrk.format("GET", line)
+  end
+end
 
 local threads = {}
 function setup(thread)
@@ -16,7 +25,7 @@ end
 
 function request()
   i = i + 1
-  return wrk.format("GET", paths[(i % #paths) + 1])
+  return reqs[(i % #reqs) + 1]
 end
 
 function response(status, headers, body)
