@@ -8,6 +8,8 @@
  */
 #include "mm_poly.h"
 
+#include "mm_complex.h"
+
 #include <assert.h>
 #include <complex.h>
 #include <float.h>
@@ -39,17 +41,6 @@ double mm_poly_eval(int ncoef, const double *p, double x, double *err_bound)
 typedef struct dd { double hi, lo; } dd;
 
 
-/* x + iy without the arithmetic of x + I*y (which turns inf*0 into NaN);
- * C11 6.2.5 lays a double complex out as double[2].  (CMPLX is not there
- * under every compiler: clang 14 with glibc lacks it.) */
-static double complex mk_complex(double x, double y)
-{
-    double complex z;
-    double *p = (double *)&z;
-    p[0] = x;
-    p[1] = y;
-    return z;
-}
 
 static dd two_sum(double a, double b)
 {
@@ -89,7 +80,7 @@ static double complex eval_dd(int d, const double *q, double complex z)
         yr = dd_add(nr, (dd){q[k], 0.0});
         yi = ni;
     }
-    return mk_complex(yr.hi + yr.lo, yi.hi + yi.lo);
+    return mm_cmplx(yr.hi + yr.lo, yi.hi + yi.lo);
 }
 
 /* p'(z) in ordinary complex arithmetic (it only scales the Newton step). */
@@ -298,7 +289,7 @@ int mm_poly_roots(int ncoef, const double *p, mm_poly_root *roots, int *nroots,
         if ((rc = mm_linalg_geev(d, C, wr, wi, NULL, err)))
             goto out;
         for (int i = 0; i < d; i++)
-            w[i].z = mk_complex(wr[i], wi[i]);
+            w[i].z = mm_cmplx(wr[i], wi[i]);
         /* polish: real roots stay real (real Newton), a conjugate pair is
          * polished through its upper member and the other set to its
          * conjugate, so pairs stay exact pairs */

@@ -32,6 +32,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "mm_complex.h"
 #include "mm_exhelp.h"
 #include "mm_linalg.h"
 #include "mm_newmark.h"
@@ -321,12 +322,12 @@ static int modal_init(const sys *s, modal *md, double *rcond, mm_error *err)
     if ((rc = mm_linalg_geev(n2, A, wr, wi, VR, err)) != MM_OK)
         return rc;
     for (int j = 0; j < n2; j++) {
-        md->lam[j] = CMPLX(wr[j], wi[j]);
+        md->lam[j] = mm_cmplx(wr[j], wi[j]);
         if (wi[j] > 0 && j + 1 < n2) {      /* a pair: columns j, j+1 are Re, Im */
-            md->lam[j + 1] = CMPLX(wr[j + 1], wi[j + 1]);
+            md->lam[j + 1] = mm_cmplx(wr[j + 1], wi[j + 1]);
             for (int i = 0; i < n2; i++) {
-                md->V[i * n2 + j] = CMPLX(VR[i * n2 + j], VR[i * n2 + j + 1]);
-                md->V[i * n2 + j + 1] = CMPLX(VR[i * n2 + j], -VR[i * n2 + j + 1]);
+                md->V[i * n2 + j] = mm_cmplx(VR[i * n2 + j], VR[i * n2 + j + 1]);
+                md->V[i * n2 + j + 1] = mm_cmplx(VR[i * n2 + j], -VR[i * n2 + j + 1]);
             }
             j++;
         } else {
@@ -366,7 +367,7 @@ static int modal_init(const sys *s, modal *md, double *rcond, mm_error *err)
     if (rc != MM_OK)
         return mm_error_set(err, rc, e3.param, "%s", e3.msg);
     for (int j = 0; j < n2; j++)
-        md->c[j] = CMPLX(cc[j], cc[n2 + j]);
+        md->c[j] = mm_cmplx(cc[j], cc[n2 + j]);
     return MM_OK;
 }
 
