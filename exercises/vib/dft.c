@@ -48,7 +48,7 @@ static const mm_param params[] = {
     [P_FS] = {"fs", "sampling frequency", "Hz", MM_REAL, 100, 1e-2, 1e6,
               .help = "samples per second; frequencies above fs/2 cannot be told from lower ones"},
     [P_N] = {"N", "number of samples", "", MM_INT, 256, 8, MAX_N,
-             .help = "samples taken at t = 0, 1/fs, ...; the bins are fs/N apart"},
+             .help = "samples taken at t = 0, 1/fs, ...; the bins are fs/N apart (N times the length of the signal may be at most 8e6)"},
     [P_WINDOW] = {"window", "window", "", MM_CHOICE, WIN_RECT, 0, 0, .choices = windows,
                   .help = "rect: the samples as they are; hann: tapered to zero at both ends, less leakage"},
 };
@@ -350,6 +350,25 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
+/* The work grows with N times the cost of one evaluation of the signal,
+ * which grows with its length (plus the faster resampling that looks for
+ * aliasing): N = 65536 with a 512-character power tower took 242 ms.
+ * N * max(len, 32) <= 8e6 keeps the worst case near 60 ms; every N is
+ * allowed for signals up to 122 characters (the default has 33). */
+#define MAX_WORK 8e6
+
+static int check(const mm_value *in, mm_error *err)
+{
+    double len = fmax((double)strlen(in[P_SIGNAL].text), 32);
+    if (in[P_N].x * len > MAX_WORK)
+        return mm_error_set(err, MM_ERANGE, "N",
+                            "N must be at most %.0f with this %.0f-character signal (N times the length "
+                            "of the signal may be at most %.0f: a longer expression costs more to "
+                            "evaluate); got %.0f",
+                            floor(MAX_WORK / len), len, MAX_WORK, in[P_N].x);
+    return MM_OK;
+}
+
 static const char *const references[] = {
     "A. V. Oppenheim, R. W. Schafer, Discrete-Time Signal Processing, 3rd ed., Pearson 2010, ch. 8 and 10",
     "F. J. Harris, On the use of windows for harmonic analysis with the discrete Fourier transform, "
@@ -370,6 +389,6 @@ const mm_exercise mm_ex_vib_dft = {
     .params = params,
     .n_params = MM_COUNT(params),
     .references = references,
-    .check = NULL,
+    .check = check,
     .solve = solve,
 };
