@@ -37,14 +37,29 @@ static long long now_us(void)
 
 /* ---- writing pieces ------------------------------------------------------ */
 
+/* ,"key":"text" and ,"key":number — the pieces most of a document is made of */
+static void field_str(mm_buf *b, const char *key, const char *text)
+{
+    mm_buf_char(b, ',');
+    mm_buf_key(b, key);
+    mm_buf_str(b, text);
+}
+
+static void field_num(mm_buf *b, const char *key, double v, const char *where)
+{
+    mm_buf_char(b, ',');
+    mm_buf_key(b, key);
+    mm_buf_num(b, v, where);
+}
+
+
 int mm_api_error(mm_buf *out, const mm_error *err)
 {
     int code = err->code == MM_OK ? MM_EINTERNAL : err->code;
     mm_buf_reset(out);
     mm_buf_puts(out, "{\"error\":{\"code\":");
     mm_buf_str(out, mm_api_code(code));
-    mm_buf_puts(out, ",\"param\":");
-    mm_buf_str(out, err->param[0] ? err->param : NULL);
+    field_str(out, "param", err->param[0] ? err->param : NULL);
     mm_buf_puts(out, ",\"message\":");
     if (mm_http_status(code) >= 500)   /* our fault: the details go to the log */
         mm_buf_str(out, code == MM_EBUSY ? "the server is busy; try again in a moment"
@@ -85,14 +100,10 @@ static void write_catalog_fields(mm_buf *b, const mm_exercise *ex)
     mm_buf_str(b, ex->id);
     mm_buf_puts(b, ",\"chapter\":");
     mm_buf_int(b, ex->chapter);
-    mm_buf_puts(b, ",\"chapter_title\":");
-    mm_buf_str(b, mm_chapter_title(ex->chapter));
-    mm_buf_puts(b, ",\"section\":");
-    mm_buf_str(b, ex->section);
-    mm_buf_puts(b, ",\"title\":");
-    mm_buf_str(b, ex->title);
-    mm_buf_puts(b, ",\"summary\":");
-    mm_buf_str(b, ex->summary);
+    field_str(b, "chapter_title", mm_chapter_title(ex->chapter));
+    field_str(b, "section", ex->section);
+    field_str(b, "title", ex->title);
+    field_str(b, "summary", ex->summary);
     mm_buf_puts(b, ",\"tags\":");
     write_tags(b, ex->tags);
 }
@@ -134,12 +145,9 @@ static void write_param_meta(mm_buf *b, const mm_param *p)
 {
     mm_buf_puts(b, "{\"name\":");
     mm_buf_str(b, p->name);
-    mm_buf_puts(b, ",\"label\":");
-    mm_buf_str(b, p->label);
-    mm_buf_puts(b, ",\"unit\":");
-    mm_buf_str(b, p->unit ? p->unit : "");
-    mm_buf_puts(b, ",\"kind\":");
-    mm_buf_str(b, mm_param_kind_name(p->kind));
+    field_str(b, "label", p->label);
+    field_str(b, "unit", p->unit ? p->unit : "");
+    field_str(b, "kind", mm_param_kind_name(p->kind));
     mm_buf_puts(b, ",\"default\":");
     if (p->kind == MM_REAL || p->kind == MM_INT)
         mm_buf_num(b, p->def, p->name);
@@ -148,10 +156,8 @@ static void write_param_meta(mm_buf *b, const mm_param *p)
     else
         mm_buf_str(b, p->def_text);
     if (p->kind != MM_CHOICE && p->kind != MM_EXPR) {
-        mm_buf_puts(b, ",\"min\":");
-        mm_buf_num(b, p->min, p->name);
-        mm_buf_puts(b, ",\"max\":");
-        mm_buf_num(b, p->max, p->name);
+        field_num(b, "min", p->min, p->name);
+        field_num(b, "max", p->max, p->name);
     }
     if (p->kind == MM_CHOICE) {
         mm_buf_puts(b, ",\"choices\":[");
@@ -178,8 +184,7 @@ static void write_param_meta(mm_buf *b, const mm_param *p)
         mm_buf_puts(b, ",\"max_length\":");
         mm_buf_int(b, MM_PARAM_EXPR_MAX);
     }
-    mm_buf_puts(b, ",\"help\":");
-    mm_buf_str(b, p->help);
+    field_str(b, "help", p->help);
     mm_buf_char(b, '}');
 }
 
@@ -215,15 +220,11 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
             mm_buf_char(b, ',');
         mm_buf_puts(b, "{\"name\":");
         mm_buf_str(b, s->name);
-        mm_buf_puts(b, ",\"label\":");
-        mm_buf_str(b, s->label);
-        mm_buf_puts(b, ",\"unit\":");
-        mm_buf_str(b, s->unit);
-        mm_buf_puts(b, ",\"value\":");
-        mm_buf_num(b, s->value, s->name);
+        field_str(b, "label", s->label);
+        field_str(b, "unit", s->unit);
+        field_num(b, "value", s->value, s->name);
         if (s->text) {
-            mm_buf_puts(b, ",\"text\":");
-            mm_buf_str(b, s->text);
+            field_str(b, "text", s->text);
         }
         mm_buf_char(b, '}');
     }
@@ -234,14 +235,10 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
             mm_buf_char(b, ',');
         mm_buf_puts(b, "{\"name\":");
         mm_buf_str(b, s->name);
-        mm_buf_puts(b, ",\"label\":");
-        mm_buf_str(b, s->label);
-        mm_buf_puts(b, ",\"x_label\":");
-        mm_buf_str(b, s->x_label);
-        mm_buf_puts(b, ",\"x_unit\":");
-        mm_buf_str(b, s->x_unit);
-        mm_buf_puts(b, ",\"unit\":");
-        mm_buf_str(b, s->unit);
+        field_str(b, "label", s->label);
+        field_str(b, "x_label", s->x_label);
+        field_str(b, "x_unit", s->x_unit);
+        field_str(b, "unit", s->unit);
         mm_buf_puts(b, ",\"x\":[");
         for (int i = 0; i < s->s.n; i++) {
             if (i)
@@ -297,26 +294,20 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
             mm_buf_char(b, ',');
         mm_buf_puts(b, "{\"name\":");
         mm_buf_str(b, c->name);
-        mm_buf_puts(b, ",\"value\":");
-        mm_buf_num(b, c->value, c->name);
-        mm_buf_puts(b, ",\"reference\":");
-        mm_buf_num(b, c->reference, c->name);
-        mm_buf_puts(b, ",\"abs_error\":");
-        mm_buf_num(b, abs_err, c->name);
+        field_num(b, "value", c->value, c->name);
+        field_num(b, "reference", c->reference, c->name);
+        field_num(b, "abs_error", abs_err, c->name);
         if (isfinite(rel_err)) {
-            mm_buf_puts(b, ",\"rel_error\":");
-            mm_buf_num(b, rel_err, c->name);
+            field_num(b, "rel_error", rel_err, c->name);
         }
-        mm_buf_puts(b, ",\"tolerance\":");
-        mm_buf_num(b, c->tolerance, c->name);
+        field_num(b, "tolerance", c->tolerance, c->name);
         mm_buf_puts(b, c->relative ? ",\"tolerance_kind\":\"relative\"" : ",\"tolerance_kind\":\"absolute\"");
         mm_buf_puts(b, passed ? ",\"passed\":true}" : ",\"passed\":false}");
     }
 
     mm_buf_puts(b, "],\"method\":{\"name\":");
     mm_buf_str(b, r->method ? r->method : "closed-form");
-    mm_buf_puts(b, ",\"step\":");
-    mm_buf_num(b, r->step, "method");
+    field_num(b, "step", r->step, "method");
     for (const mm_stat_node *s = r->stats.head; s; s = s->next) {
         mm_buf_char(b, ',');
         mm_buf_key(b, s->key);
