@@ -86,14 +86,38 @@ try {
 
   await test('a negative mass shows the API message beside the mass field', async (page) => {
     await openExercise(page, server.origin, 'id=vib-sdof-forced');
-    const rendered = nextRender(page);
+    const api400 = await (await fetch(`${server.origin}/api/exercises/vib-sdof-forced/solve?m=-1`)).json();
+    let rendered = nextRender(page);
     await page.fill('#p-m', '-1');
     await rendered;
     await page.waitForSelector('#e-m:not([hidden])');
-    const msg = await page.textContent('#e-m');
-    assert.match(msg, /m must be between 0\.001 and 1000 kg/);
+    assert.equal((await page.textContent('#e-m')).trim(), api400.error.message, 'the API message, word for word');
     assert.equal(await page.getAttribute('#p-m', 'aria-invalid'), 'true');
+    assert.ok((await page.getAttribute('#p-m', 'aria-describedby')).split(' ').includes('e-m'), 'the message describes the field');
     assert.ok(await page.$('#figures svg path'), 'the previous answer is kept');
+    assert.ok(await page.$('#answer.stale'), 'and dimmed');
+    assert.equal(await scalar(page, 'omega_n'), 10, 'the kept answer is the last good one');
+    rendered = nextRender(page);
+    await page.fill('#p-m', '4');
+    await rendered;
+    assert.equal(await page.$('#e-m:not([hidden])'), null, 'the message goes with a good value');
+    assert.equal(await page.getAttribute('#p-m', 'aria-invalid'), null);
+    assert.equal(await page.$('#answer.stale'), null, 'no longer dimmed');
+    assert.equal(await scalar(page, 'omega_n'), 5);
+  });
+
+  await test('a failed check is shown, not hidden', async (page) => {
+    await page.route('**/solve*', async (route) => {
+      const response = await route.fetch();
+      const json = await response.json();
+      if (json.checks && json.checks.length) json.checks[0].passed = false;
+      await route.fulfill({ response, json });
+    });
+    await openExercise(page, server.origin, 'id=vib-sdof-forced');
+    const row = await page.waitForSelector('#checks tr.fail');
+    assert.ok(await row.isVisible(), 'the failed row is visible');
+    assert.match(await row.textContent(), /failed/);
+    assert.match(await page.textContent('#checks .summary'), /1 of \d+ checks failed/);
   });
 
   await test('the URL reproduces the state after a reload, and back and forward work', async (page) => {
@@ -112,11 +136,24 @@ try {
     assert.equal(await page.inputValue('#p-m'), '4');
     assert.equal(await scalar(page, 'omega_n'), 10);          // sqrt(400/4)
     // back: to the state before m = 4
+    rendered = nextRender(page);
     await page.goBack();
-    await page.waitForFunction(() => !location.search.includes('m=4'), null, { timeout: 10000 });
-    await page.waitForFunction(() => document.querySelector('#p-m').value === '1', null, { timeout: 10000 });
+    await rendered;
+    assert.equal(new URL(page.url()).search, '?id=vib-sdof-forced&k=400');
+    assert.equal(await page.inputValue('#p-m'), '1');
+    assert.equal(await scalar(page, 'omega_n'), 20, 'back redraws the earlier answer');
+    rendered = nextRender(page);
     await page.goForward();
-    await page.waitForFunction(() => location.search.includes('m=4'), null, { timeout: 10000 });
+    await rendered;
+    assert.equal(new URL(page.url()).search, '?id=vib-sdof-forced&m=4&k=400');
+    assert.equal(await page.inputValue('#p-m'), '4');
+    assert.equal(await scalar(page, 'omega_n'), 10);
+    // reset: only the id is left in the URL
+    rendered = nextRender(page);
+    await page.click('#reset');
+    await rendered;
+    assert.equal(new URL(page.url()).search, '?id=vib-sdof-forced');
+    assert.equal(await page.inputValue('#p-k'), '100');
   });
 
   await test('the CSV download holds the series of the JSON answer', async (page) => {
@@ -132,6 +169,18 @@ try {
       assert.equal(t, answer.series[0].x[i]);
       assert.equal(x, answer.series[0].y[i]);
     });
+    // series over different x: long form, one row per point
+    await openExercise(page, server.origin, 'id=vib-dft');
+    const [dl2] = await Promise.all([page.waitForEvent('download'), page.click('#dl-csv')]);
+    const long = (await readFile(await dl2.path(), 'utf8')).trim().split('\n');
+    const dft = await (await fetch(`${server.origin}/api/exercises/vib-dft/solve`)).json();
+    assert.equal(long[0], 'series,x,x_unit,y,y_unit');
+    const points = dft.series.flatMap((s) => s.x.map((x, i) => [s.name, x, s.y[i]]));
+    assert.equal(long.length - 1, points.length);
+    points.forEach(([name, x, y], i) => {
+      const cells = long[i + 1].split(',');
+      assert.deepEqual([cells[0], Number(cells[1]), Number(cells[3])], [name, x, y]);
+    });
   });
 
   await test('the form is reachable by keyboard and every input has its label', async (page) => {
@@ -142,6 +191,58 @@ try {
     await page.focus('#p-A');
     await page.keyboard.press('Tab');
     assert.equal(await page.evaluate(() => document.activeElement.id), 'p-b', 'Tab goes from A to b');
+    // from the top of a page, Tab alone reaches every field, in table order
+    await openExercise(page, server.origin, 'id=vib-sdof-forced');
+    const meta = await (await fetch(`${server.origin}/api/exercises/vib-sdof-forced`)).json();
+    const want = meta.params.map((p) => `p-${p.name}`);
+    const seen = [];
+    for (let i = 0; i < 60 && seen.length < want.length; i++) {
+      await page.keyboard.press('Tab');
+      const id = await page.evaluate(() => document.activeElement.id);
+      if (want.includes(id) && !seen.includes(id)) seen.push(id);
+    }
+    assert.deepEqual(seen, want);
+    // the arrow keys step a number and re-solve
+    await page.focus('#p-k');
+    const rendered = nextRender(page);
+    await page.keyboard.press('ArrowUp');
+    await rendered;
+    assert.equal(await page.inputValue('#p-k'), '110');
+    assert.equal(await scalar(page, 'omega_n'), Math.sqrt(110));
+  });
+
+  await test('hovering the plot reads out the values', async (page) => {
+    await openExercise(page, server.origin, 'id=vib-sdof-forced');
+    const box = await (await page.$('#figures svg')).boundingBox();
+    await page.mouse.move(box.x + box.width * 0.55, box.y + box.height * 0.5);
+    const tip = await page.waitForSelector('#figures svg [aria-label="tip"] text', { timeout: 5000 });
+    assert.match(await tip.textContent(), /t = [\d.]+ s.*displacement = −?-?[\d.e-]+ m/);
+  });
+
+  await test('the figure downloads as a standalone SVG', async (page) => {
+    await openExercise(page, server.origin, 'id=vib-sdof-forced');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#dl-svg')]);
+    assert.match(download.suggestedFilename(), /^vib-sdof-forced.*\.svg$/);
+    const svg = await readFile(await download.path(), 'utf8');
+    assert.match(svg, /^<\?xml[^>]*>\s*<svg[^>]+xmlns="http:\/\/www\.w3\.org\/2000\/svg"/);
+    assert.match(svg, /<path[^>]+d="M/, 'the curve');
+    assert.match(svg, /t \[s\]/, 'the axis label');
+    await page.setContent(svg.replace(/^<\?xml[^>]*>\s*/, ''));
+    assert.ok(await page.$('svg path'), 'it draws on its own');
+  });
+
+  await test('the curl line is the exact request of the answer shown', async (page) => {
+    await openExercise(page, server.origin, 'id=vib-sdof-forced&c=1&omega=10');
+    const line = (await page.textContent('#curl')).trim();
+    const m = line.match(/^curl '([^']+)'$/);
+    assert.ok(m, `a curl line: ${line}`);
+    assert.equal(m[1], `${server.origin}/api/exercises/vib-sdof-forced/solve?c=1&omega=10`);
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#dl-json')]);
+    const shown = JSON.parse(await readFile(await download.path(), 'utf8'));
+    const fetched = await (await fetch(m[1])).json();
+    delete shown.elapsed_us;
+    delete fetched.elapsed_us;
+    assert.deepEqual(fetched, shown);
   });
 
   await test('every exercise page loads and draws its answer without errors', async (page) => {

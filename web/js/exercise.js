@@ -10,7 +10,7 @@
 // ok}), which the browser tests and the benchmark wait for.
 
 import { fmtNumber, inputText, unitHtml, unitText, escapeHtml, encodeValue, el } from './format.js';
-import { groupSeries, drawFigure, standaloneSvg, seriesName, yQuantity } from './plot.js';
+import { groupSeries, drawFigure, standaloneSvg, figureNames } from './plot.js';
 
 const DEBOUNCE_MS = 150;
 const $ = (s, root = document) => root.querySelector(s);
@@ -201,11 +201,11 @@ function rangeText(p) {
   const u = p.unit ? ` ${unitText(p.unit)}` : '';
   const lo = fmtNumber(p.min).text, hi = fmtNumber(p.max).text;
   switch (p.kind) {
-    case 'real': return `from ${lo} to ${hi}${u}`;
-    case 'integer': return `a whole number from ${lo} to ${hi}`;
-    case 'vector': return `numbers separated by commas${p.max_length ? `, at most ${p.max_length}` : ''}; each from ${lo} to ${hi}${u}`;
-    case 'matrix': return `rows separated by ; and numbers by commas (MATLAB form${p.max_rows ? `, at most ${p.max_rows}×${p.max_cols}` : ''})`;
-    case 'expression': return `an expression of ${(p.variables || []).join(', ') || 'the variables'}, e.g. sin(x)^2 + 2*x`;
+    case 'real': return `Range ${lo} to ${hi}${u}.`;
+    case 'integer': return `A whole number, ${lo} to ${hi}.`;
+    case 'vector': return `Numbers separated by commas${p.max_length ? `, at most ${p.max_length}` : ''}; each ${lo} to ${hi}${u}.`;
+    case 'matrix': return `MATLAB form: commas between numbers, ; between rows${p.max_rows ? ` (at most ${p.max_rows}×${p.max_cols})` : ''}.`;
+    case 'expression': return `An expression of ${(p.variables || []).join(', ') || 'the variables'}, with + − * / ^ and sin, exp, sqrt, pi ….`;
     default: return '';
   }
 }
@@ -235,7 +235,7 @@ function buildForm(values) {
       });
     }
     const help = el('p', { class: 'help', id: helpId },
-      p.help ? `${p.help}. ` : '', el('span', { class: 'range', text: rangeText(p) }));
+      p.help ? `${p.help[0].toUpperCase()}${p.help.slice(1)}${/[.!?]$/.test(p.help) ? '' : '.'} ` : '', el('span', { class: 'range', text: rangeText(p) }));
     const err = el('p', { class: 'field-error', id: errId, hidden: true });
     const field = el('div', { class: `field kind-${p.kind}`, id: `f-${p.name}`, 'data-param': p.name }, label, input, help, err);
     list.append(field);
@@ -340,23 +340,23 @@ function renderChecks(checks) {
   box.hidden = checks.length === 0;
   if (!checks.length) return;
   const failed = checks.filter((c) => !c.passed).length;
-  const rows = checks.map((c) => el('tr', { class: c.passed ? 'pass' : 'fail' },
+  const rows = checks.map((c) => el('tr', { class: c.passed ? 'pass' : 'fail', 'data-check': c.name },
+    el('td', { class: 'verdict' }, c.passed
+      ? el('span', { class: 'ok', html: '<span aria-hidden="true">✓</span> passed' })
+      : el('span', { class: 'bad', html: '<span aria-hidden="true">✗</span> failed' })),
     el('th', { scope: 'row', text: c.name }),
     el('td', { class: 'n' }, num(c.value, 10)),
     el('td', { class: 'n' }, num(c.reference, 10)),
-    el('td', { class: 'n' }, num(c.abs_error, 3)),
-    el('td', { class: 'n' }, num(c.rel_error, 3)),
-    el('td', { class: 'n' }, num(c.tolerance, 3), el('span', { class: 'muted', text: c.tolerance_kind ? ` ${c.tolerance_kind === 'relative' ? 'rel.' : 'abs.'}` : '' })),
-    el('td', { class: 'verdict' }, c.passed
-      ? el('span', { class: 'ok', html: '<span aria-hidden="true">✓</span> passed' })
-      : el('span', { class: 'bad', html: '<span aria-hidden="true">✗</span> failed' }))));
+    el('td', { class: 'n' }, num(c.abs_error, 3),
+      typeof c.rel_error === 'number' ? [el('br'), el('span', { class: 'muted' }, num(c.rel_error, 3), ' rel.')] : ''),
+    el('td', { class: 'n' }, num(c.tolerance, 3), el('br'), el('span', { class: 'muted', text: c.tolerance_kind || '' }))));
   box.append(
     el('h2', { text: 'Checks' }),
     el('p', { class: failed ? 'summary bad' : 'summary' },
-      failed ? `${failed} of ${checks.length} checks failed: the numbers above disagree with an independent reference.`
+      failed ? `${failed} of ${checks.length} checks failed: the numbers disagree with an independent reference.`
         : `All ${checks.length} checks passed: the numbers agree with an independent reference.`),
     el('div', { class: 'table-wrap' }, el('table', { class: 'checks' },
-      el('thead', {}, el('tr', {}, ['check', 'value', 'reference', 'abs. error', 'rel. error', 'tolerance', ''].map((h) => el('th', { scope: 'col', text: h })))),
+      el('thead', {}, el('tr', {}, ['', 'check', 'value', 'reference', 'error', 'tolerance'].map((h) => el('th', { scope: 'col', text: h })))),
       el('tbody', {}, rows))));
 }
 
@@ -406,7 +406,9 @@ function renderFigures() {
   }
   state.figures = groups.map((g, i) => {
     const fig = box.children[i];
-    const caption = `${g.series.map(seriesName).join(', ')} against ${g.x_label || 'x'}`;
+    const { quantity, legend } = figureNames(g);
+    const list = legend.join(', ');
+    const caption = `${quantity} against ${g.x_label || 'x'}${g.series.length < 2 ? '' : list.length <= 90 ? `: ${list}` : ` (${g.series.length} series)`}`;
     $('.figtext', fig).textContent = caption;
     const svg = drawFigure(g, width, { title: caption });
     const holder = $('.plot-svg', fig);
@@ -448,10 +450,11 @@ export function seriesCsv(a) {
   const series = a.series || [];
   if (!series.length) return '';
   const head = (q, u) => csvCell(u ? `${q} [${u}]` : q);
-  const sameX = series.every((s) => s.x.length === series[0].x.length && s.x.every((v, i) => v === series[0].x[i]));
+  const s0 = series[0];
+  const sameX = series.every((s) => s.x_label === s0.x_label && s.x_unit === s0.x_unit &&
+    s.x.length === s0.x.length && s.x.every((v, i) => v === s0.x[i]));
   const lines = [];
   if (sameX) {
-    const s0 = series[0];
     lines.push([head(s0.x_label || 'x', s0.x_unit), ...series.map((s) => head(s.name, s.unit))].join(','));
     for (let i = 0; i < s0.x.length; i++) lines.push([s0.x[i], ...series.map((s) => s.y[i])].join(','));
   } else {
@@ -520,7 +523,14 @@ function renderMeta(meta) {
   theory.innerHTML = meta.theory_html || '';
   const h1 = $('h1', theory);
   if (h1 && h1.textContent.trim() === meta.title.trim()) h1.remove();
-  for (const h of theory.querySelectorAll('h1')) h.outerHTML = `<h2>${h.innerHTML}</h2>`;
+  // the page has h1 (title) and h2 (its parts): the theory's headings go one level down
+  for (const h of theory.querySelectorAll('h1, h2, h3, h4, h5')) {
+    const level = Math.max(3, Math.min(6, Number(h.tagName[1]) + 1));   // h1, h2 → h3; h3 → h4 …
+    const n = document.createElement(`h${level}`);
+    n.innerHTML = h.innerHTML;
+    h.replaceWith(n);
+  }
+  theory.prepend(el('h2', { class: 'eyebrow', text: 'Theory' }));
   const refs = $('#references');
   refs.textContent = '';
   if (meta.references && meta.references.length) {
