@@ -3,6 +3,12 @@
 
 #include <math.h>
 
+const char *mm_sdof_regime_name(int regime)
+{
+    static const char *const names[] = {"underdamped", "critically damped", "overdamped"};
+    return regime >= 0 && regime <= 2 ? names[regime] : "";
+}
+
 int mm_sdof_check(const mm_sdof *s, mm_error *err)
 {
     const struct { const char *name; double v; } f[] = {

@@ -47,6 +47,10 @@ typedef struct mm_sdof_props {
     double magnification;  /* X / (F0/k), dimensionless (1/|1 - r^2 + 2 i zeta r|) */
 } mm_sdof_props;
 
+/* "underdamped", "critically damped" or "overdamped"; "" for another value.
+ * Cannot fail. */
+const char *mm_sdof_regime_name(int regime);
+
 /* Validate: m > 0, k > 0, c >= 0, omega >= 0, all finite.  Returns MM_OK,
  * MM_EVALUE (non-finite; param names the field) or MM_ERANGE. */
 int mm_sdof_check(const mm_sdof *s, mm_error *err);

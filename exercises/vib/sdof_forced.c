@@ -87,14 +87,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double t_end = in[P_TEND].x;
     int n = (int)in[P_POINTS].x;
 
-    static const char *const regime_names[] = {"underdamped", "critically damped", "overdamped"};
     mm_res_scalar(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
     mm_res_scalar(res, "zeta", "damping ratio", "", p.zeta);
     mm_res_scalar(res, "X", "steady amplitude", "m", p.X);
     mm_res_scalar(res, "phase", "phase lag", "rad", p.phase);
     mm_res_scalar(res, "magnification", "dynamic magnification X/(F0/k)", "", p.magnification);
     mm_res_scalar(res, "r", "frequency ratio omega/omega_n", "", s.omega / p.omega_n);
-    mm_res_scalar_text(res, "regime", "damping regime", "", p.regime, regime_names[p.regime]);
+    mm_res_scalar_text(res, "regime", "damping regime", "", p.regime, mm_sdof_regime_name(p.regime));
 
     mm_series *sx = mm_res_series(res, "x", "displacement", "m", "t", "s", n);
     if (!sx)

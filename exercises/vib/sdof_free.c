@@ -85,11 +85,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double t_end = in[P_TEND].x;
     int n = (int)in[P_POINTS].x;
 
-    static const char *const regime_names[] = {"underdamped", "critically damped", "overdamped"};
     mm_res_scalar(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
     mm_res_scalar(res, "zeta", "damping ratio", "", p.zeta);
     mm_res_scalar(res, "omega_d", "damped frequency", "rad/s", p.omega_d);
-    mm_res_scalar_text(res, "regime", "damping regime", "", p.regime, regime_names[p.regime]);
+    mm_res_scalar_text(res, "regime", "damping regime", "", p.regime, mm_sdof_regime_name(p.regime));
     if (p.regime == MM_SDOF_UNDER) {
         mm_res_scalar(res, "T_d", "damped period", "s", 2 * M_PI / p.omega_d);
         mm_res_scalar(res, "log_decrement", "logarithmic decrement", "",
