@@ -760,6 +760,28 @@ static int step_implicit(run *r, double t1)
     }
 }
 
+/* The second half shared by the explicit schemes (central difference and
+ * Verlet), once q_{k+1} = q1, the half-step velocity vt and F1 are known:
+ *   M a_{k+1} = F1 - K q_{k+1} - C v_{k+1/2}       (S holds the LU of M, or
+ *                                                   of M + h/2 C)
+ *   v_{k+1}   = v_{k+1/2} + h/2 a_{k+1}            final half kick
+ * and M a_{k+1}, C v_{k+1} for the energy balance. */
+static int explicit_finish(run *r)
+{
+    const int n = r->n;
+    const double h = r->h;
+    matvec(n, r->p->K, r->q1, r->Kq1);
+    matvec(n, r->p->C, r->vt, r->y);
+    for (int i = 0; i < n; i++)
+        r->a1[i] = r->F1[i] - r->Kq1[i] - r->y[i];
+    lu_solve(n, r->S, r->piv, r->a1);
+    for (int i = 0; i < n; i++)
+        r->v1[i] = r->vt[i] + 0.5 * h * r->a1[i];
+    matvec(n, r->p->M, r->a1, r->Ma1);
+    matvec(n, r->p->C, r->v1, r->Cv1);
+    return MM_OK;
+}
+
 /* Central difference = Newmark beta = 0, gamma = 1/2:
  *   q_{k+1} = q_k + h v_k + h^2/2 a_k
  *   (M + h/2 C) a_{k+1} = F_{k+1} - K q_{k+1} - C (v_k + h/2 a_k)
@@ -778,16 +800,7 @@ static int step_central(run *r, double t1)
     }
     if ((rc = eval_force(r, t1, r->q1, r->x, r->F1)))
         return rc;
-    matvec(n, r->p->K, r->q1, r->Kq1);
-    matvec(n, r->p->C, r->vt, r->y);
-    for (int i = 0; i < n; i++)
-        r->a1[i] = r->F1[i] - r->Kq1[i] - r->y[i];
-    lu_solve(n, r->S, r->piv, r->a1);
-    for (int i = 0; i < n; i++)
-        r->v1[i] = r->vt[i] + 0.5 * h * r->a1[i];
-    matvec(n, r->p->M, r->a1, r->Ma1);
-    matvec(n, r->p->C, r->v1, r->Cv1);
-    return MM_OK;
+    return explicit_finish(r);
 }
 
 /* Velocity (Stormer-) Verlet, kick-drift-kick:
@@ -809,16 +822,7 @@ static int step_verlet(run *r, double t1)
     }
     if ((rc = eval_force(r, t1, r->q1, r->vt, r->F1)))
         return rc;
-    matvec(n, r->p->K, r->q1, r->Kq1);
-    matvec(n, r->p->C, r->vt, r->y);
-    for (int i = 0; i < n; i++)
-        r->a1[i] = r->F1[i] - r->Kq1[i] - r->y[i];
-    lu_solve(n, r->S, r->piv, r->a1);
-    for (int i = 0; i < n; i++)
-        r->v1[i] = r->vt[i] + 0.5 * h * r->a1[i];
-    matvec(n, r->p->M, r->a1, r->Ma1);
-    matvec(n, r->p->C, r->v1, r->Cv1);
-    return MM_OK;
+    return explicit_finish(r);
 }
 
 /* The message for a run that overflowed. */
