@@ -1,6 +1,7 @@
 /* mm_exhelp.c — helpers shared by exercises (see mm_exhelp.h). */
 #include "mm_exhelp.h"
 
+#include <float.h>
 #include <math.h>
 
 #include "mm_ode.h"
@@ -176,4 +177,39 @@ int mm_ex_grid_refined(double a, double b, int n, double c, double half, int nwi
             x[m++] = v;
     }
     return m;
+}
+
+double mm_check_curve(mm_result *res, const char *name, int n, const double *got,
+                      const double *ref, double tol_peak)
+{
+    double worst = -1, peak = 0, g = 0, r = 0;
+    for (int i = 0; i < n; i++) {
+        peak = fmax(peak, fabs(ref[i]));
+        if (!(fabs(got[i] - ref[i]) <= worst)) {     /* NaN is the worst */
+            worst = fabs(got[i] - ref[i]);
+            g = got[i];
+            r = ref[i];
+        }
+    }
+    mm_res_check_abs(res, name, g, r, tol_peak * peak);
+    return worst;
+}
+
+int mm_check_residual(mm_result *res, const char *name, double residual, double scale,
+                      double ulps)
+{
+    return mm_res_check_abs(res, name, residual, 0, ulps * DBL_EPSILON * fabs(scale));
+}
+
+double mm_check_order(mm_result *res, const char *name, int n, const double *h,
+                      const double *e, double expected, double tol)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (int i = 0; i < n; i++) {
+        double x = log(h[i]), y = log(e[i]);
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    mm_res_check_abs(res, name, slope, expected, tol);
+    return slope;
 }

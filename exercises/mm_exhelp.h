@@ -7,6 +7,7 @@
 #include "mm_exercise.h"
 #include "mm_ode.h"
 #include "mm_sdof.h"
+#include "mm_result_v1.h"   /* the builders by name, until every exercise declares its outputs */
 
 /* n equally spaced values from a to b into x (n >= 2), written as
  * a + (b - a) * i / (n - 1) so that round grids print short. */
@@ -46,5 +47,28 @@ int mm_ex_sdof_work_check(const mm_sdof *s, double t_end, mm_error *err);
  * x needs room for n + nwin values; returns the number written (>= n).
  * n >= 2, nwin >= 0, half >= 0. */
 int mm_ex_grid_refined(double a, double b, int n, double c, double half, int nwin, double *x);
+
+/* ---- checks that every chapter needs ------------------------------------------ */
+
+/* A curve against its reference: the worst |got[i] - ref[i]| over n points,
+ * checked against tol_peak times the reference's own largest |ref| (never a
+ * scale of the method's own: a wrong curve must not widen its tolerance).
+ * Returns the worst error; the check is named name. */
+double mm_check_curve(mm_result *res, const char *name, int n, const double *got,
+                      const double *ref, double tol_peak);
+
+/* A residual that must be round-off: |residual| <= ulps * eps * scale, where
+ * scale is the size of the largest term that was summed into it.  Say what
+ * scale is in the name ("sum of |F_i|"). */
+int mm_check_residual(mm_result *res, const char *name, double residual, double scale,
+                      double ulps);
+
+/* The observed order of convergence: the least-squares slope of log e
+ * against log h over n >= 3 points, checked against the expected order
+ * within tol (the points must lie in the asymptotic range: above round-off
+ * and below the step where the error stops following h^p).  Returns the
+ * slope. */
+double mm_check_order(mm_result *res, const char *name, int n, const double *h,
+                      const double *e, double expected, double tol);
 
 #endif

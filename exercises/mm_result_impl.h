@@ -18,19 +18,21 @@ typedef struct mm_block {
 
 typedef struct mm_scalar_node {
     struct mm_scalar_node *next;
-    const char *name, *label, *unit, *text;   /* text may be NULL */
-    double value;
+    const char *name, *label, *unit;
+    const mm_output *decl;         /* NULL for a scalar of the old builders */
+    mm_scalar s;
 } mm_scalar_node;
 
 typedef struct mm_series_node {
     struct mm_series_node *next;
     const char *name, *label, *unit, *x_label, *x_unit;
+    const mm_output *decl;         /* figure hints; NULL for the old builders */
     mm_series s;
 } mm_series_node;
 
 typedef struct mm_table_node {
     struct mm_table_node *next;
-    const char *name;
+    const char *name, *label;
     const char *const *columns, *const *units;
     mm_table t;
 } mm_table_node;
@@ -53,12 +55,22 @@ typedef struct mm_warn_node {
     const char *text;
 } mm_warn_node;
 
+typedef struct mm_shape_node {
+    struct mm_shape_node *next;
+    const char *name;
+    mm_shape_kind kind;
+    mm_shape s;
+} mm_shape_node;
+
 #define MM_LIST(type) struct { type *head, *tail; int n; }
 
 struct mm_result {
+    const mm_exercise *ex;         /* whose output table the builders use */
     mm_block *blocks;
     size_t cap, total;             /* arena cap and bytes taken, in bytes */
     int over_cap;                  /* an allocation was refused by the cap */
+    int failed;                    /* sticky: MM_ENOMEM or MM_EINTERNAL (misuse) */
+    char failure[120];             /* what failed, for the server log */
     MM_LIST(mm_scalar_node) scalars;
     MM_LIST(mm_series_node) series;
     MM_LIST(mm_table_node) tables;
@@ -67,13 +79,23 @@ struct mm_result {
     MM_LIST(mm_warn_node) warnings;
     const char *method;            /* NULL when the exercise names none */
     double step;
+    mm_anim *anim;                 /* NULL when there is no animation */
+    const char *anim_t_label, *anim_t_unit;
+    MM_LIST(mm_shape_node) shapes;
+    mm_scalar sink;                /* written to after a failed mm_res_scalar */
 };
 
-/* Start an empty result whose arena may grow to cap bytes.  Cannot fail
- * (the first block is taken lazily). */
+/* Start an empty result whose arena may grow to cap bytes, for exercise ex
+ * (NULL: only the arena and the old builders may be used).  Cannot fail (the
+ * first block is taken lazily). */
 void mm_result_init(mm_result *r, size_t cap);
+void mm_result_bind(mm_result *r, const mm_exercise *ex);
 
 /* Free the arena; r may be reused after mm_result_init. */
 void mm_result_release(mm_result *r);
+
+/* The status that refuses the answer (MM_ETOOBIG over the cap, MM_ENOMEM,
+ * MM_EINTERNAL), or MM_OK when every builder call succeeded. */
+int mm_result_status(const mm_result *r);
 
 #endif

@@ -12,6 +12,7 @@ debs=(
   libcmocka-dev libcurl4-openssl-dev curl
   libgsl-dev wrk valgrind
   chromium
+  octave nginx
 )
 
 missing=()

@@ -20,14 +20,6 @@ struct mm_api {
     size_t *meta_len;
 };
 
-const char *mm_chapter_title(int chapter)
-{
-    static const char *const titles[] = {
-        "", "Numerical basics", "Kinematics", "Statics", "Dynamics", "Vibrations",
-    };
-    return chapter >= 1 && chapter <= 5 ? titles[chapter] : "";
-}
-
 static long long now_us(void)
 {
     struct timespec ts;
@@ -102,6 +94,7 @@ static void write_catalog_fields(mm_buf *b, const mm_exercise *ex)
     mm_buf_int(b, ex->chapter);
     field_str(b, "chapter_title", mm_chapter_title(ex->chapter));
     field_str(b, "section", ex->section);
+    field_str(b, "section_title", mm_section_title(ex->section));
     field_str(b, "title", ex->title);
     field_str(b, "summary", ex->summary);
     mm_buf_puts(b, ",\"tags\":");
@@ -199,6 +192,110 @@ static void write_strings(mm_buf *b, const char *const *list, int n)
     mm_buf_char(b, ']');
 }
 
+/* The figure hints of a series (API.md "Additions"), those declared. */
+static void write_hints(mm_buf *b, const mm_output *o)
+{
+    if (!o)
+        return;
+    const struct { const char *key, *value; } h[] = {
+        {"figure", o->figure}, {"mark", o->mark}, {"role", o->role},
+        {"x_scale", o->x_scale}, {"y_scale", o->y_scale}, {"aspect", o->aspect},
+    };
+    for (size_t i = 0; i < sizeof h / sizeof h[0]; i++)
+        if (h[i].value)
+            field_str(b, h[i].key, h[i].value);
+}
+
+static void write_nums(mm_buf *b, const double *v, int n, const char *where)
+{
+    mm_buf_char(b, '[');
+    for (int i = 0; i < n; i++) {
+        if (i)
+            mm_buf_char(b, ',');
+        mm_buf_num(b, v[i], where);
+    }
+    mm_buf_char(b, ']');
+}
+
+/* one array of point coordinates per frame */
+static void write_frames(mm_buf *b, const double *v, const mm_shape *s, const char *where)
+{
+    mm_buf_char(b, '[');
+    for (int f = 0; f < s->frames; f++) {
+        if (f)
+            mm_buf_char(b, ',');
+        write_nums(b, v + (size_t)f * (size_t)s->npts, s->npts, where);
+    }
+    mm_buf_char(b, ']');
+}
+
+/* bounds from the shapes when the exercise gave none: every point, every
+ * circle's extent, with a margin of 5 % of the larger side */
+static void anim_bounds(const mm_result *r, double bb[4])
+{
+    memcpy(bb, r->anim->bounds, 4 * sizeof *bb);
+    if (bb[0] != 0 || bb[1] != 0 || bb[2] != 0 || bb[3] != 0)
+        return;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (const mm_shape_node *n = r->shapes.head; n; n = n->next) {
+        if (n->kind == MM_SHAPE_LABEL)
+            continue;
+        size_t m = (size_t)n->s.frames * (size_t)n->s.npts;
+        double rad = n->kind == MM_SHAPE_CIRCLE ? n->s.radius : 0;
+        for (size_t k = 0; k < m; k++) {
+            lo[0] = fmin(lo[0], n->s.x[k] - rad), hi[0] = fmax(hi[0], n->s.x[k] + rad);
+            lo[1] = fmin(lo[1], n->s.y[k] - rad), hi[1] = fmax(hi[1], n->s.y[k] + rad);
+        }
+    }
+    if (!(lo[0] <= hi[0])) {
+        lo[0] = lo[1] = -1, hi[0] = hi[1] = 1;
+    }
+    double side = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]), 1e-9), pad = 0.05 * side;
+    bb[0] = lo[0] - pad, bb[1] = lo[1] - pad, bb[2] = hi[0] + pad, bb[3] = hi[1] + pad;
+}
+
+/* API.md "animation" */
+static void write_animation(mm_buf *b, const mm_result *r)
+{
+    static const char *const kinds[] = {"line", "polygon", "circle", "arrow", "path", "label"};
+    double bb[4];
+    anim_bounds(r, bb);
+    mm_buf_puts(b, ",\"animation\":{\"t\":");
+    write_nums(b, r->anim->t, r->anim->nframes, "animation");
+    field_str(b, "t_label", r->anim_t_label);
+    field_str(b, "t_unit", r->anim_t_unit);
+    mm_buf_puts(b, ",\"bounds\":");
+    write_nums(b, bb, 4, "animation");
+    mm_buf_puts(b, ",\"shapes\":[");
+    for (const mm_shape_node *n = r->shapes.head; n; n = n->next) {
+        if (n != r->shapes.head)
+            mm_buf_char(b, ',');
+        mm_buf_puts(b, "{\"name\":");
+        mm_buf_str(b, n->name);
+        field_str(b, "kind", kinds[n->kind]);
+        mm_buf_puts(b, ",\"x\":");
+        write_frames(b, n->s.x, &n->s, n->name);
+        mm_buf_puts(b, ",\"y\":");
+        write_frames(b, n->s.y, &n->s, n->name);
+        if (n->kind == MM_SHAPE_CIRCLE)
+            field_num(b, "r", n->s.radius, n->name);
+        if (n->s.value) {
+            mm_buf_puts(b, ",\"value\":");
+            write_nums(b, n->s.value, n->s.frames, n->name);
+        }
+        if (n->s.style)
+            field_str(b, "style", n->s.style);
+        if (n->kind == MM_SHAPE_ARROW) {
+            field_str(b, "unit", n->s.unit ? n->s.unit : "");
+            field_num(b, "scale", n->s.scale, n->name);
+        }
+        if (n->s.text)
+            field_str(b, "text", n->s.text);
+        mm_buf_char(b, '}');
+    }
+    mm_buf_puts(b, "]}");
+}
+
 /* The answer of a solve (API.md "A solve answer"). */
 static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
                          const mm_result *r, long long elapsed_us)
@@ -222,9 +319,14 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
         mm_buf_str(b, s->name);
         field_str(b, "label", s->label);
         field_str(b, "unit", s->unit);
-        field_num(b, "value", s->value, s->name);
-        if (s->text) {
-            field_str(b, "text", s->text);
+        field_num(b, "value", s->s.value, s->name);
+        if (s->s.text)
+            field_str(b, "text", s->s.text);
+        if (s->s.exact)
+            mm_buf_puts(b, ",\"exact\":true");
+        else if (s->s.error_kind != MM_ERR_NONE) {
+            field_num(b, "error", s->s.error, s->name);
+            field_str(b, "error_kind", s->s.error_kind == MM_ERR_BOUND ? "bound" : "estimate");
         }
         mm_buf_char(b, '}');
     }
@@ -239,6 +341,7 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
         field_str(b, "x_label", s->x_label);
         field_str(b, "x_unit", s->x_unit);
         field_str(b, "unit", s->unit);
+        write_hints(b, s->decl);
         mm_buf_puts(b, ",\"x\":[");
         for (int i = 0; i < s->s.n; i++) {
             if (i)
@@ -260,6 +363,8 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
             mm_buf_char(b, ',');
         mm_buf_puts(b, "{\"name\":");
         mm_buf_str(b, t->name);
+        if (t->label && t->label[0])
+            field_str(b, "label", t->label);
         mm_buf_puts(b, ",\"columns\":");
         write_strings(b, t->columns, t->t.ncols);
         mm_buf_puts(b, ",\"units\":");
@@ -320,7 +425,10 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
             mm_buf_char(b, ',');
         mm_buf_str(b, w->text);
     }
-    mm_buf_puts(b, "],\"elapsed_us\":");
+    mm_buf_char(b, ']');
+    if (r->anim)
+        write_animation(b, r);
+    mm_buf_puts(b, ",\"elapsed_us\":");
     mm_buf_int(b, elapsed_us);
     mm_buf_char(b, '}');
 }
@@ -360,6 +468,7 @@ int mm_api_solve(const mm_exercise *ex, const mm_input *in, int n_in, mm_buf *ou
 
     mm_error_clear(&err);
     mm_result_init(&res, MM_REQ_MEM_CAP);
+    mm_result_bind(&res, ex);
     mm_buf_reset(out);
 
     int rc = MM_OK;
@@ -384,10 +493,14 @@ int mm_api_solve(const mm_exercise *ex, const mm_input *in, int n_in, mm_buf *ou
         rc = ex->solve(vals, &res, &err);
     long long elapsed = now_us() - t0;
 
-    if (res.over_cap) {
+    int failed = mm_result_status(&res);   /* sticky: a builder failed, whatever solve said */
+    if (failed == MM_ETOOBIG) {
         mm_error_set(&err, MM_ETOOBIG, "", "this request needs more than %u MB of memory; "
                      "choose smaller sizes", MM_REQ_MEM_CAP >> 20);
         rc = MM_ETOOBIG;
+    } else if (failed != MM_OK) {
+        mm_error_set(&err, failed, "", "the answer could not be built (%s)", res.failure);
+        rc = failed;
     }
     if (rc == MM_OK) {
         write_answer(out, ex, vals, &res, elapsed);
@@ -597,7 +710,108 @@ static char *read_file(const char *path, size_t *len)
     return mm_buf_take(&b, len);
 }
 
-/* Metadata of one exercise; runs it at its defaults to list its outputs. */
+/* Outputs of an exercise without an output table (the transition): what
+ * the default solve produces.  Goes with the last such exercise. */
+static void discover_outputs(mm_buf *b, const mm_exercise *ex)
+{
+    mm_result res;
+    mm_value vals[MM_MAX_PARAMS];
+    mm_error err;
+    mm_error_clear(&err);
+    mm_result_init(&res, MM_REQ_MEM_CAP);
+    int rc = MM_OK;
+    for (int k = 0; k < ex->n_params && rc == MM_OK; k++)
+        rc = mm_param_default(&ex->params[k], &vals[k], &res, &err);
+    if (rc == MM_OK)
+        rc = ex->solve(vals, &res, &err);
+    if (rc != MM_OK)
+        fprintf(stderr, "mechmat: %s: the default solve fails: %s\n", ex->id, err.msg);
+    int first = 1;
+    for (const mm_scalar_node *s = rc ? NULL : res.scalars.head; s; s = s->next, first = 0) {
+        mm_buf_puts(b, first ? "{\"kind\":\"scalar\",\"name\":" : ",{\"kind\":\"scalar\",\"name\":");
+        mm_buf_str(b, s->name);
+        mm_buf_puts(b, ",\"label\":");
+        mm_buf_str(b, s->label);
+        mm_buf_puts(b, ",\"unit\":");
+        mm_buf_str(b, s->unit);
+        mm_buf_char(b, '}');
+    }
+    for (const mm_series_node *s = rc ? NULL : res.series.head; s; s = s->next, first = 0) {
+        mm_buf_puts(b, first ? "{\"kind\":\"series\",\"name\":" : ",{\"kind\":\"series\",\"name\":");
+        mm_buf_str(b, s->name);
+        mm_buf_puts(b, ",\"label\":");
+        mm_buf_str(b, s->label);
+        mm_buf_puts(b, ",\"unit\":");
+        mm_buf_str(b, s->unit);
+        mm_buf_puts(b, ",\"x_label\":");
+        mm_buf_str(b, s->x_label);
+        mm_buf_puts(b, ",\"x_unit\":");
+        mm_buf_str(b, s->x_unit);
+        mm_buf_char(b, '}');
+    }
+    for (const mm_table_node *t = rc ? NULL : res.tables.head; t; t = t->next, first = 0) {
+        mm_buf_puts(b, first ? "{\"kind\":\"table\",\"name\":" : ",{\"kind\":\"table\",\"name\":");
+        mm_buf_str(b, t->name);
+        mm_buf_puts(b, ",\"columns\":");
+        write_strings(b, t->columns, t->t.ncols);
+        mm_buf_puts(b, ",\"units\":");
+        write_strings(b, t->units, t->t.ncols);
+        mm_buf_char(b, '}');
+    }
+    mm_result_release(&res);
+
+}
+
+/* The declared outputs, every member of a family by its name. */
+static void write_outputs_meta(mm_buf *b, const mm_exercise *ex)
+{
+    static const char *const kinds[] = {"", "scalar", "series", "table", "animation"};
+    int first = 1;
+    for (int i = 0; i < ex->n_outputs; i++) {
+        const mm_output *o = &ex->outputs[i];
+        int n = mm_output_count(o);
+        for (int k = 0; k < n; k++, first = 0) {
+            char name[160], label[320];
+            mm_output_member(o, mm_output_index(o, k), name, sizeof name);
+            snprintf(label, sizeof label, "%s", o->label);
+            if (n > 1 || strchr(o->name, '%')) {          /* the label's hole too */
+                mm_output tmp = *o;
+                tmp.name = o->label;
+                if (mm_output_member(&tmp, mm_output_index(o, k), label, sizeof label) != 0)
+                    snprintf(label, sizeof label, "%s", o->label);
+            }
+            mm_buf_puts(b, first ? "{\"kind\":" : ",{\"kind\":");
+            mm_buf_str(b, kinds[o->kind]);
+            field_str(b, "name", name);
+            field_str(b, "label", label);
+            if (o->kind != MM_OUT_TABLE && o->kind != MM_OUT_ANIMATION)
+                field_str(b, "unit", o->unit ? o->unit : "");
+            if (strchr(o->name, '%'))
+                field_str(b, "family", o->name);
+            if (o->flags & MM_ANSWER)
+                mm_buf_puts(b, ",\"answer\":true");
+            if (o->flags & MM_EXACT)
+                mm_buf_puts(b, ",\"exact\":true");
+            if (o->kind == MM_OUT_SERIES) {
+                field_str(b, "x_label", o->x_label);
+                field_str(b, "x_unit", o->x_unit ? o->x_unit : "");
+                write_hints(b, o);
+            }
+            if (o->kind == MM_OUT_TABLE) {
+                int nc = 0;
+                while (o->columns[nc])
+                    nc++;
+                mm_buf_puts(b, ",\"columns\":");
+                write_strings(b, o->columns, nc);
+                mm_buf_puts(b, ",\"units\":");
+                write_strings(b, o->units, nc);
+            }
+            mm_buf_char(b, '}');
+        }
+    }
+}
+
+/* Metadata of one exercise. */
 static char *build_meta(const mm_exercise *ex, const char *root, size_t *len)
 {
     mm_buf b;
@@ -628,53 +842,10 @@ static char *build_meta(const mm_exercise *ex, const char *root, size_t *len)
     }
     mm_buf_puts(&b, "],\"outputs\":[");
 
-    /* outputs: what the default solve produces */
-    mm_result res;
-    mm_value vals[MM_MAX_PARAMS];
-    mm_error err;
-    mm_error_clear(&err);
-    mm_result_init(&res, MM_REQ_MEM_CAP);
-    int rc = MM_OK;
-    for (int k = 0; k < ex->n_params && rc == MM_OK; k++)
-        rc = mm_param_default(&ex->params[k], &vals[k], &res, &err);
-    if (rc == MM_OK)
-        rc = ex->solve(vals, &res, &err);
-    if (rc != MM_OK)
-        fprintf(stderr, "mechmat: %s: the default solve fails: %s\n", ex->id, err.msg);
-    int first = 1;
-    for (const mm_scalar_node *s = rc ? NULL : res.scalars.head; s; s = s->next, first = 0) {
-        mm_buf_puts(&b, first ? "{\"kind\":\"scalar\",\"name\":" : ",{\"kind\":\"scalar\",\"name\":");
-        mm_buf_str(&b, s->name);
-        mm_buf_puts(&b, ",\"label\":");
-        mm_buf_str(&b, s->label);
-        mm_buf_puts(&b, ",\"unit\":");
-        mm_buf_str(&b, s->unit);
-        mm_buf_char(&b, '}');
-    }
-    for (const mm_series_node *s = rc ? NULL : res.series.head; s; s = s->next, first = 0) {
-        mm_buf_puts(&b, first ? "{\"kind\":\"series\",\"name\":" : ",{\"kind\":\"series\",\"name\":");
-        mm_buf_str(&b, s->name);
-        mm_buf_puts(&b, ",\"label\":");
-        mm_buf_str(&b, s->label);
-        mm_buf_puts(&b, ",\"unit\":");
-        mm_buf_str(&b, s->unit);
-        mm_buf_puts(&b, ",\"x_label\":");
-        mm_buf_str(&b, s->x_label);
-        mm_buf_puts(&b, ",\"x_unit\":");
-        mm_buf_str(&b, s->x_unit);
-        mm_buf_char(&b, '}');
-    }
-    for (const mm_table_node *t = rc ? NULL : res.tables.head; t; t = t->next, first = 0) {
-        mm_buf_puts(&b, first ? "{\"kind\":\"table\",\"name\":" : ",{\"kind\":\"table\",\"name\":");
-        mm_buf_str(&b, t->name);
-        mm_buf_puts(&b, ",\"columns\":");
-        write_strings(&b, t->columns, t->t.ncols);
-        mm_buf_puts(&b, ",\"units\":");
-        write_strings(&b, t->units, t->t.ncols);
-        mm_buf_char(&b, '}');
-    }
-    mm_result_release(&res);
-
+    if (ex->n_outputs > 0)
+        write_outputs_meta(&b, ex);
+    else
+        discover_outputs(&b, ex);
     mm_buf_puts(&b, "],\"references\":[");
     for (int i = 0; ex->references && ex->references[i]; i++) {
         if (i)
@@ -701,6 +872,8 @@ mm_api *mm_api_alloc(const char *root, mm_error *err)
     if (!api->meta || !api->meta_len)
         goto fail;
 
+    if (mm_registry_check(err) != MM_OK)
+        goto fail;
     for (int i = 0; i < mm_exercise_count; i++) {
         const mm_exercise *ex = mm_exercises[i];
         if (ex->n_params > MM_MAX_PARAMS || mm_params_check(ex, err) != MM_OK) {

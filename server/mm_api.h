@@ -31,8 +31,8 @@ typedef struct mm_input {
 
 /* Build the cached documents.  root is the source tree (theory files are
  * read from root/<exercise theory path>); a missing theory file is logged
- * and served as empty.  Runs every exercise once at its defaults to learn
- * its outputs.  Returns NULL on failure with err filled. */
+ * and served as empty.
+ * Returns NULL on failure with err filled. */
 mm_api *mm_api_alloc(const char *root, mm_error *err);
 void mm_api_free(mm_api *api);
 
@@ -52,8 +52,5 @@ int mm_api_solve_json(const mm_exercise *ex, const char *body, size_t len, mm_bu
 
 /* {"error":{"code":…,"param":…,"message":…}} for err; returns its status. */
 int mm_api_error(mm_buf *out, const mm_error *err);
-
-/* Title of a chapter number (1..5), "" otherwise. */
-const char *mm_chapter_title(int chapter);
 
 #endif

@@ -91,7 +91,7 @@ static int check(const mm_value *in, mm_error *err)
 /* A segment from the origin to z, the way an arrow is drawn on the Argand plane. */
 static int arrow(mm_result *res, const char *name, const char *label, cplx z)
 {
-    mm_series *s = mm_res_series(res, name, label, "", "Re", "", 2);
+    mm_series *s = mm_res_series_v1(res, name, label, "", "Re", "", 2);
     if (!s)
         return MM_ENOMEM;
     s->x[1] = z.re;
@@ -147,12 +147,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     z.re += 0.0;                                 /* no -0 in the answer either */
     z.im += 0.0;
-    mm_res_scalar(res, "re", "real part of the result", "", z.re);
-    mm_res_scalar(res, "im", "imaginary part of the result", "", z.im);
-    mm_res_scalar(res, "modulus", "modulus |z| of the result", "", cabs_(z));
-    mm_res_scalar(res, "argument", "argument of the result, in (-pi, pi]", "rad", carg_(z));
-    mm_res_scalar(res, "a_modulus", "modulus |a|", "", ra);
-    mm_res_scalar(res, "a_argument", "argument of a", "rad", ta);
+    mm_res_scalar_v1(res, "re", "real part of the result", "", z.re);
+    mm_res_scalar_v1(res, "im", "imaginary part of the result", "", z.im);
+    mm_res_scalar_v1(res, "modulus", "modulus |z| of the result", "", cabs_(z));
+    mm_res_scalar_v1(res, "argument", "argument of the result, in (-pi, pi]", "rad", carg_(z));
+    mm_res_scalar_v1(res, "a_modulus", "modulus |a|", "", ra);
+    mm_res_scalar_v1(res, "a_argument", "argument of a", "rad", ta);
 
     /* the Argand plane: a, b and the result as arrows from the origin */
     int rc = arrow(res, "a", "a", a);
@@ -167,7 +167,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double mag = cabs_(zp);
     if (op == OP_ROOTS) {
         /* all n roots (eq. 8), a regular n-gon; w^n = a and sum w = 0 */
-        mm_series *s = mm_res_series(res, "roots", "the n roots of a", "", "Re", "", n + 1);
+        mm_series *s = mm_res_series_v1(res, "roots", "the n roots of a", "", "Re", "", n + 1);
         if (!s)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");
         double back = 0, sre = 0, sim = 0, r1 = pow(ra, 1.0 / n);
@@ -208,7 +208,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_check_abs(res, "|a^n| = |a|^n", cabs_(z), rn, bound(rn, 2 * k));
         /* the powers a^0, a^1, ..., a^n: a spiral that turns by arg a each step */
         int m = abs(n) + 1;
-        mm_series *s = mm_res_series(res, "powers", n >= 0 ? "a^0, a^1, ..., a^n" : "a^0, a^-1, ..., a^n",
+        mm_series *s = mm_res_series_v1(res, "powers", n >= 0 ? "a^0, a^1, ..., a^n" : "a^0, a^-1, ..., a^n",
                                      "", "Re", "", m);
         if (!s)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");

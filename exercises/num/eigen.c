@@ -107,7 +107,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     static const char *const cols[] = {"lambda", "omega", "f"};
     static const char *const units[] = {"1/s^2", "rad/s", "Hz"};
-    mm_table *t = mm_res_table(res, "eigen", n, 3, cols, units);
+    mm_table *t = mm_res_table_v1(res, "eigen", n, 3, cols, units);
     if (!t)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     int unstable = 0, rigid = 0;
@@ -127,7 +127,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* mode shapes: as MATLAB's V (one column per mode), and as plot series */
-    mm_table *ts = mm_res_table(res, "modes", n, n + 1, phi_name, phi_unit);
+    mm_table *ts = mm_res_table_v1(res, "modes", n, n + 1, phi_name, phi_unit);
     if (!ts)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int i = 0; i < n; i++) {
@@ -136,7 +136,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             ts->cell[i * (n + 1) + j + 1] = V[i * n + j];
     }
     for (int j = 0; j < n; j++) {
-        mm_series *s = mm_res_series(res, mode_name[j], mode_label[j], "", "degree of freedom", "", n);
+        mm_series *s = mm_res_series_v1(res, mode_name[j], mode_label[j], "", "degree of freedom", "", n);
         if (!s)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");
         for (int i = 0; i < n; i++) {
@@ -145,9 +145,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
     }
 
-    mm_res_scalar(res, "lambda_min", "smallest eigenvalue", "1/s^2", lam[0]);
-    mm_res_scalar(res, "lambda_max", "largest eigenvalue", "1/s^2", lam[n - 1]);
-    mm_res_scalar(res, "unstable_modes", "modes with lambda < 0", "", unstable);
+    mm_res_scalar_v1(res, "lambda_min", "smallest eigenvalue", "1/s^2", lam[0]);
+    mm_res_scalar_v1(res, "lambda_max", "largest eigenvalue", "1/s^2", lam[n - 1]);
+    mm_res_scalar_v1(res, "unstable_modes", "modes with lambda < 0", "", unstable);
 
     /* check 1: every mode satisfies eq. (1), relative to the sizes involved;
      * Cholesky reduction is backward stable up to a factor cond(M) */

@@ -117,16 +117,16 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return rc;
 
     for (int i = 0; i < n; i++)
-        mm_res_scalar(res, xname[i], xlabel[i], "", x[i]);
-    mm_res_scalar(res, "cond", "condition number cond(A) (2-norm)", "", cond);
+        mm_res_scalar_v1(res, xname[i], xlabel[i], "", x[i]);
+    mm_res_scalar_v1(res, "cond", "condition number cond(A) (2-norm)", "", cond);
 
     residual(n, A, x, b, r);
     double rnorm = norm2(n, r), xnorm = norm2(n, x), bnorm = norm2(n, b);
     double scale = sv[0] * xnorm + bnorm;                  /* ||A|| ||x|| + ||b|| */
     double berr = scale > 0 ? rnorm / scale : 0;
-    mm_res_scalar(res, "residual", "residual ||b - A x|| (2-norm)", "", rnorm);
-    mm_res_scalar(res, "backward_error", "relative residual ||b - A x|| / (||A|| ||x|| + ||b||)", "", berr);
-    mm_res_scalar(res, "digits", "digits of x to trust, about 16 - log10(cond)", "",
+    mm_res_scalar_v1(res, "residual", "residual ||b - A x|| (2-norm)", "", rnorm);
+    mm_res_scalar_v1(res, "backward_error", "relative residual ||b - A x|| / (||A|| ||x|| + ||b||)", "", berr);
+    mm_res_scalar_v1(res, "digits", "digits of x to trust, about 16 - log10(cond)", "",
                   fmax(0, floor(-log10(cond * DBL_EPSILON))));
 
     /* check 1: backward stability (eq. 4).  LU with partial pivoting and
@@ -152,8 +152,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_check_abs(res, "x by LU vs x by SVD: max |difference| / max |x| <= 16 n cond eps",
                      x2max > 0 ? d / x2max : d, 0, tol);
 
-    mm_series *sx = mm_res_series(res, "x", "solution x_i", "", "i", "", n);
-    mm_series *ss = mm_res_series(res, "sigma", "singular values of A", "", "i", "", n);
+    mm_series *sx = mm_res_series_v1(res, "x", "solution x_i", "", "i", "", n);
+    mm_series *ss = mm_res_series_v1(res, "sigma", "singular values of A", "", "i", "", n);
     if (!sx || !ss)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int i = 0; i < n; i++) {

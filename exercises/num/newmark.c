@@ -545,7 +545,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return rc;
     static const char *const mcols[] = {"mode", "omega", "zeta", "omega_h"};
     static const char *const munits[] = {"", "rad/s", "", ""};
-    mm_table *mt = mm_res_table(res, "modes", n, 4, mcols, munits);
+    mm_table *mt = mm_res_table_v1(res, "modes", n, 4, mcols, munits);
     if (!mt)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     double Q = 1;     /* the largest dynamic magnification of a mode at omega */
@@ -565,12 +565,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
     }
     double wmax = sqrt(fmax(lam[n - 1], 0));
-    mm_res_scalar(res, "n", "degrees of freedom", "", n);
-    mm_res_scalar(res, "omega_max", "highest natural frequency", "rad/s", wmax);
-    mm_res_scalar(res, "omega_max_h", "omega_max h: radians of the fastest mode per step", "", wmax * h);
+    mm_res_scalar_v1(res, "n", "degrees of freedom", "", n);
+    mm_res_scalar_v1(res, "omega_max", "highest natural frequency", "rad/s", wmax);
+    mm_res_scalar_v1(res, "omega_max_h", "omega_max h: radians of the fastest mode per step", "", wmax * h);
     double lim = omega_h_limit(method);
     if (lim > 0)
-        mm_res_scalar(res, "h_stable", "stability limit of the scheme", "s", lim / wmax);
+        mm_res_scalar_v1(res, "h_stable", "stability limit of the scheme", "s", lim / wmax);
 
     /* ---- the integration ---- */
     run_out o;
@@ -676,7 +676,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if ((rc = fastest_rate(&s, Kt, &fast, err)) != MM_OK)
             return rc;
         w_eff = fmax(w_eff, fmax(wt, fast));
-        mm_res_scalar(res, "omega_max_tangent", "highest frequency of the stiffened system (largest |q1|)",
+        mm_res_scalar_v1(res, "omega_max_tangent", "highest frequency of the stiffened system (largest |q1|)",
                       "rad/s", wt);
         if (lim > 0 && wt * h >= lim)
             return mm_error_set(err, MM_ERANGE, "h", "the cubic spring raises the highest frequency to %.4g "
@@ -699,13 +699,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double wh2 = (w_eff * h) * (w_eff * h), T_run = o.t[N];
     double est = c * wh2 * (w_eff * T_run + 1 + fmin(Q, 1e6)) * A_eff / fmax(A, 1e-300);   /* relative */
     double bound = 3 * c * wh2 * (T_run * V_eff + A_eff * (1 + fmin(Q, 1e6))) + 1e-9 * A + 1e-300;
-    mm_res_scalar(res, "max_error", "largest |q - q_reference| at the measured steps", "m", worst);
-    mm_res_scalar(res, "relative_error", "largest error over the largest displacement", "", worst / fmax(A, 1e-300));
-    mm_res_scalar(res, "error_estimate", "a-priori relative error of the scheme, eq. (10)", "", est);
+    mm_res_scalar_v1(res, "max_error", "largest |q - q_reference| at the measured steps", "m", worst);
+    mm_res_scalar_v1(res, "relative_error", "largest error over the largest displacement", "", worst / fmax(A, 1e-300));
+    mm_res_scalar_v1(res, "error_estimate", "a-priori relative error of the scheme, eq. (10)", "", est);
     char name[160];
     int independent = 0;        /* independent checks made: reference, order, energy */
     if (w_eff * h <= 0.5) {     /* at least 12 steps per period of the fastest motion */
-        mm_res_scalar(res, "error_bound", "a-priori error bound of the scheme (eq. 10)", "m", bound);
+        mm_res_scalar_v1(res, "error_bound", "a-priori error bound of the scheme (eq. 10)", "m", bound);
         snprintf(name, sizeof name, "q(t) vs %s (worst measured step) within the a-priori bound (10)",
                  exact ? "exact modal superposition" : "DOP853 at rtol 1e-11");
         mm_res_check_abs(res, mm_res_strdup(res, name), worst, 0, bound);
@@ -733,7 +733,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                 for (int i = 0; i < n; i++)
                     worst2 = fmax(worst2, fabs(o2.q[idx[k] * n + i] - qr[k * n + i]));
         double p = log2(worst / worst2);
-        mm_res_scalar(res, "observed_order", "log2(error at h / error at h/2)", "", p);
+        mm_res_scalar_v1(res, "observed_order", "log2(error at h / error at h/2)", "", p);
         mm_res_check_abs(res, "observed order from a second run at h/2 vs 2", p, 2, 0.35);
         independent++;
     }
@@ -769,7 +769,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             }
             memcpy(Rp, Rk, sizeof Rp);
         }
-        mm_res_scalar(res, "motion_residual", "largest residual of the equation of motion at a step", "N", worst_r);
+        mm_res_scalar_v1(res, "motion_residual", "largest residual of the equation of motion at a step", "N", worst_r);
         /* Newton stops at 1e-12 of the force scale; round-off adds a few eps */
         mm_res_check_abs(res, method == ME_HHT
                                   ? "consistency check (not independent): the HHT-weighted equation of motion the "
@@ -809,10 +809,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         memcpy(Fa, Fb, sizeof Fa);
         memcpy(Ca, Cb, sizeof Ca);
     }
-    mm_res_scalar(res, "energy_residual", "largest |E - E0 - W + D| over the largest energy, eq. (7)", "",
+    mm_res_scalar_v1(res, "energy_residual", "largest |E - E0 - W + D| over the largest energy, eq. (7)", "",
                   bal / fmax(Emax, 1e-300));
-    mm_res_scalar(res, "work_done", "work of the forces F cos(omega t) over the run", "J", W);
-    mm_res_scalar(res, "energy_dissipated", "energy taken by the dampers over the run", "J", D);
+    mm_res_scalar_v1(res, "work_done", "work of the forces F cos(omega t) over the run", "J", W);
+    mm_res_scalar_v1(res, "energy_dissipated", "energy taken by the dampers over the run", "J", D);
     if (method == ME_AVERAGE && s.knl == 0) {
         /* average acceleration satisfies the trapezoidal energy balance step
          * by step (eq. 8); only round-off remains, growing with the steps */
@@ -836,10 +836,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         char nm[32], lb[64];
         snprintf(nm, sizeof nm, "q%d", i + 1);
         snprintf(lb, sizeof lb, "displacement q%d", i + 1);
-        mm_series *sq = mm_res_series(res, mm_res_strdup(res, nm), mm_res_strdup(res, lb), "m", "t", "s", nplot);
+        mm_series *sq = mm_res_series_v1(res, mm_res_strdup(res, nm), mm_res_strdup(res, lb), "m", "t", "s", nplot);
         snprintf(nm, sizeof nm, "q%d_reference", i + 1);
         snprintf(lb, sizeof lb, "q%d, %s", i + 1, exact ? "exact" : "DOP853");
-        mm_series *sr = mm_res_series(res, mm_res_strdup(res, nm), mm_res_strdup(res, lb), "m", "t", "s", nplot);
+        mm_series *sr = mm_res_series_v1(res, mm_res_strdup(res, nm), mm_res_strdup(res, lb), "m", "t", "s", nplot);
         if (!sq || !sr)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");
         for (int k = 0, m = 0; k < ns; k++)
@@ -849,7 +849,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                 sr->y[m++] = qr[k * n + i];
             }
     }
-    mm_series *sb = mm_res_series(res, "energy_residual", "energy balance residual E - E0 - W + D", "J", "t", "s",
+    mm_series *sb = mm_res_series_v1(res, "energy_residual", "energy balance residual E - E0 - W + D", "J", "t", "s",
                                   nplot);
     if (!sb)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
@@ -870,10 +870,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method_stat(res, "max_error", worst);
     if (!exact)
         mm_res_method_stat(res, "reference_evaluations", (double)ref_evals);
-    mm_res_scalar(res, "newton_iterations", "Newton corrections in all (0: linear, one solve per step)", "",
+    mm_res_scalar_v1(res, "newton_iterations", "Newton corrections in all (0: linear, one solve per step)", "",
                   (double)o.newton_iters);
     if (s.knl > 0)
-        mm_res_scalar(res, "newton_per_step", "Newton corrections per step", "", (double)o.newton_iters / N);
+        mm_res_scalar_v1(res, "newton_per_step", "Newton corrections per step", "", (double)o.newton_iters / N);
     return MM_OK;
 }
 

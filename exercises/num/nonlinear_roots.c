@@ -135,8 +135,8 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
 
     static const char *const cols[] = {"x", "fx", "iterations"};
     static const char *const units[] = {"", "", ""};
-    mm_table *t = mm_res_table(res, "roots", nr, 3, cols, units);
-    mm_series *sr = mm_res_series(res, "roots", "roots", "", "x", "", nr);
+    mm_table *t = mm_res_table_v1(res, "roots", nr, 3, cols, units);
+    mm_series *sr = mm_res_series_v1(res, "roots", "roots", "", "x", "", nr);
     if (!t || !sr)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     int nsuspect = 0;
@@ -152,11 +152,11 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         wmax = fmax(wmax, z->width);
         xmax = fmax(xmax, fabs(z->x));
     }
-    mm_res_scalar(res, "count", "number of roots found", "", nr);
+    mm_res_scalar_v1(res, "count", "number of roots found", "", nr);
     if (nr > 0)
-        mm_res_scalar(res, "x1", "the first (smallest) root", "", rr.roots[0].x);
+        mm_res_scalar_v1(res, "x1", "the first (smallest) root", "", rr.roots[0].x);
     else
-        mm_res_scalar_text(res, "x1", "the first (smallest) root", "", 0, "none found");
+        mm_res_scalar_text_v1(res, "x1", "the first (smallest) root", "", 0, "none found");
     long scan_evals = c->evals;
 
     /* check 1: every root against bisection restarted from its part, to a
@@ -230,7 +230,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                     "than a part (%.3g), roots that only touch zero, and roots beside points where f is not finite "
                     "are missed; raise n", plot_changes, nr, nr == 1 ? "" : "s", rr.npoles ? " and poles" : "",
                     (b - a) / n);
-    mm_series *sf = mm_res_series(res, "f", "f(x)", "", "x", "", np);
+    mm_series *sf = mm_res_series_v1(res, "f", "f(x)", "", "x", "", np);
     if (!sf)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     memcpy(sf->x, xs, np * sizeof *xs);

@@ -233,7 +233,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         return mm_error_set(err, MM_ENONFINITE, "f", "f is not a finite number anywhere on [%g, %g] (first "
                             "sample: f(%g)); choose another interval or function", a, b, a);
 
-    mm_series *s = mm_res_series(res, "f", "f(x)", "", "x", "", np);
+    mm_series *s = mm_res_series_v1(res, "f", "f(x)", "", "x", "", np);
     if (!s)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int k = 0; k < np; k++) {
@@ -277,11 +277,11 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
             }
         }
     }
-    mm_res_scalar(res, "max", "largest value of f (refined between samples)", "", ext_f[0]);
-    mm_res_scalar(res, "x_max", "where f is largest", "", ext_x[0]);
-    mm_res_scalar(res, "min", "smallest value of f (refined between samples)", "", ext_f[1]);
-    mm_res_scalar(res, "x_min", "where f is smallest", "", ext_x[1]);
-    mm_res_scalar(res, "points", "points plotted", "", np);
+    mm_res_scalar_v1(res, "max", "largest value of f (refined between samples)", "", ext_f[0]);
+    mm_res_scalar_v1(res, "x_max", "where f is largest", "", ext_x[0]);
+    mm_res_scalar_v1(res, "min", "smallest value of f (refined between samples)", "", ext_f[1]);
+    mm_res_scalar_v1(res, "x_min", "where f is smallest", "", ext_x[1]);
+    mm_res_scalar_v1(res, "points", "points plotted", "", np);
 
     if (bad) {
         mm_res_warn(res, "f is not finite at %d of the %d samples (first at x = %.6g: a pole, or a value outside "
@@ -304,14 +304,14 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         mm_res_warn(res, "the integral of f over [%g, %g] is not computed: f is not finite between the plot "
                     "samples (a pole or a domain error the plot does not show)", a, b);
     } else {
-        mm_res_scalar(res, "integral", "integral of f from a to b (area, signed)", "", igk);
+        mm_res_scalar_v1(res, "integral", "integral of f from a to b (area, signed)", "", igk);
         mm_res_check_abs(res, "integral: adaptive Gauss-Kronrod vs composite Gauss-Legendre, within both error "
                          "estimates", igk, igl, egk + egl + 1e-12 * l1);
         /* eq. (3): the trapezoid rule on the plot's samples */
         double tr = 0, hstep = (b - a) / (n - 1);
         for (int i = 0; i + 1 < n; i++)
             tr += 0.5 * hstep * (ys[i] + ys[i + 1]);
-        mm_res_scalar(res, "integral_plot", "trapezoid rule on the plotted samples", "", tr);
+        mm_res_scalar_v1(res, "integral_plot", "trapezoid rule on the plotted samples", "", tr);
         if (egk > 1e-8 * l1)
             mm_res_warn(res, "the integral is uncertain: %.6g with an error estimate of %.2g (f changes too fast "
                         "for %d pieces of Gauss-Kronrod); shorten [a, b]", igk, egk, GK_MAX);

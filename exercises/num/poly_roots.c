@@ -92,8 +92,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     static const char *const cols[] = {"re", "im", "modulus", "err", "multiplicity"};
     static const char *const units[] = {"", "", "", "", ""};
-    mm_table *t = mm_res_table(res, "roots", nr, 5, cols, units);
-    mm_series *sz = mm_res_series(res, "roots", "roots on the complex plane", "", "Re", "", nr);
+    mm_table *t = mm_res_table_v1(res, "roots", nr, 5, cols, units);
+    mm_series *sz = mm_res_series_v1(res, "roots", "roots on the complex plane", "", "Re", "", nr);
     if (!t || !sz)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     double worst_b = 0, max_err = 0;
@@ -135,9 +135,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
     }
 
-    mm_res_scalar(res, "degree", "degree of p", "", d);
-    mm_res_scalar(res, "real_roots", "number of real roots", "", nreal);
-    mm_res_scalar(res, "max_err", "largest error estimate of a root", "", max_err);
+    mm_res_scalar_v1(res, "degree", "degree of p", "", d);
+    mm_res_scalar_v1(res, "real_roots", "number of real roots", "", nreal);
+    mm_res_scalar_v1(res, "max_err", "largest error estimate of a root", "", max_err);
 
     if (d == 0) {
         mm_res_warn(res, "p is a nonzero constant: it has no roots");
@@ -193,7 +193,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         ok = isfinite(ys[i]);
     }
     if (ok) {
-        mm_series *s = mm_res_series(res, "p", "p(x) on the real axis", "", "x", "", NP);
+        mm_series *s = mm_res_series_v1(res, "p", "p(x) on the real axis", "", "x", "", NP);
         if (!s)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");
         for (int i = 0; i < NP; i++) {

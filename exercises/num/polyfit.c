@@ -98,7 +98,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         const char *l = mm_res_strdup(res, label);
         if (!l)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-        mm_res_scalar(res, cname[k], l, "", c[k]);
+        mm_res_scalar_v1(res, cname[k], l, "", c[k]);
     }
 
     /* the same fit in the centred, scaled t = (x - mean) / spread (mean and
@@ -138,8 +138,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         xhi = fmax(xhi, x[i]);
     }
     double rms = sqrt(ss / n), magmax = mm_maxabs(mag, n), fitmax = mm_maxabs(fit, n);
-    mm_res_scalar(res, "rms_residual", "rms residual sqrt(sum r_i^2 / n)", "", rms);
-    mm_res_scalar(res, "cond", "condition number of the scaled least-squares matrix", "", info.cond);
+    mm_res_scalar_v1(res, "rms_residual", "rms residual sqrt(sum r_i^2 / n)", "", rms);
+    mm_res_scalar_v1(res, "cond", "condition number of the scaled least-squares matrix", "", info.cond);
 
     /* check 0: the coefficients c_k of powers of x, as shown, reproduce the
      * fitted values: p(x_i) evaluated from them against the fit in t, on the
@@ -232,12 +232,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* plots: the data, the fitted curve a little beyond them (in t), the
      * residuals */
-    mm_series *sd = mm_res_series(res, "data", "data points", "", "x", "", n);
+    mm_series *sd = mm_res_series_v1(res, "data", "data points", "", "x", "", n);
     enum { NP = 201 };
-    mm_series *sf = mm_res_series(res, "fit", "fitted polynomial", "", "x", "", NP);
+    mm_series *sf = mm_res_series_v1(res, "fit", "fitted polynomial", "", "x", "", NP);
     static const char *const cols[] = {"x", "y", "fit", "residual"};
     static const char *const units[] = {"", "", "", ""};
-    mm_table *tb = mm_res_table(res, "residuals", n, 4, cols, units);
+    mm_table *tb = mm_res_table_v1(res, "residuals", n, 4, cols, units);
     if (!sd || !sf || !tb)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int i = 0; i < n; i++) {

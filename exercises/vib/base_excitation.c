@@ -175,20 +175,20 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     steady(&s, &T, &X, &phase);
     double Z = s.Y * r * r * p.magnification;     /* stretch of the spring, before eq. (5) */
 
-    mm_res_scalar(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
-    mm_res_scalar(res, "zeta", "damping ratio", "", p.zeta);
-    mm_res_scalar(res, "r", "frequency ratio omega/omega_n", "", r);
-    mm_res_scalar(res, "transmissibility", "transmissibility X/Y", "", T);
-    mm_res_scalar(res, "X", "steady amplitude of the mass", "m", X);
-    mm_res_scalar(res, "phase", "lag of the mass behind the support", "rad", phase);
-    mm_res_scalar(res, "Z", "steady amplitude of the spring's stretch x - y", "m", Z);
-    mm_res_scalar(res, "force_transmitted", "amplitude of the force on the support, eq. (5)", "N",
+    mm_res_scalar_v1(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
+    mm_res_scalar_v1(res, "zeta", "damping ratio", "", p.zeta);
+    mm_res_scalar_v1(res, "r", "frequency ratio omega/omega_n", "", r);
+    mm_res_scalar_v1(res, "transmissibility", "transmissibility X/Y", "", T);
+    mm_res_scalar_v1(res, "X", "steady amplitude of the mass", "m", X);
+    mm_res_scalar_v1(res, "phase", "lag of the mass behind the support", "rad", phase);
+    mm_res_scalar_v1(res, "Z", "steady amplitude of the spring's stretch x - y", "m", Z);
+    mm_res_scalar_v1(res, "force_transmitted", "amplitude of the force on the support, eq. (5)", "N",
                   s.m * s.w * s.w * X);
-    mm_res_scalar_text(res, "isolates", "isolation (X < Y)", "", T < 1, T < 1 ? "yes" : "no");
+    mm_res_scalar_text_v1(res, "isolates", "isolation (X < Y)", "", T < 1, T < 1 ? "yes" : "no");
 
     /* ---- the response from the initial state ---- */
-    mm_series *sx = mm_res_series(res, "x", "mass displacement", "m", "t", "s", n);
-    mm_series *sy = mm_res_series(res, "y", "support displacement", "m", "t", "s", n);
+    mm_series *sx = mm_res_series_v1(res, "x", "mass displacement", "m", "t", "s", n);
+    mm_series *sy = mm_res_series_v1(res, "y", "support displacement", "m", "t", "s", n);
     if (!sx || !sy)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_linspace(0, t_end, n, sx->x);
@@ -250,7 +250,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     for (int i = 0; i < ng; i++)                 /* undamped: r = 1 itself has no value */
         if (isfinite(transmissibility(grid[i], p.zeta)))
             grid[nf++] = grid[i];
-    mm_series *st = mm_res_series(res, "T", "transmissibility X/Y of this system", "", "omega/omega_n", "", nf);
+    mm_series *st = mm_res_series_v1(res, "T", "transmissibility X/Y of this system", "", "omega/omega_n", "", nf);
     if (!st)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int i = 0; i < nf; i++) {
@@ -258,7 +258,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         st->y[i] = transmissibility(grid[i], p.zeta);
     }
     for (int k = 0; k < 2; k++) {
-        mm_series *sr = mm_res_series(res, zname[k], zlabel[k], "", "omega/omega_n", "", 400);
+        mm_series *sr = mm_res_series_v1(res, zname[k], zlabel[k], "", "omega/omega_n", "", 400);
         if (!sr)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");
         mm_linspace(0, r_max, 400, sr->x);
@@ -276,7 +276,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                             err);
         if (rc != MM_OK)
             return rc;
-        mm_res_scalar(res, "r_crossing", "frequency ratio where T = 1 (found by Brent's method)", "", rc2);
+        mm_res_scalar_v1(res, "r_crossing", "frequency ratio where T = 1 (found by Brent's method)", "", rc2);
         /* T - 1 is computed to about eps; its slope at sqrt(2) is about
          * 2.8/(1 + 8 zeta^2), so heavy damping blunts the crossing */
         mm_res_check_abs(res, "T = 1 crossing found by Brent vs sqrt(2), eq. (6)", rc2, M_SQRT2,

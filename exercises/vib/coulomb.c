@@ -320,14 +320,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     int ne = exact_arcs(&s, te, xe, sge, MAX_ARCS + 1);
     double stop_exact = ne ? te[ne - 1] : 0, xf_exact = ne ? xe[ne - 1] : s.x0;
 
-    mm_res_scalar(res, "omega_n", "natural frequency sqrt(k/m)", "rad/s", s.w);
-    mm_res_scalar(res, "friction_band", "friction band mu m g / k", "m", s.d);
-    mm_res_scalar(res, "decay_per_cycle", "amplitude lost per cycle 4 mu m g / k", "m", 4 * s.d);
+    mm_res_scalar_v1(res, "omega_n", "natural frequency sqrt(k/m)", "rad/s", s.w);
+    mm_res_scalar_v1(res, "friction_band", "friction band mu m g / k", "m", s.d);
+    mm_res_scalar_v1(res, "decay_per_cycle", "amplitude lost per cycle 4 mu m g / k", "m", 4 * s.d);
 
     /* the plot: to a little past the stop, or one period when it never moves */
     double t_plot = ne ? 1.15 * stop_exact : 2 * M_PI / s.w;
-    mm_series *sx = mm_res_series(res, "x", "displacement", "m", "t", "s", np);
-    mm_series *sv = mm_res_series(res, "v", "velocity", "m/s", "t", "s", np);
+    mm_series *sx = mm_res_series_v1(res, "x", "displacement", "m", "t", "s", np);
+    mm_series *sv = mm_res_series_v1(res, "v", "velocity", "m/s", "t", "s", np);
     if (!sx || !sv)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_linspace(0, t_plot, np, sx->x);
@@ -375,11 +375,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     double stop_time = nn ? tn[nn - 1] : 0;
 
-    mm_res_scalar(res, "stop_time", "time the mass stops for good", "s", stop_time);
-    mm_res_scalar(res, "x_final", "final position", "m", x);
-    mm_res_scalar(res, "half_cycles", "sliding arcs (half cycles) before the stop", "", nn);
-    mm_res_scalar(res, "spring_force_final", "spring force at the stop, |k x_final|", "N", fabs(s.k * x));
-    mm_res_scalar(res, "friction_limit", "largest friction force mu m g", "N", fric);
+    mm_res_scalar_v1(res, "stop_time", "time the mass stops for good", "s", stop_time);
+    mm_res_scalar_v1(res, "x_final", "final position", "m", x);
+    mm_res_scalar_v1(res, "half_cycles", "sliding arcs (half cycles) before the stop", "", nn);
+    mm_res_scalar_v1(res, "spring_force_final", "spring force at the stop, |k x_final|", "N", fabs(s.k * x));
+    mm_res_scalar_v1(res, "friction_limit", "largest friction force mu m g", "N", fric);
 
     mm_res_method(res, "dopri5 per sliding arc, velocity zero located by Brent's method", 0);
     mm_res_method_stat(res, "rtol", 1e-10);
@@ -393,8 +393,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* the rests: time, place, and the spring force against the friction limit */
     static const char *const cols[] = {"t", "x", "spring_over_friction"};
     static const char *const units[] = {"s", "m", ""};
-    mm_table *tab = mm_res_table(res, "rests", nn, 3, cols, units);
-    mm_series *amp = mm_res_series(res, "amplitude", "distance from x = 0 at each rest", "m", "t", "s",
+    mm_table *tab = mm_res_table_v1(res, "rests", nn, 3, cols, units);
+    mm_series *amp = mm_res_series_v1(res, "amplitude", "distance from x = 0 at each rest", "m", "t", "s",
                                    nn + 1);
     if (!tab || !amp)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");

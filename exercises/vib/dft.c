@@ -151,7 +151,7 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
     }
     static const char *const cols[] = {"f", "amplitude"};
     static const char *const units[] = {"Hz", ""};
-    mm_table *tab = mm_res_table(res, "peaks", np, 2, cols, units);
+    mm_table *tab = mm_res_table_v1(res, "peaks", np, 2, cols, units);
     if (!tab)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int i = 0; i < np; i++) {
@@ -179,17 +179,17 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
     double leakage = total > 0 ? fmax(0, 1 - near / total) : 0;
 
     /* ---- scalars ---- */
-    mm_res_scalar(res, "df", "frequency resolution fs/N (bin spacing)", "Hz", fs / (double)n);
-    mm_res_scalar(res, "nyquist", "Nyquist frequency fs/2", "Hz", fs / 2);
-    mm_res_scalar(res, "duration", "record length N/fs", "s", (double)n / fs);
+    mm_res_scalar_v1(res, "df", "frequency resolution fs/N (bin spacing)", "Hz", fs / (double)n);
+    mm_res_scalar_v1(res, "nyquist", "Nyquist frequency fs/2", "Hz", fs / 2);
+    mm_res_scalar_v1(res, "duration", "record length N/fs", "s", (double)n / fs);
     if (np > 0) {
-        mm_res_scalar(res, "peak_frequency", "frequency of the largest peak", "Hz", freq[pk[0]]);
-        mm_res_scalar(res, "peak_amplitude", "amplitude of the largest peak", "", amp[pk[0]]);
+        mm_res_scalar_v1(res, "peak_frequency", "frequency of the largest peak", "Hz", freq[pk[0]]);
+        mm_res_scalar_v1(res, "peak_amplitude", "amplitude of the largest peak", "", amp[pk[0]]);
     }
-    mm_res_scalar(res, "leakage",
+    mm_res_scalar_v1(res, "leakage",
                   "share of the power more than 2 bins from every peak (local maximum above 1e-3 of the largest)",
                   "", leakage);
-    mm_res_scalar(res, "coherent_gain", "window coherent gain (divided out)", "", gain);
+    mm_res_scalar_v1(res, "coherent_gain", "window coherent gain (divided out)", "", gain);
 
     /* ---- checks ---- */
     /* Parseval, eq. (4): sum (w x)^2 = N g^2 [a_0^2 + sum a_k^2 / 2 + a_{N/2}^2] */
@@ -278,9 +278,9 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
                             fs / 2, f, hi, 100 * above, fs, fa, 2 * f);
             }
         }
-        mm_res_scalar(res, "alias_check_up_to", "highest frequency the aliasing test can see (R fs / 2)", "Hz",
+        mm_res_scalar_v1(res, "alias_check_up_to", "highest frequency the aliasing test can see (R fs / 2)", "Hz",
                       R * fs / 2);
-        mm_res_scalar(res, "above_nyquist", "share of the power above fs/2 (from the finer sampling)", "", above);
+        mm_res_scalar_v1(res, "above_nyquist", "share of the power above fs/2 (from the finer sampling)", "", above);
     } else {
         mm_res_warn(res, "aliasing not tested: the expression is long and N large (the finer sampling would "
                          "take too long); lower N to test it");
@@ -294,7 +294,7 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
 
     /* ---- series ---- */
     size_t group = (nb + PLOT_BINS - 1) / PLOT_BINS, ns = (nb + group - 1) / group;
-    mm_series *sa = mm_res_series(res, "amplitude", "single-sided amplitude", "", "f", "Hz", (int)ns);
+    mm_series *sa = mm_res_series_v1(res, "amplitude", "single-sided amplitude", "", "f", "Hz", (int)ns);
     if (!sa)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (size_t g = 0; g < ns; g++) {                 /* the largest bin of each group */
@@ -309,8 +309,8 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
         mm_res_warn(res, "the amplitude plot shows the largest of every %zu bins (%zu bins in all)", group, nb);
 
     size_t nshow = n < SHOW_SAMPLES ? n : SHOW_SAMPLES, nfine = 8 * (nshow - 1) + 1;
-    mm_series *sx = mm_res_series(res, "samples", "samples x_j", "", "t", "s", (int)nshow);
-    mm_series *sf = mm_res_series(res, "signal", "x(t) between the samples", "", "t", "s", (int)nfine);
+    mm_series *sx = mm_res_series_v1(res, "samples", "samples x_j", "", "t", "s", (int)nshow);
+    mm_series *sf = mm_res_series_v1(res, "signal", "x(t) between the samples", "", "t", "s", (int)nfine);
     if (!sx || !sf)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     memcpy(sx->x, t, nshow * sizeof *t);

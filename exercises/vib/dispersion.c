@@ -204,10 +204,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- the packet at 0 and at t on the plot grid ---- */
     int np = (int)ceil(8 * L / lambda) + 1;
     np = np < 501 ? 501 : np > 2001 ? 2001 : np;
-    mm_series *s0 = mm_res_series(res, "u0", "packet at t = 0", "m", "x", "m", np);
-    mm_series *st = mm_res_series(res, "u", "packet at time t", "m", "x", "m", np);
-    mm_series *e0 = mm_res_series(res, "envelope0", "envelope at t = 0", "m", "x", "m", np);
-    mm_series *et = mm_res_series(res, "envelope", "envelope at time t", "m", "x", "m", np);
+    mm_series *s0 = mm_res_series_v1(res, "u0", "packet at t = 0", "m", "x", "m", np);
+    mm_series *st = mm_res_series_v1(res, "u", "packet at time t", "m", "x", "m", np);
+    mm_series *e0 = mm_res_series_v1(res, "envelope0", "envelope at t = 0", "m", "x", "m", np);
+    mm_series *et = mm_res_series_v1(res, "envelope", "envelope at time t", "m", "x", "m", np);
     double complex *p0 = mm_res_alloc(res, sizeof *p0 * (size_t)np), *pt = mm_res_alloc(res, sizeof *pt * (size_t)np);
     if (!s0 || !st || !e0 || !et || !p0 || !pt)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
@@ -232,8 +232,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double speed = (xct - xc0) / t;
 
     /* ---- dispersion curves: phase and group velocity against k ---- */
-    mm_series *vp = mm_res_series(res, "phase_velocity", "phase velocity omega/k", "m/s", "k", "rad/m", 201);
-    mm_series *vg = mm_res_series(res, "group_velocity", "group velocity d omega/dk", "m/s", "k", "rad/m", 201);
+    mm_series *vp = mm_res_series_v1(res, "phase_velocity", "phase velocity omega/k", "m/s", "k", "rad/m", 201);
+    mm_series *vg = mm_res_series_v1(res, "group_velocity", "group velocity d omega/dk", "m/s", "k", "rad/m", 201);
     if (!vp || !vg)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_linspace(0, 2.5 * w.k0, 201, vp->x);
@@ -245,19 +245,19 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* ---- scalars ---- */
-    mm_res_scalar(res, "k0", "carrier wavenumber 2 pi / wavelength", "rad/m", w.k0);
-    mm_res_scalar(res, "omega0", "carrier angular frequency omega(k0)", "rad/s", w0);
-    mm_res_scalar(res, "f0", "carrier frequency", "Hz", w0 / (2 * M_PI));
-    mm_res_scalar(res, "phase_velocity", "phase velocity omega/k at k0", "m/s", cp);
-    mm_res_scalar(res, "group_velocity", "group velocity d omega/dk at k0", "m/s", cg);
-    mm_res_scalar(res, "ratio", "group / phase velocity", "", cg / cp);
-    mm_res_scalar(res, "centre_speed", "speed of the envelope's centroid (measured)", "m/s", speed);
-    mm_res_scalar(res, "travel", "distance the packet travelled", "m", xct - xc0);
-    mm_res_scalar(res, "crest_slip", "wavelengths the crests slip through the envelope, (c_g - c_p) t / wavelength", "",
+    mm_res_scalar_v1(res, "k0", "carrier wavenumber 2 pi / wavelength", "rad/m", w.k0);
+    mm_res_scalar_v1(res, "omega0", "carrier angular frequency omega(k0)", "rad/s", w0);
+    mm_res_scalar_v1(res, "f0", "carrier frequency", "Hz", w0 / (2 * M_PI));
+    mm_res_scalar_v1(res, "phase_velocity", "phase velocity omega/k at k0", "m/s", cp);
+    mm_res_scalar_v1(res, "group_velocity", "group velocity d omega/dk at k0", "m/s", cg);
+    mm_res_scalar_v1(res, "ratio", "group / phase velocity", "", cg / cp);
+    mm_res_scalar_v1(res, "centre_speed", "speed of the envelope's centroid (measured)", "m/s", speed);
+    mm_res_scalar_v1(res, "travel", "distance the packet travelled", "m", xct - xc0);
+    mm_res_scalar_v1(res, "crest_slip", "wavelengths the crests slip through the envelope, (c_g - c_p) t / wavelength", "",
                   (cg - cp) * t / lambda);
-    mm_res_scalar(res, "width0", "r.m.s. width of the envelope at t = 0 (measured)", "m", wd0);
-    mm_res_scalar(res, "width", "r.m.s. width of the envelope at t (measured)", "m", wdt);
-    mm_res_scalar(res, "spread", "width at t / width at 0", "", wdt / wd0);
+    mm_res_scalar_v1(res, "width0", "r.m.s. width of the envelope at t = 0 (measured)", "m", wd0);
+    mm_res_scalar_v1(res, "width", "r.m.s. width of the envelope at t (measured)", "m", wdt);
+    mm_res_scalar_v1(res, "spread", "width at t / width at 0", "", wdt / wd0);
 
     /* ---- checks ---- */
     double tol_u = 1e-9 * w.A;

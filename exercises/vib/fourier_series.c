@@ -147,7 +147,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* table of coefficients, eq. (5) */
     static const char *const cols[] = {"k", "a_k", "b_k"};
     static const char *const units[] = {"", "", ""};
-    mm_table *tab = mm_res_table(res, "coefficients", K + 1, 3, cols, units);
+    mm_table *tab = mm_res_table_v1(res, "coefficients", K + 1, 3, cols, units);
     if (!tab)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     double worst = 0, tol_coef = 0;
@@ -212,14 +212,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     const char *ov_label = wave == W_TRIANGLE
                                ? "overshoot max S_K - A (negative: the corner is rounded off, no overshoot)"
                                : "Gibbs overshoot max S_K - A";
-    mm_res_scalar(res, "overshoot", ov_label, "", overshoot);
+    mm_res_scalar_v1(res, "overshoot", ov_label, "", overshoot);
     if (jump > 0)
-        mm_res_scalar(res, "overshoot_fraction", "overshoot / jump", "", overshoot / jump);
-    mm_res_scalar(res, "t_max", "time of the maximum of S_K", "s", t_max);
+        mm_res_scalar_v1(res, "overshoot_fraction", "overshoot / jump", "", overshoot / jump);
+    mm_res_scalar_v1(res, "t_max", "time of the maximum of S_K", "s", t_max);
     double G = si_pi() / M_PI - 0.5;
-    mm_res_scalar(res, "gibbs_constant", "Gibbs constant Si(pi)/pi - 1/2 (limit of overshoot/jump)", "", G);
-    mm_res_scalar(res, "samples", "samples per period N", "", (double)N);
-    mm_res_scalar(res, "omega", "fundamental angular frequency 2 pi / T", "rad/s", 2 * M_PI / T);
+    mm_res_scalar_v1(res, "gibbs_constant", "Gibbs constant Si(pi)/pi - 1/2 (limit of overshoot/jump)", "", G);
+    mm_res_scalar_v1(res, "samples", "samples per period N", "", (double)N);
+    mm_res_scalar_v1(res, "omega", "fundamental angular frequency 2 pi / T", "rad/s", 2 * M_PI / T);
 
     /* ---- checks ---- */
     mm_res_check_abs(res, "coefficients: FFT of a sampled period vs the closed forms (6)-(8), worst |error|",
@@ -261,12 +261,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- series: one period, and a zoom on the jump (or the corner) ---- */
     int np = 16 * (K + 1) + 1;
     np = np < 1001 ? 1001 : np > 2001 ? 2001 : np;
-    mm_series *sf = mm_res_series(res, "wave", "the wave f(t)", "", "t", "s", np);
-    mm_series *ss = mm_res_series(res, "partial_sum", "partial sum S_K(t)", "", "t", "s", np);
+    mm_series *sf = mm_res_series_v1(res, "wave", "the wave f(t)", "", "t", "s", np);
+    mm_series *ss = mm_res_series_v1(res, "partial_sum", "partial sum S_K(t)", "", "t", "s", np);
     double half = fmin(T / 2, 6.0 * T / (K + 1));  /* six ripples either side */
     int nz = 601;
-    mm_series *zf = mm_res_series(res, "wave_zoom", "the wave near t = 0", "", "t", "s", nz);
-    mm_series *zs = mm_res_series(res, "partial_sum_zoom", "S_K(t) near t = 0", "", "t", "s", nz);
+    mm_series *zf = mm_res_series_v1(res, "wave_zoom", "the wave near t = 0", "", "t", "s", nz);
+    mm_series *zs = mm_res_series_v1(res, "partial_sum_zoom", "S_K(t) near t = 0", "", "t", "s", nz);
     if (!sf || !ss || !zf || !zs)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_linspace(-T / 2, T / 2, np, sf->x);

@@ -293,19 +293,19 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* ---- scalars ---- */
-    mm_res_scalar(res, "area", "pulse area X(0) = int x dt (FFT)", "s", re[0]);
+    mm_res_scalar_v1(res, "area", "pulse area X(0) = int x dt (FFT)", "s", re[0]);
     if (pulse == PU_GAUSS) {
-        mm_res_scalar(res, "half_amplitude_frequency", "frequency where |X| falls to half of X(0)", "Hz", fz);
-        mm_res_scalar(res, "half_amplitude_times_duration", "that frequency times the duration", "", fz * tau);
+        mm_res_scalar_v1(res, "half_amplitude_frequency", "frequency where |X| falls to half of X(0)", "Hz", fz);
+        mm_res_scalar_v1(res, "half_amplitude_times_duration", "that frequency times the duration", "", fz * tau);
     } else {
-        mm_res_scalar(res, "first_zero", "first zero of the spectrum", "Hz", fz);
-        mm_res_scalar(res, "first_zero_times_duration", "first zero times the duration", "", fz * tau);
+        mm_res_scalar_v1(res, "first_zero", "first zero of the spectrum", "Hz", fz);
+        mm_res_scalar_v1(res, "first_zero_times_duration", "first zero times the duration", "", fz * tau);
     }
-    mm_res_scalar(res, "df", "frequency step fs/N", "Hz", fs / (double)n);
-    mm_res_scalar(res, "window", "window length N/fs", "s", (double)n / fs);
-    mm_res_scalar(res, "max_error_band", "largest |FFT - exact| below the band edge, relative to X(0)", "",
+    mm_res_scalar_v1(res, "df", "frequency step fs/N", "Hz", fs / (double)n);
+    mm_res_scalar_v1(res, "window", "window length N/fs", "s", (double)n / fs);
+    mm_res_scalar_v1(res, "max_error_band", "largest |FFT - exact| below the band edge, relative to X(0)", "",
                   worst / X0);
-    mm_res_scalar(res, "band", "band edge of the check: min(fs/4, 10/duration)", "Hz", f_band);
+    mm_res_scalar_v1(res, "band", "band edge of the check: min(fs/4, 10/duration)", "Hz", f_band);
 
     /* ---- checks ---- */
     mm_res_check_abs(res, pulse == PU_RECT
@@ -327,9 +327,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     while (nplot < nb && freq[nplot] <= f_plot)
         nplot++;
     long stride = (nplot + PLOT_MAX - 1) / PLOT_MAX, np = (nplot + stride - 1) / stride;
-    mm_series *sn = mm_res_series(res, "magnitude", "|X(f)| by FFT", "s", "f", "Hz", (int)np);
-    mm_series *se = mm_res_series(res, "magnitude_exact", "|X(f)| exact", "s", "f", "Hz", 1001);
-    mm_series *sp = mm_res_series(res, "pulse", "the pulse x(t)", "", "t", "s", 501);
+    mm_series *sn = mm_res_series_v1(res, "magnitude", "|X(f)| by FFT", "s", "f", "Hz", (int)np);
+    mm_series *se = mm_res_series_v1(res, "magnitude_exact", "|X(f)| exact", "s", "f", "Hz", 1001);
+    mm_series *sp = mm_res_series_v1(res, "pulse", "the pulse x(t)", "", "t", "s", 501);
     if (!sn || !se || !sp)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (long i = 0; i < np; i++) {

@@ -214,31 +214,31 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- the first damping ratio: the numbers of a worked solution ---- */
     double z0 = zv->data[0];
     const peak *p0 = &pk[0];
-    mm_res_scalar(res, "zeta", "damping ratio of the first curve", "", z0);
-    mm_res_scalar(res, "Q", "quality factor 1/(2 zeta)", "", 1 / (2 * z0));
+    mm_res_scalar_v1(res, "zeta", "damping ratio of the first curve", "", z0);
+    mm_res_scalar_v1(res, "Q", "quality factor 1/(2 zeta)", "", 1 / (2 * z0));
     if (p0->has_peak) {
-        mm_res_scalar(res, "peak_r", "peak frequency ratio sqrt(1 - 2 zeta^2)", "", p0->r_p);
-        mm_res_scalar(res, "peak_omega", "peak frequency omega_n sqrt(1 - 2 zeta^2)", "rad/s", wn * p0->r_p);
-        mm_res_scalar(res, "peak_height", "peak magnification 1/(2 zeta sqrt(1 - zeta^2))", "", p0->H_p);
-        mm_res_scalar(res, "peak_omega_found", "peak frequency found by golden-section search", "rad/s",
+        mm_res_scalar_v1(res, "peak_r", "peak frequency ratio sqrt(1 - 2 zeta^2)", "", p0->r_p);
+        mm_res_scalar_v1(res, "peak_omega", "peak frequency omega_n sqrt(1 - 2 zeta^2)", "rad/s", wn * p0->r_p);
+        mm_res_scalar_v1(res, "peak_height", "peak magnification 1/(2 zeta sqrt(1 - zeta^2))", "", p0->H_p);
+        mm_res_scalar_v1(res, "peak_omega_found", "peak frequency found by golden-section search", "rad/s",
                       wn * p0->r_found);
         if (p0->has_lower) {
-            mm_res_scalar(res, "bandwidth", "half-power bandwidth (exact, eq. 5)", "rad/s",
+            mm_res_scalar_v1(res, "bandwidth", "half-power bandwidth (exact, eq. 5)", "rad/s",
                           wn * (p0->r2 - p0->r1));
-            mm_res_scalar(res, "bandwidth_approx", "half-power bandwidth, approximation 2 zeta omega_n", "rad/s",
+            mm_res_scalar_v1(res, "bandwidth_approx", "half-power bandwidth, approximation 2 zeta omega_n", "rad/s",
                           2 * z0 * wn);
         }
     } else {
-        mm_res_scalar_text(res, "peak_r", "peak frequency ratio", "", 0,
+        mm_res_scalar_text_v1(res, "peak_r", "peak frequency ratio", "", 0,
                            "no resonance peak: zeta >= 1/sqrt(2), |H| falls from r = 0");
     }
-    mm_res_scalar(res, "phase_at_resonance", "phase lag at omega = omega_n", "rad", phase(1, z0));
+    mm_res_scalar_v1(res, "phase_at_resonance", "phase lag at omega = omega_n", "rad", phase(1, z0));
 
     /* ---- the table of peaks ---- */
     static const char *const cols[] = {"zeta", "r_peak", "r_peak_found", "H_peak", "H_peak_found",
                                        "bandwidth", "bandwidth_approx"};
     static const char *const units[] = {"", "", "", "", "", "rad/s", "rad/s"};
-    mm_table *tab = mm_res_table(res, "peaks", nz, 7, cols, units);
+    mm_table *tab = mm_res_table_v1(res, "peaks", nz, 7, cols, units);
     if (!tab)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int k = 0; k < nz; k++) {
@@ -271,11 +271,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         char name[32], label[64];
         snprintf(name, sizeof name, "amplitude_%d", k + 1);
         snprintf(label, sizeof label, "|H| = X/(F0/k), zeta = %g", z);
-        mm_series *sa = mm_res_series(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "",
+        mm_series *sa = mm_res_series_v1(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "",
                                       "omega/omega_n", "", ng);
         snprintf(name, sizeof name, "phase_%d", k + 1);
         snprintf(label, sizeof label, "phase lag, zeta = %g", z);
-        mm_series *sp = mm_res_series(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "rad",
+        mm_series *sp = mm_res_series_v1(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "rad",
                                       "omega/omega_n", "", ng);
         if (!sa || !sp)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");

@@ -166,24 +166,24 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* ---- scalars ---- */
     if (dw > 0) {
-        mm_res_scalar(res, "beat_period", "beat period 2 pi / |omega1 - omega2|", "s", 2 * M_PI / dw);
-        mm_res_scalar(res, "beat_frequency", "beat frequency |omega1 - omega2| / (2 pi)", "Hz", dw / (2 * M_PI));
+        mm_res_scalar_v1(res, "beat_period", "beat period 2 pi / |omega1 - omega2|", "s", 2 * M_PI / dw);
+        mm_res_scalar_v1(res, "beat_frequency", "beat frequency |omega1 - omega2| / (2 pi)", "Hz", dw / (2 * M_PI));
     }
-    mm_res_scalar(res, "carrier_omega", "mean angular frequency (omega1 + omega2)/2", "rad/s", wm);
-    mm_res_scalar(res, "envelope_max", "largest envelope A1 + A2", "m", Emax);
-    mm_res_scalar(res, "envelope_min", "smallest envelope |A1 - A2|", "m", Emin);
+    mm_res_scalar_v1(res, "carrier_omega", "mean angular frequency (omega1 + omega2)/2", "rad/s", wm);
+    mm_res_scalar_v1(res, "envelope_max", "largest envelope A1 + A2", "m", Emax);
+    mm_res_scalar_v1(res, "envelope_min", "smallest envelope |A1 - A2|", "m", Emin);
     /* the text must outlive solve: a copy in the arena */
-    mm_res_scalar_text(res, "periodic", "is the sum periodic?", "", periodic, mm_res_strdup(res, ptext));
+    mm_res_scalar_text_v1(res, "periodic", "is the sum periodic?", "", periodic, mm_res_strdup(res, ptext));
     if (periodic)
-        mm_res_scalar(res, "period", "period of the sum", "s", Tp);
+        mm_res_scalar_v1(res, "period", "period of the sum", "s", Tp);
 
     /* ---- series ---- */
-    mm_series *sx = mm_res_series(res, "x", "x1 + x2", "m", "t", "s", n);
-    mm_series *se = mm_res_series(res, "envelope", "envelope +E(t)", "m", "t", "s", n);
-    mm_series *sl = mm_res_series(res, "envelope_lower", "envelope -E(t)", "m", "t", "s", n);
-    mm_series *s1 = mm_res_series(res, "x1", "first harmonic x1", "m", "t", "s", n);
-    mm_series *s2 = mm_res_series(res, "x2", "second harmonic x2", "m", "t", "s", n);
-    mm_series *lj = mm_res_series(res, "lissajous", "Lissajous figure: x2 against x1", "m", "x1", "m", n);
+    mm_series *sx = mm_res_series_v1(res, "x", "x1 + x2", "m", "t", "s", n);
+    mm_series *se = mm_res_series_v1(res, "envelope", "envelope +E(t)", "m", "t", "s", n);
+    mm_series *sl = mm_res_series_v1(res, "envelope_lower", "envelope -E(t)", "m", "t", "s", n);
+    mm_series *s1 = mm_res_series_v1(res, "x1", "first harmonic x1", "m", "t", "s", n);
+    mm_series *s2 = mm_res_series_v1(res, "x2", "second harmonic x2", "m", "t", "s", n);
+    mm_series *lj = mm_res_series_v1(res, "lissajous", "Lissajous figure: x2 against x1", "m", "x1", "m", n);
     if (!sx || !se || !sl || !s1 || !s2 || !lj)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_linspace(0, t_end, n, sx->x);
@@ -255,8 +255,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method_stat(res, "peaks", np);
     mm_res_method_stat(res, "evaluations", (double)rr.nevals);
     if (np > 0) {
-        mm_res_scalar(res, "peak_max", "highest carrier peak (measured)", "m", pmax);
-        mm_res_scalar(res, "peak_min", "lowest carrier peak (measured)", "m", pmin);
+        mm_res_scalar_v1(res, "peak_max", "highest carrier peak (measured)", "m", pmax);
+        mm_res_scalar_v1(res, "peak_min", "lowest carrier peak (measured)", "m", pmin);
         mm_res_check_abs(res, "carrier peaks never rise above the envelope (4): worst excess [m]", fmax(0, excess), 0,
                          tol_form);
     }
@@ -295,7 +295,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             regular = 0;
     if (regular) {
         double Tm = (tmin[nm - 1] - tmin[0]) / (nm - 1);
-        mm_res_scalar(res, "beat_period_measured", "beat period measured between envelope minima", "s", Tm);
+        mm_res_scalar_v1(res, "beat_period_measured", "beat period measured between envelope minima", "s", Tm);
         /* each bottom is placed to within half a carrier period */
         mm_res_check_abs(res, "beat period: measured between envelope minima vs 2 pi/|omega1 - omega2| [s]", Tm, Tb,
                          Tc / (nm - 1));

@@ -443,7 +443,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     pb.buf_y = pb.buf_x + MAX_STEPS + 2;
 
     /* the exact motion, and its size */
-    mm_series *sx = mm_res_series(res, "x_exact", "exact displacement", "m", "t", "s", 2 * PLOT + 1);
+    mm_series *sx = mm_res_series_v1(res, "x_exact", "exact displacement", "m", "t", "s", 2 * PLOT + 1);
     if (!sx)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_linspace(0, t_end, 2 * PLOT + 1, sx->x);
@@ -453,18 +453,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* the fixed-step methods take N = ceil(t_end / h) equal steps */
     double h_taken = step_taken(t_end, h);
-    mm_res_scalar(res, "omega_n", "natural frequency", "rad/s", wn);
-    mm_res_scalar(res, "h_taken", "step the fixed-step methods take, t_end / ceil(t_end / h)", "s", h_taken);
-    mm_res_scalar(res, "omega_n_h", "omega_n h: radians per step the fixed-step methods take", "", wn * h_taken);
-    mm_res_scalar(res, "h_stable_explicit",
+    mm_res_scalar_v1(res, "omega_n", "natural frequency", "rad/s", wn);
+    mm_res_scalar_v1(res, "h_taken", "step the fixed-step methods take, t_end / ceil(t_end / h)", "s", h_taken);
+    mm_res_scalar_v1(res, "omega_n_h", "omega_n h: radians per step the fixed-step methods take", "", wn * h_taken);
+    mm_res_scalar_v1(res, "h_stable_explicit",
                   "stability limit of central difference (and of Verlet without damping), 2/omega_n", "s", 2 / wn);
-    mm_res_scalar(res, "amplitude", "largest |x| of the exact motion", "m", pb.scale);
+    mm_res_scalar_v1(res, "amplitude", "largest |x| of the exact motion", "m", pb.scale);
 
     /* ---- the table: each method at the chosen h or rtol ---- */
     static const char *const cols[] = {"method", "order", "step", "steps", "evaluations", "rejected",
                                        "max_error", "relative_error"};
     static const char *const units[] = {"", "", "s", "", "", "", "m", ""};
-    mm_table *tab = mm_res_table(res, "methods", NM, 8, cols, units);
+    mm_table *tab = mm_res_table_v1(res, "methods", NM, 8, cols, units);
     if (!tab)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     long total_evals = 0;
@@ -511,7 +511,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             char name[48];
             snprintf(name, sizeof name, "x_%s", mname[m]);
             int stride = (o.n + PLOT - 1) / PLOT, ns = (o.n - 1) / stride + 1;
-            mm_series *sm = mm_res_series(res, mm_res_strdup(res, name), mname[m], "m", "t", "s", ns);
+            mm_series *sm = mm_res_series_v1(res, mm_res_strdup(res, name), mname[m], "m", "t", "s", ns);
             if (!sm)
                 return mm_error_set(err, MM_ENOMEM, "", "out of memory");
             for (int i = 0; i < ns; i++) {
@@ -530,7 +530,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * motion (long runs would leave no room for fine steps) ---- */
     double t_sw = fmin(t_end, 20 * 2 * M_PI / wmax);
     double h0 = fmin(0.5 / wmax, t_sw / 8);
-    mm_res_scalar(res, "t_sweep", "time span of the work-precision sweeps", "s", t_sw);
+    mm_res_scalar_v1(res, "t_sweep", "time span of the work-precision sweeps", "s", t_sw);
     double order[NM] = {0};
     int order_pts[NM] = {0};
     for (int m = 0; m < NM; m++) {
@@ -557,7 +557,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         char name[48], label[96];
         snprintf(name, sizeof name, "work_%s", mname[m]);
         snprintf(label, sizeof label, "max error against evaluations, %s", mname[m]);
-        mm_series *sw = mm_res_series(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "m",
+        mm_series *sw = mm_res_series_v1(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "m",
                                       "evaluations", "", n);
         if (!sw)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");
@@ -568,7 +568,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (m <= M_RK4) {
             snprintf(name, sizeof name, "step_%s", mname[m]);
             snprintf(label, sizeof label, "max error against step, %s", mname[m]);
-            mm_series *sh = mm_res_series(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "m", "h",
+            mm_series *sh = mm_res_series_v1(res, mm_res_strdup(res, name), mm_res_strdup(res, label), "m", "h",
                                           "s", n);
             if (!sh)
                 return mm_error_set(err, MM_ENOMEM, "", "out of memory");
@@ -589,7 +589,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     for (int m = 0; m <= M_RK4; m++) {
         if (order_pts[m] < 3)
             continue;
-        mm_res_scalar(res, oname[m], "observed order (slope of log error against log h)", "", order[m]);
+        mm_res_scalar_v1(res, oname[m], "observed order (slope of log error against log h)", "", order[m]);
         if (m == M_VERLET && zeta > 0)
             continue;
         int expect = morder[m];
@@ -612,7 +612,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                                           "relative energy error, RK4"};
     energy_run er[3];
     for (int j = 0; j < 3; j++) {
-        mm_series *se = mm_res_series(res, ename[j], elabel[j], "", "t/T", "periods", PLOT + 2);
+        mm_series *se = mm_res_series_v1(res, ename[j], elabel[j], "", "t/T", "periods", PLOT + 2);
         if (!se)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");
         if ((rc = energy_view(em[j], wn, hE, N, stride, se, &er[j], tb, xb, vb, res, err)) != MM_OK)
@@ -620,9 +620,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         total_evals += em[j] == M_RK4 ? 4 * N : N;
     }
     double y = wn * hE, a = y * y / 4;
-    mm_res_scalar(res, "energy_drift_rk4", "RK4: relative energy change after the run", "", er[2].drift_end);
-    mm_res_scalar(res, "energy_error_verlet", "Verlet: largest relative energy error", "", er[1].worst);
-    mm_res_scalar(res, "energy_error_newmark", "average acceleration: largest relative energy error", "",
+    mm_res_scalar_v1(res, "energy_drift_rk4", "RK4: relative energy change after the run", "", er[2].drift_end);
+    mm_res_scalar_v1(res, "energy_error_verlet", "Verlet: largest relative energy error", "", er[1].worst);
+    mm_res_scalar_v1(res, "energy_error_newmark", "average acceleration: largest relative energy error", "",
                   er[0].worst);
     /* RK4 maps (omega x, v) by a rotation-and-scaling: the energy is
      * multiplied by exactly |R(i omega h)|^2 each step, eq. (7) */

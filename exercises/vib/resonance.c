@@ -174,26 +174,26 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     int n = (int)in[P_POINTS].x;
     double rate_theory = s.F0 / (2 * s.m * p.omega_n);
 
-    mm_res_scalar(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
-    mm_res_scalar(res, "omega", "forcing frequency", "rad/s", s.omega);
-    mm_res_scalar(res, "zeta", "damping ratio", "", p.zeta);
-    mm_res_scalar(res, "growth_rate_theory", "initial growth of the envelope F0/(2 m omega_n)", "m/s",
+    mm_res_scalar_v1(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
+    mm_res_scalar_v1(res, "omega", "forcing frequency", "rad/s", s.omega);
+    mm_res_scalar_v1(res, "zeta", "damping ratio", "", p.zeta);
+    mm_res_scalar_v1(res, "growth_rate_theory", "initial growth of the envelope F0/(2 m omega_n)", "m/s",
                   rate_theory);
     if (!p.resonant) {
-        mm_res_scalar(res, "X", "steady amplitude", "m", p.X);
-        mm_res_scalar(res, "magnification", "dynamic magnification X/(F0/k)", "", p.magnification);
+        mm_res_scalar_v1(res, "X", "steady amplitude", "m", p.X);
+        mm_res_scalar_v1(res, "magnification", "dynamic magnification X/(F0/k)", "", p.magnification);
     } else {
-        mm_res_scalar_text(res, "X", "steady amplitude", "m", 0, "none: the amplitude grows without bound");
+        mm_res_scalar_text_v1(res, "X", "steady amplitude", "m", 0, "none: the amplitude grows without bound");
     }
     if (p.zeta > 0)
-        mm_res_scalar(res, "tau", "time constant of the build-up 1/(zeta omega_n)", "s",
+        mm_res_scalar_v1(res, "tau", "time constant of the build-up 1/(zeta omega_n)", "s",
                       1 / (p.zeta * p.omega_n));
     if (delta != 0)
-        mm_res_scalar(res, "beat_period", "beat period 2 pi/|omega_n - omega|", "s", 2 * M_PI / fabs(delta));
+        mm_res_scalar_v1(res, "beat_period", "beat period 2 pi/|omega_n - omega|", "s", 2 * M_PI / fabs(delta));
 
     /* ---- the response from rest, checked against the closed form ---- */
-    mm_series *sx = mm_res_series(res, "x", "displacement", "m", "t", "s", n);
-    mm_series *se = mm_res_series(res, "envelope", "envelope of the build-up, eq. (6)", "m", "t", "s", n);
+    mm_series *sx = mm_res_series_v1(res, "x", "displacement", "m", "t", "s", n);
+    mm_series *se = mm_res_series_v1(res, "envelope", "envelope of the build-up, eq. (6)", "m", "t", "s", n);
     if (!sx || !se)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_linspace(0, t_end, n, sx->x);
@@ -256,7 +256,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (rc != MM_OK)
             return rc;
         if (np >= 4) {
-            mm_res_scalar(res, "growth_rate", "initial growth of the envelope, measured from the peaks", "m/s",
+            mm_res_scalar_v1(res, "growth_rate", "initial growth of the envelope, measured from the peaks", "m/s",
                           rate);
             mm_res_check_rel(res, "envelope growth: measured from the peaks vs F0/(m (omega_n + omega)), eq. (7)",
                              rate, ref, 0.01);
@@ -286,7 +286,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         rc = measure_final(&s, &p, t_end, &amp, res, err);
         if (rc != MM_OK)
             return rc;
-        mm_res_scalar(res, "amplitude_final", "amplitude over the last two periods, measured", "m", amp);
+        mm_res_scalar_v1(res, "amplitude_final", "amplitude over the last two periods, measured", "m", amp);
         /* after 20 time constants of the slowest free motion the transient is
          * below (1 + 20) e^-20 = 4e-8 of its start, also near critical damping
          * (overdamped: the slow rate omega_n / (zeta + sqrt(zeta^2 - 1))) */

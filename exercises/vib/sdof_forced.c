@@ -14,6 +14,7 @@
 #include <math.h>
 
 #include "mm_exhelp.h"
+#include "mm_scene.h"
 
 enum { P_M, P_K, P_C, P_F0, P_OMEGA, P_X0, P_V0, P_TEND, P_POINTS };
 
@@ -31,6 +32,21 @@ static const mm_param params[] = {
                 .help = "simulated time; at most 1e4 radians of the fastest motion"},
     [P_POINTS] = {"points", "plot points", "", MM_INT, 501, 11, 4001,
                   .help = "samples of the time response returned for the plot"},
+};
+
+enum { O_OMEGA_N, O_ZETA, O_X, O_PHASE, O_MAGNIFICATION, O_R, O_REGIME, O_XT, O_ANIM };
+
+static const mm_output outputs[] = {
+    [O_OMEGA_N] = MM_SCALAR("omega_n", "natural frequency", "rad/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_ZETA] = MM_SCALAR("zeta", "damping ratio", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_X] = MM_SCALAR("X", "steady amplitude", "m", .flags = MM_ANSWER | MM_EXACT),
+    [O_PHASE] = MM_SCALAR("phase", "phase lag", "rad", .flags = MM_ANSWER | MM_EXACT),
+    [O_MAGNIFICATION] = MM_SCALAR("magnification", "dynamic magnification X/(F0/k)", "",
+                                  .flags = MM_ANSWER | MM_EXACT),
+    [O_R] = MM_SCALAR("r", "frequency ratio omega/omega_n", "", .flags = MM_EXACT),
+    [O_REGIME] = MM_SCALAR("regime", "damping regime", "", .flags = MM_EXACT),
+    [O_XT] = MM_SERIES("x", "displacement", "m", "t", "s"),
+    [O_ANIM] = MM_ANIMATION("the mass on its spring and damper, driven by the force"),
 };
 
 static mm_sdof model(const mm_value *in)
@@ -79,6 +95,50 @@ static int measure_steady(const mm_sdof *s, const mm_sdof_props *p, mm_result *r
     return MM_OK;
 }
 
+/* The mass on its spring and damper, with the force as an arrow: x(t) by
+ * the closed form at each frame.  The drawing is to the scale of the
+ * motion: a rest length of 5 times its largest |x|. */
+static int animate(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_result *res)
+{
+    double t_show;
+    int nf = mm_scene_frames(t_end, 2 * M_PI / fmax(p->omega_n, s->omega), &t_show);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    double *x = mm_res_alloc(res, (size_t)nf * sizeof *x);
+    if (!a || !x)
+        return MM_ENOMEM;
+    double big = 0;
+    for (int f = 0; f < nf; f++) {
+        a->t[f] = t_show * f / (nf - 1);
+        x[f] = mm_sdof_x(s, p, a->t[f], NULL);
+        big = fmax(big, fabs(x[f]));
+    }
+    double L = 5 * (big > 0 ? big : 1), H = 0.6 * L;   /* rest length, block height */
+    mm_shape *wall = mm_anim_shape(res, "wall", MM_SHAPE_LINE, 1, 2);
+    mm_shape *spring = mm_anim_shape(res, "spring", MM_SHAPE_LINE, nf, MM_SCENE_SPRING_POINTS);
+    mm_shape *cup = mm_anim_shape(res, "damper", MM_SHAPE_LINE, nf, MM_SCENE_CUP_POINTS);
+    mm_shape *piston = mm_anim_shape(res, "piston", MM_SHAPE_LINE, nf, MM_SCENE_PISTON_POINTS);
+    mm_shape *mass = mm_anim_shape(res, "mass", MM_SHAPE_POLYGON, nf, MM_SCENE_BOX_POINTS);
+    mm_shape *force = mm_anim_shape(res, "F", MM_SHAPE_ARROW, nf, 2);
+    double *Fv = mm_shape_values(res, force);
+    if (!wall || !spring || !cup || !piston || !mass || !Fv)
+        return MM_ENOMEM;
+    wall->style = "ground";
+    wall->x[0] = wall->x[1] = 0;
+    wall->y[0] = -0.7 * H, wall->y[1] = 0.7 * H;
+    force->unit = "N";
+    force->scale = s->F0 != 0 ? 0.8 * L / fabs(s->F0) : 0;
+    for (int f = 0; f < nf; f++) {
+        double xm = L + x[f];                                 /* the block's left face */
+        mm_scene_spring(spring, f, 0, 0.25 * H, xm, 0.25 * H, 0.2 * H);
+        mm_scene_damper(cup, piston, f, 0, -0.25 * H, xm, -0.25 * H, 0.2 * H, L);
+        mm_scene_box(mass, f, xm + 0.5 * H, 0, H, H, 0);
+        Fv[f] = s->F0 * cos(s->omega * a->t[f]);
+        force->x[2 * f] = xm + H, force->y[2 * f] = 0;
+        force->x[2 * f + 1] = xm + H + force->scale * Fv[f], force->y[2 * f + 1] = 0;
+    }
+    return MM_OK;
+}
+
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     mm_sdof s = model(in);
@@ -87,17 +147,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double t_end = in[P_TEND].x;
     int n = (int)in[P_POINTS].x;
 
-    mm_res_scalar(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
-    mm_res_scalar(res, "zeta", "damping ratio", "", p.zeta);
-    mm_res_scalar(res, "X", "steady amplitude", "m", p.X);
-    mm_res_scalar(res, "phase", "phase lag", "rad", p.phase);
-    mm_res_scalar(res, "magnification", "dynamic magnification X/(F0/k)", "", p.magnification);
-    mm_res_scalar(res, "r", "frequency ratio omega/omega_n", "", s.omega / p.omega_n);
-    mm_res_scalar_text(res, "regime", "damping regime", "", p.regime, mm_sdof_regime_name(p.regime));
+    mm_res_scalar(res, O_OMEGA_N, p.omega_n);
+    mm_res_scalar(res, O_ZETA, p.zeta);
+    mm_res_scalar(res, O_X, p.X);
+    mm_res_scalar(res, O_PHASE, p.phase);
+    mm_res_scalar(res, O_MAGNIFICATION, p.magnification);
+    mm_res_scalar(res, O_R, s.omega / p.omega_n);
+    mm_res_scalar_text(res, O_REGIME, p.regime, mm_sdof_regime_name(p.regime));
 
-    mm_series *sx = mm_res_series(res, "x", "displacement", "m", "t", "s", n);
+    mm_series *sx = mm_res_series(res, O_XT, n);
     if (!sx)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     mm_linspace(0, t_end, n, sx->x);
     int rc = mm_ex_sdof_run(&s, t_end, n, sx->x, sx->y, NULL, 5, res, err);
     if (rc != MM_OK)
@@ -140,7 +200,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_warn(res, "near resonance (omega/omega_n = %.3f) with little damping: "
                          "the transient lasts about %.3g s", s.omega / p.omega_n,
                     p.zeta > 0 ? 4 / (p.zeta * p.omega_n) : INFINITY);
-    return MM_OK;
+    return animate(&s, &p, t_end, res);
 }
 
 static const char *const references[] = {
@@ -159,6 +219,8 @@ const mm_exercise mm_ex_vib_sdof_forced = {
     .theory = "exercises/vib/sdof_forced.md",
     .params = params,
     .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .references = references,
     .check = check,
     .solve = solve,

@@ -85,18 +85,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double t_end = in[P_TEND].x;
     int n = (int)in[P_POINTS].x;
 
-    mm_res_scalar(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
-    mm_res_scalar(res, "zeta", "damping ratio", "", p.zeta);
-    mm_res_scalar(res, "omega_d", "damped frequency", "rad/s", p.omega_d);
-    mm_res_scalar_text(res, "regime", "damping regime", "", p.regime, mm_sdof_regime_name(p.regime));
+    mm_res_scalar_v1(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
+    mm_res_scalar_v1(res, "zeta", "damping ratio", "", p.zeta);
+    mm_res_scalar_v1(res, "omega_d", "damped frequency", "rad/s", p.omega_d);
+    mm_res_scalar_text_v1(res, "regime", "damping regime", "", p.regime, mm_sdof_regime_name(p.regime));
     if (p.regime == MM_SDOF_UNDER) {
-        mm_res_scalar(res, "T_d", "damped period", "s", 2 * M_PI / p.omega_d);
-        mm_res_scalar(res, "log_decrement", "logarithmic decrement", "",
+        mm_res_scalar_v1(res, "T_d", "damped period", "s", 2 * M_PI / p.omega_d);
+        mm_res_scalar_v1(res, "log_decrement", "logarithmic decrement", "",
                       2 * M_PI * p.zeta / sqrt((1 - p.zeta) * (1 + p.zeta)));
     }
-    mm_res_scalar(res, "c_critical", "critical damping coefficient", "N s/m", 2 * sqrt(s.k * s.m));
+    mm_res_scalar_v1(res, "c_critical", "critical damping coefficient", "N s/m", 2 * sqrt(s.k * s.m));
 
-    mm_series *sx = mm_res_series(res, "x", "displacement", "m", "t", "s", n);
+    mm_series *sx = mm_res_series_v1(res, "x", "displacement", "m", "t", "s", n);
     if (!sx)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_linspace(0, t_end, n, sx->x);
@@ -108,7 +108,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     rc = energy_balance(&s, t_end, &E0, &Eend, &D, err);
     if (rc != MM_OK)
         return rc;
-    mm_res_scalar(res, "energy_dissipated", "energy taken by the damper", "J", D);
+    mm_res_scalar_v1(res, "energy_dissipated", "energy taken by the damper", "J", D);
     /* the balance holds to the integrator's tolerance (rtol 1e-9) of E0 */
     mm_res_check_abs(res, "energy balance: E(t_end) + damper work vs E(0)", Eend + D, E0,
                      1e-7 * E0 + 1e-300);

@@ -148,6 +148,55 @@ static int all_checks_pass(const mm_exercise *ex, const cJSON *doc, const char *
     return ok;
 }
 
+/* Is `name` a declared output of kind `kind`, member of a family included? */
+static int declared(const mm_exercise *ex, mm_output_kind kind, const char *name)
+{
+    for (int i = 0; i < ex->n_outputs; i++) {
+        const mm_output *o = &ex->outputs[i];
+        if (o->kind != kind)
+            continue;
+        for (int k = 0; k < mm_output_count(o); k++) {
+            char member[160];
+            mm_output_member(o, mm_output_index(o, k), member, sizeof member);
+            if (strcmp(member, name) == 0)
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* An answer carries only outputs its exercise declares (API.md
+ * "Additions": outputs are declared, not discovered), each with the
+ * declared label and unit; scalars say how accurate they are. */
+static int only_declared_outputs(const mm_exercise *ex, const cJSON *doc, const char *what)
+{
+    if (ex->n_outputs == 0)              /* not converted yet: the transition */
+        return 1;
+    static const struct { const char *key; mm_output_kind kind; } lists[] = {
+        {"scalars", MM_OUT_SCALAR}, {"series", MM_OUT_SERIES}, {"tables", MM_OUT_TABLE},
+    };
+    int ok = 1;
+    for (size_t l = 0; l < sizeof lists / sizeof lists[0]; l++) {
+        const cJSON *item;
+        cJSON_ArrayForEach(item, cJSON_GetObjectItem(doc, lists[l].key)) {
+            const cJSON *name = cJSON_GetObjectItem(item, "name");
+            if (!cJSON_IsString(name) || !declared(ex, lists[l].kind, name->valuestring)) {
+                print_error("%s (%s): %s '%s' is not declared in its outputs\n", ex->id, what,
+                            lists[l].key, cJSON_IsString(name) ? name->valuestring : "?");
+                ok = 0;
+            }
+        }
+    }
+    int anim = 0;
+    for (int i = 0; i < ex->n_outputs; i++)
+        anim |= ex->outputs[i].kind == MM_OUT_ANIMATION;
+    if (cJSON_GetObjectItem(doc, "animation") && !anim) {
+        print_error("%s (%s): an animation that is not declared\n", ex->id, what);
+        ok = 0;
+    }
+    return ok;
+}
+
 static const char *error_code(const cJSON *doc, const char **param)
 {
     const cJSON *e = cJSON_GetObjectItem(doc, "error");
@@ -174,6 +223,7 @@ static void every_exercise_should_pass_its_checks_at_the_defaults(void **state)
         }
         assert_true(cJSON_GetArraySize(cJSON_GetObjectItem(doc, "checks")) > 0);
         assert_true(all_checks_pass(ex, doc, "defaults"));
+        assert_true(only_declared_outputs(ex, doc, "defaults"));
         cJSON_Delete(doc);
     }
 }
@@ -205,7 +255,8 @@ static void every_exercise_should_pass_its_checks_at_random_parameters(void **st
             const char *param, *code = error_code(doc, &param);
             if (status == 400 && ex->check && strcmp(code, "out_of_range") == 0) {
                 refused++;                          /* a joint limit said no */
-            } else if (status != 200 || !all_checks_pass(ex, doc, "random")) {
+            } else if (status != 200 || !all_checks_pass(ex, doc, "random") ||
+                       !only_declared_outputs(ex, doc, "random")) {
                 char *s = cJSON_PrintUnformatted(doc);
                 print_error("%s: status %d for", ex->id, status);
                 for (int k = 0; k < r.n; k++)

@@ -13,7 +13,9 @@ mkdirSync(shots, { recursive: true });
 let server, browser;
 const results = [];
 
+// MM_WEB_ONLY=text runs only the tests whose name holds text (to repeat one).
 async function test(name, fn) {
+  if (process.env.MM_WEB_ONLY && !name.includes(process.env.MM_WEB_ONLY)) return;
   const page = await browser.newPage();
   const outside = [];
   page.on('request', (r) => { if (!r.url().startsWith(server.origin) && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) outside.push(r.url()); });

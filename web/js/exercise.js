@@ -420,10 +420,14 @@ function renderFigures() {
 }
 
 let resizeFrame = 0;
+// The observer's frame may run after the figures box has left the document
+// (the page being replaced or torn down): then there is nothing to redraw.
 new ResizeObserver(() => {
   if (!state.answer) return;
   cancelAnimationFrame(resizeFrame);
   resizeFrame = requestAnimationFrame(() => {
+    const box = document.getElementById('figures');
+    if (!box || !box.isConnected) return;
     if (figuresWidth() !== state.figWidth) renderFigures();
   });
 }).observe(document.getElementById('figures'));
