@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "mm_linalg.h"
+#include "mm_mdof.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -285,6 +286,31 @@ static double assemble_band(const mm_fem_problem *p, const long *map, size_t nf,
     return top;
 }
 
+size_t mm_fem_free_dofs(const mm_fem_problem *p, long *map)
+{
+    size_t ndof = mm_fem_ndof(p), fixed[4], nfix = fixed_dofs(p, fixed);
+    for (size_t g = 0; g < ndof; g++)
+        map[g] = 0;
+    for (size_t i = 0; i < nfix; i++)
+        map[fixed[i]] = -1;
+    long next = 0;
+    for (size_t g = 0; g < ndof; g++)
+        map[g] = map[g] < 0 ? -1 : next++;
+    return (size_t)next;
+}
+
+int mm_fem_half_band(const mm_fem_problem *p, size_t nf)
+{
+    int kd = half_band(p->kind);
+    return (size_t)kd >= nf ? (int)nf - 1 : kd;
+}
+
+double mm_fem_assemble_band(const mm_fem_problem *p, const long *map, size_t nf,
+                            double *Kb, double *Mb)
+{
+    return assemble_band(p, map, nf, mm_fem_half_band(p, nf), Kb, Mb);
+}
+
 /* Dense symmetric n x n from band storage. */
 static void band_to_dense(size_t n, int kd, const double *Ab, double *A)
 {
@@ -409,14 +435,7 @@ int mm_fem_modes_solve(const mm_fem_problem *p, size_t nmodes,
         goto out;
     }
 
-    /* free-DOF numbering: global order with the fixed DOFs taken out */
-    for (size_t g = 0; g < ndof; g++)
-        map[g] = 0;
-    for (size_t i = 0; i < nfix; i++)
-        map[fixed[i]] = -1;
-    long next = 0;
-    for (size_t g = 0; g < ndof; g++)
-        map[g] = map[g] < 0 ? -1 : next++;
+    mm_fem_free_dofs(p, map);      /* global order with the fixed DOFs taken out */
 
     double top = assemble_band(p, map, nf, kd, Kb, Mb);
     if (method == MM_FEM_DENSE) {
@@ -564,4 +583,439 @@ int mm_fem_exact_omegas(const mm_fem_problem *p, size_t nmodes,
         omega[j] = bl * bl * sqrt(u->E * u->I / (u->rho * u->A * L * L * L * L));
     }
     return MM_OK;
+}
+
+/* ==== banded symmetric algebra ================================================ */
+
+/* y = A x for the symmetric band A (upper band storage, half-bandwidth kd). */
+static void band_matvec(size_t n, int kd, const double *Ab, const double *x, double *y)
+{
+    size_t w = (size_t)kd + 1;
+    for (size_t i = 0; i < n; i++)
+        y[i] = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *row = Ab + i * w;
+        y[i] += row[0] * x[i];
+        for (size_t d = 1; d < w && i + d < n; d++) {
+            y[i] += row[d] * x[i + d];
+            y[i + d] += row[d] * x[i];
+        }
+    }
+}
+
+/* A = U^T U in place (U upper, band storage).  Returns 0, or i + 1 when
+ * pivot i is not positive (A not positive definite). */
+static size_t band_cholesky(size_t n, int kd, double *Ab)
+{
+    size_t w = (size_t)kd + 1;
+    for (size_t i = 0; i < n; i++) {
+        double *ui = Ab + i * w;
+        size_t k0 = i > (size_t)kd ? i - (size_t)kd : 0;
+        double d = ui[0];
+        for (size_t k = k0; k < i; k++)
+            d -= Ab[k * w + (i - k)] * Ab[k * w + (i - k)];
+        if (!(d > 0))
+            return i + 1;
+        ui[0] = sqrt(d);
+        for (size_t dj = 1; dj < w && i + dj < n; dj++) {
+            size_t j = i + dj;
+            double sum = ui[dj];
+            for (size_t k = j > (size_t)kd ? j - (size_t)kd : 0; k < i; k++)
+                sum -= Ab[k * w + (i - k)] * Ab[k * w + (j - k)];
+            ui[dj] = sum / ui[0];
+        }
+    }
+    return 0;
+}
+
+/* Solve U^T U x = b in place. */
+static void band_chol_solve(size_t n, int kd, const double *Ub, double *x)
+{
+    size_t w = (size_t)kd + 1;
+    for (size_t i = 0; i < n; i++) {              /* U^T y = b */
+        double sum = x[i];
+        for (size_t k = i > (size_t)kd ? i - (size_t)kd : 0; k < i; k++)
+            sum -= Ub[k * w + (i - k)] * x[k];
+        x[i] = sum / Ub[i * w];
+    }
+    for (size_t i = n; i-- > 0;) {                /* U x = y */
+        double sum = x[i];
+        for (size_t d = 1; d < w && i + d < n; d++)
+            sum -= Ub[i * w + d] * x[i + d];
+        x[i] = sum / Ub[i * w];
+    }
+}
+
+/* ==== omega_max, loads, statics ================================================ */
+
+int mm_fem_omega_max(const mm_fem_problem *p, double *omega_max, mm_error *err)
+{
+    int rc = mm_fem_check(p, err);
+    if (rc)
+        return rc;
+    size_t ndof = mm_fem_ndof(p);
+    long *map = malloc(ndof * sizeof *map);
+    double *Kb = NULL, *Mb = NULL;
+    size_t nf = map ? mm_fem_free_dofs(p, map) : 0;
+    int kd = mm_fem_half_band(p, nf);
+    if (map) {
+        Kb = malloc(nf * ((size_t)kd + 1) * sizeof *Kb);
+        Mb = malloc(nf * ((size_t)kd + 1) * sizeof *Mb);
+    }
+    if (!map || !Kb || !Mb) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    double top = mm_fem_assemble_band(p, map, nf, Kb, Mb);
+    /* s = 1e-3 of the bound: K + s M definite, and omega_max^2 + s known
+     * to the solver's relative accuracy */
+    double sh = 1e-3 * top, mu;
+    for (size_t i = 0; i < nf * ((size_t)kd + 1); i++)
+        Kb[i] += sh * Mb[i];
+    if ((rc = mm_linalg_sbgv_first((int)nf, kd, 1, Mb, Kb, &mu, NULL, err)))
+        goto out;
+    *omega_max = sqrt(fmax(1 / mu - sh, 0));
+out:
+    free(Mb);
+    free(Kb);
+    free(map);
+    return rc;
+}
+
+/* Element e and local coordinate xi in [0, 1] of the point x of the mesh;
+ * -1 when x is outside [0, L]. */
+static long locate(const mm_fem_problem *p, double x, double *xi, double *Le)
+{
+    double x0 = 0;
+    for (size_t e = 0; e < p->n_el; e++) {
+        mm_fem_element el = element_at(p, e);
+        double x1 = p->elements ? x0 + el.L : p->uniform.L * (double)(e + 1) / (double)p->n_el;
+        if (x >= x0 && (x <= x1 || e + 1 == p->n_el) && x <= x1 * (1 + 1e-15)) {
+            *Le = x1 - x0;
+            *xi = fmin(fmax((x - x0) / *Le, 0), 1);
+            return (long)e;
+        }
+        x0 = x1;
+    }
+    return -1;
+}
+
+/* Shape functions at xi of an element of length Le: 2 (bar) or 4 (beam). */
+static void shape_fns(mm_fem_kind kind, double xi, double Le, double *N)
+{
+    if (kind == MM_FEM_BAR) {
+        N[0] = 1 - xi;
+        N[1] = xi;
+        return;
+    }
+    double x2 = xi * xi, x3 = x2 * xi;
+    N[0] = 1 - 3 * x2 + 2 * x3;
+    N[1] = Le * (xi - 2 * x2 + x3);
+    N[2] = 3 * x2 - 2 * x3;
+    N[3] = Le * (x3 - x2);
+}
+
+void mm_fem_load_vector(const mm_fem_problem *p, const mm_fem_load *ld, double t, double *f)
+{
+    size_t ndof = mm_fem_ndof(p);
+    memset(f, 0, ndof * sizeof *f);
+    double x, amp;
+    if (ld->kind == MM_FEM_LOAD_MOVING) {
+        x = ld->v * t;
+        amp = ld->P;
+    } else {
+        if (!(t < ld->t_off))
+            return;
+        x = ld->x;
+        amp = ld->Omega > 0 ? ld->P * cos(ld->Omega * t) : ld->P;
+    }
+    double xi, Le, N[4];
+    long e = locate(p, x, &xi, &Le);
+    if (e < 0)
+        return;
+    int dpn = dofs_per_node(p->kind);
+    shape_fns(p->kind, xi, Le, N);
+    for (int a = 0; a < 2 * dpn; a++)
+        f[(size_t)e * (size_t)dpn + (size_t)a] += amp * N[a];
+}
+
+int mm_fem_static_solve(const mm_fem_problem *p, const double *f, double *u, mm_error *err)
+{
+    int rc = mm_fem_check(p, err);
+    if (rc)
+        return rc;
+    if (p->bc == MM_FEM_FREE_FREE)
+        return mm_error_set(err, MM_ESINGULAR, "bc", "a free-free member has no static "
+                            "deflection: nothing holds it against the load");
+    size_t ndof = mm_fem_ndof(p);
+    long *map = malloc(ndof * sizeof *map);
+    size_t nf = map ? mm_fem_free_dofs(p, map) : 0;
+    int kd = mm_fem_half_band(p, nf);
+    double *Kb = map ? malloc(nf * ((size_t)kd + 1) * sizeof *Kb) : NULL;
+    double *Mb = map ? malloc(nf * ((size_t)kd + 1) * sizeof *Mb) : NULL;
+    double *x = map ? malloc(nf * sizeof *x) : NULL;
+    if (!map || !Kb || !Mb || !x) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    mm_fem_assemble_band(p, map, nf, Kb, Mb);
+    if (band_cholesky(nf, kd, Kb)) {
+        rc = mm_error_set(err, MM_ESINGULAR, "bc", "the stiffness matrix is singular");
+        goto out;
+    }
+    for (size_t g = 0; g < ndof; g++)
+        if (map[g] >= 0)
+            x[map[g]] = f[g];
+    band_chol_solve(nf, kd, Kb, x);
+    for (size_t g = 0; g < ndof; g++)
+        u[g] = map[g] >= 0 ? x[map[g]] : 0;
+out:
+    free(x);
+    free(Mb);
+    free(Kb);
+    free(map);
+    return rc;
+}
+
+/* ==== modal superposition ======================================================== */
+
+/* The modal coordinate of mode phi (all global DOFs) under a load crossing
+ * at speed v, sampled at the nt times t: exact per element (the modal
+ * force P phi(v t) is a cubic in t there), free after the load has left. */
+static void moving_modal(const mm_fem_problem *p, const double *phi, double omega, double c,
+                         const mm_fem_load *ld, int nt, const double *t, double *eta_out)
+{
+    double eta = 0, etad = 0, tnow = 0, x0 = 0, te = 0, tn = 0, a[4] = {0, 0, 0, 0};
+    size_t e = 0;
+    int on = 1;
+    for (int i = 0; i < nt; i++) {
+        while (tnow < t[i]) {
+            if (on && tnow >= tn) {            /* the load enters the next element, or leaves */
+                if (e == p->n_el) {
+                    on = 0;
+                    a[0] = a[1] = a[2] = a[3] = 0;
+                    te = tnow;
+                    tn = INFINITY;
+                    continue;
+                }
+                mm_fem_element el = element_at(p, e);
+                double L = el.L, r = ld->v / L;
+                const double *u = phi + 2 * e;   /* w1 theta1 w2 theta2 */
+                /* phi along the element, a cubic in xi = (x - x0)/L = r tau */
+                double c0 = u[0], c1 = L * u[1], c2 = -3 * u[0] - 2 * L * u[1] + 3 * u[2] - L * u[3],
+                       c3 = 2 * u[0] + L * u[1] - 2 * u[2] + L * u[3];
+                a[0] = ld->P * c0;
+                a[1] = ld->P * c1 * r;
+                a[2] = ld->P * c2 * r * r;
+                a[3] = ld->P * c3 * r * r * r;
+                te = x0 / ld->v;
+                x0 += L;
+                tn = x0 / ld->v;
+                e++;
+                continue;
+            }
+            double target = fmin(t[i], tn), sft = tnow - te, b[4];
+            /* the cubic in tau = t - te, rewritten from tnow */
+            b[0] = a[0] + sft * (a[1] + sft * (a[2] + sft * a[3]));
+            b[1] = a[1] + sft * (2 * a[2] + 3 * sft * a[3]);
+            b[2] = a[2] + 3 * sft * a[3];
+            b[3] = a[3];
+            mm_mdof_sdof_poly(omega, c, b, target - tnow, &eta, &etad);
+            tnow = target;
+        }
+        eta_out[i] = eta;
+    }
+}
+
+int mm_fem_modal_response(const mm_fem_problem *p, const mm_fem_modes *modes, size_t m,
+                          const mm_fem_damping *d, const mm_fem_load *ld, int nt,
+                          const double *t, int nout, const size_t *dofs, double *out,
+                          mm_error *err)
+{
+    if (m < 1 || m > modes->n_modes || !modes->shape)
+        return mm_error_set(err, MM_ERANGE, "modes", "modes retained must be between 1 and %zu; "
+                            "got %zu", modes->n_modes, m);
+    if (ld->kind == MM_FEM_LOAD_MOVING && p->kind != MM_FEM_BEAM)
+        return mm_error_set(err, MM_EVALUE, "load", "a moving load is offered for beams only");
+    size_t ndof = mm_fem_ndof(p);
+    double *f = malloc(ndof * sizeof *f), *eta = malloc((size_t)nt * sizeof *eta);
+    if (!f || !eta) {
+        free(eta);
+        free(f);
+        return mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+    }
+    mm_fem_load unit = *ld;
+    unit.P = 1;
+    unit.t_off = INFINITY;
+    unit.Omega = 0;
+    if (ld->kind == MM_FEM_LOAD_POINT)
+        mm_fem_load_vector(p, &unit, 0, f);        /* shape functions at x */
+    memset(out, 0, (size_t)nt * (size_t)nout * sizeof *out);
+    for (size_t j = 0; j < m; j++) {
+        const double *phi = modes->shape + j * ndof;
+        double w = modes->omega[j], c = d ? d->a + d->b * w * w : 0;
+        if (ld->kind == MM_FEM_LOAD_POINT) {
+            double pj = 0;
+            for (size_t g = 0; g < ndof; g++)
+                pj += phi[g] * f[g];
+            mm_mdof_pulse g = {ld->P * pj, ld->Omega, ld->t_off};
+            for (int i = 0; i < nt; i++)
+                eta[i] = mm_mdof_sdof_pulse(w, c, 0, 0, &g, t[i], NULL);
+        } else {
+            moving_modal(p, phi, w, c, ld, nt, t, eta);
+        }
+        for (int i = 0; i < nt; i++)
+            for (int r = 0; r < nout; r++)
+                out[(size_t)i * (size_t)nout + (size_t)r] += phi[dofs[r]] * eta[i];
+    }
+    free(eta);
+    free(f);
+    return MM_OK;
+}
+
+/* ==== direct integration ========================================================== */
+
+int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fem_transient *tr,
+                           mm_error *err)
+{
+    int rc = mm_fem_check(p, err);
+    if (rc)
+        return rc;
+    size_t ndof = mm_fem_ndof(p);
+    if (!(tr->h > 0) || !isfinite(tr->h))
+        return mm_error_set(err, MM_ERANGE, "h", "the time step must be > 0; got %g", tr->h);
+    if (tr->steps < 1 || tr->steps > MM_FEM_MAX_STEPS)
+        return mm_error_set(err, MM_ERANGE, "steps", "steps must be between 1 and %ld; got %ld",
+                            MM_FEM_MAX_STEPS, tr->steps);
+    if (tr->stride < 1)
+        return mm_error_set(err, MM_ERANGE, "stride", "stride must be at least 1");
+    for (int r = 0; r < tr->nout; r++)
+        if (tr->dofs[r] >= ndof)
+            return mm_error_set(err, MM_ERANGE, "dofs", "DOF %zu is not in the mesh", tr->dofs[r]);
+    for (int s = 0; s < tr->nsnap; s++)
+        if (tr->snap[s] < 0 || tr->snap[s] > tr->steps)
+            return mm_error_set(err, MM_ERANGE, "snap", "snapshot step %ld is not in the run",
+                                tr->snap[s]);
+    if (ld->kind == MM_FEM_LOAD_MOVING && p->kind != MM_FEM_BEAM)
+        return mm_error_set(err, MM_EVALUE, "load", "a moving load is offered for beams only");
+
+    long *map = malloc(ndof * sizeof *map);
+    size_t nf = map ? mm_fem_free_dofs(p, map) : 0, w = 0;
+    int kd = mm_fem_half_band(p, nf);
+    w = (size_t)kd + 1;
+    double *Kb = NULL, *Mb = NULL, *Sb = NULL, *Mf = NULL, *vec = NULL, *f = NULL;
+    if (map) {
+        Kb = malloc(nf * w * sizeof *Kb);
+        Mb = malloc(nf * w * sizeof *Mb);
+        Sb = malloc(nf * w * sizeof *Sb);
+        Mf = malloc(nf * w * sizeof *Mf);
+        vec = malloc(8 * nf * sizeof *vec);
+        f = malloc(ndof * sizeof *f);
+    }
+    if (!map || !Kb || !Mb || !Sb || !Mf || !vec || !f) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    mm_fem_assemble_band(p, map, nf, Kb, Mb);
+    double *q = vec, *v = vec + nf, *a = vec + 2 * nf, *r = vec + 3 * nf, *t1 = vec + 4 * nf,
+           *qt = vec + 5 * nf, *vt = vec + 6 * nf, *t2 = vec + 7 * nf;
+    const double h = tr->h, ca = tr->damping.a, cb = tr->damping.b;
+    /* the matrices solved with: M (start), and S of the scheme */
+    double sm, sk;          /* S = sm M + sk K */
+    if (tr->scheme == MM_FEM_AVERAGE) {
+        sm = 1 + 0.5 * h * ca;
+        sk = 0.5 * h * cb + 0.25 * h * h;
+    } else {
+        sm = 1 + 0.5 * h * ca;
+        sk = 0.5 * h * cb;
+    }
+    for (size_t i = 0; i < nf * w; i++) {
+        Sb[i] = sm * Mb[i] + sk * Kb[i];
+        Mf[i] = Mb[i];
+    }
+    if (band_cholesky(nf, kd, Mf) || band_cholesky(nf, kd, Sb)) {
+        rc = mm_error_set(err, MM_ESINGULAR, "h", "the matrix a step solves with is not positive "
+                          "definite");
+        goto out;
+    }
+    /* start at rest: a0 = M^-1 f(0) */
+    memset(q, 0, 3 * nf * sizeof *q);
+    mm_fem_load_vector(p, ld, 0, f);
+    for (size_t g = 0; g < ndof; g++)
+        if (map[g] >= 0)
+            a[map[g]] = f[g];
+    band_chol_solve(nf, kd, Mf, a);
+
+    int row = 0, snapi = 0;
+    for (long k = 0;; k++) {
+        /* record step k */
+        if (tr->out && k % tr->stride == 0) {
+            for (int o = 0; o < tr->nout; o++) {
+                long fi = map[tr->dofs[o]];
+                tr->out[(size_t)row * (size_t)tr->nout + (size_t)o] = fi >= 0 ? q[fi] : 0;
+            }
+            row++;
+        }
+        for (int s = 0; s < tr->nsnap; s++)
+            if (tr->snap[s] == k && tr->snaps) {
+                double *dst = tr->snaps + (size_t)s * ndof;
+                for (size_t g = 0; g < ndof; g++)
+                    dst[g] = map[g] >= 0 ? q[map[g]] : 0;
+                snapi++;
+            }
+        if (k == tr->steps)
+            break;
+        double tn = h * (double)(k + 1);
+        mm_fem_load_vector(p, ld, tn, f);
+        for (size_t g = 0; g < ndof; g++)
+            if (map[g] >= 0)
+                r[map[g]] = f[g];
+        if (tr->scheme == MM_FEM_AVERAGE) {
+            /* predictors, then S a1 = f1 - C vt - K qt */
+            for (size_t i = 0; i < nf; i++) {
+                qt[i] = q[i] + h * v[i] + 0.25 * h * h * a[i];
+                vt[i] = v[i] + 0.5 * h * a[i];
+            }
+        } else {
+            for (size_t i = 0; i < nf; i++) {
+                qt[i] = q[i] + h * v[i] + 0.5 * h * h * a[i];
+                vt[i] = v[i] + 0.5 * h * a[i];
+            }
+        }
+        band_matvec(nf, kd, Kb, qt, t1);            /* K qt */
+        for (size_t i = 0; i < nf; i++)
+            r[i] -= t1[i];
+        if (ca != 0 || cb != 0) {                   /* C vt = a M vt + b K vt */
+            band_matvec(nf, kd, Mb, vt, t1);
+            band_matvec(nf, kd, Kb, vt, t2);
+            for (size_t i = 0; i < nf; i++)
+                r[i] -= ca * t1[i] + cb * t2[i];
+        }
+        band_chol_solve(nf, kd, Sb, r);             /* a_{k+1} */
+        double big = 0;
+        for (size_t i = 0; i < nf; i++) {
+            double bt = tr->scheme == MM_FEM_AVERAGE ? 0.25 * h * h : 0;
+            q[i] = qt[i] + bt * r[i];
+            v[i] = vt[i] + 0.5 * h * r[i];
+            a[i] = r[i];
+            big = fmax(big, fabs(q[i]));
+        }
+        if (!isfinite(big) || big > 1e150) {
+            rc = mm_error_set(err, MM_ENONFINITE, "h", "the motion grew without bound by t = %g s: "
+                              "the step h = %g s is past the stability limit of %s", tn, h,
+                              tr->scheme == MM_FEM_CENTRAL ? "central difference" : "the scheme");
+            goto out;
+        }
+    }
+    (void)snapi;
+    rc = MM_OK;
+out:
+    free(f);
+    free(vec);
+    free(Mf);
+    free(Sb);
+    free(Mb);
+    free(Kb);
+    free(map);
+    return rc;
 }
