@@ -160,15 +160,36 @@ static int cmp_abs(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* A mode from its eigenvalue lambda = re + i im (im >= 0). */
+static mm_mdof_cmode cmode(double re, double im)
+{
+    double w = hypot(re, im);
+    return (mm_mdof_cmode){w, w > 0 ? -re / w : 0, im};
+}
+
 int mm_mdof_complex_modes(const mm_mdof_system *s, mm_mdof_cmode *modes, mm_error *err)
 {
     int n = s->n, n2 = 2 * n, rc;
     if (n < 1 || n > MM_MDOF_MAX_STATE_DOF)
         return mm_error_set(err, MM_ERANGE, "n", "complex modes are computed for 1 to %d degrees "
                             "of freedom; got %d", MM_MDOF_MAX_STATE_DOF, n);
+    int damped = 0;
+    for (int i = 0; s->C && i < n * n; i++)
+        damped |= s->C[i] != 0;
+    if (!damped) {                         /* the real modes, exactly undamped */
+        double *w = malloc((size_t)n * sizeof *w);
+        if (!w)
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        rc = mm_mdof_modes(s, n, w, NULL, NULL, err);
+        for (int j = 0; rc == MM_OK && j < n; j++)
+            modes[j] = (mm_mdof_cmode){w[j], 0, w[j]};
+        free(w);
+        return rc;
+    }
     double *G = malloc((size_t)n2 * n2 * sizeof *G), *wr = malloc((size_t)n2 * sizeof *wr);
     double *wi = malloc((size_t)n2 * sizeof *wi), *re = malloc((size_t)n2 * sizeof *re);
-    if (!G || !wr || !wi || !re) {
+    double *lr = malloc((size_t)n * sizeof *lr), *li = malloc((size_t)n * sizeof *li);
+    if (!G || !wr || !wi || !re || !lr || !li) {
         rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
         goto out;
     }
@@ -177,11 +198,30 @@ int mm_mdof_complex_modes(const mm_mdof_system *s, mm_mdof_cmode *modes, mm_erro
     int m = 0, nre = 0;
     for (int j = 0; j < n2; j++) {
         if (wi[j] > 0 && m < n) {                 /* one of a pair: the other is its conjugate */
-            double w = hypot(wr[j], wi[j]);
-            modes[m++] = (mm_mdof_cmode){w, w > 0 ? -wr[j] / w : 0, wi[j]};
+            lr[m] = wr[j], li[m] = wi[j];
+            modes[m++] = cmode(wr[j], wi[j]);
         } else if (wi[j] == 0) {
             re[nre++] = wr[j];
         }
+    }
+    /* A defective (repeated) pair, as at C = diag(20, 0) with M = I,
+     * K = [200 -100; -100 100], comes out split by about sqrt(eps); the
+     * mean of a cluster is accurate to rounding.  Pairs closer than 1e-6
+     * of their size are taken as one repeated value. */
+    for (int i = 0; i < m; i++) {
+        int c = 1;
+        double sr = lr[i], si = li[i];
+        for (int j = i + 1; j < m; j++)
+            if (hypot(lr[j] - lr[i], li[j] - li[i]) <= 1e-6 * hypot(lr[i], li[i])) {
+                sr += lr[j], si += li[j];
+                c++;
+            }
+        if (c == 1)
+            continue;
+        for (int j = i; j < m; j++)
+            if (hypot(lr[j] - lr[i], li[j] - li[i]) <= 1e-6 * hypot(lr[i], li[i]) && j != i)
+                modes[j] = cmode(sr / c, si / c);
+        modes[i] = cmode(sr / c, si / c);
     }
     qsort(re, (size_t)nre, sizeof *re, cmp_abs);
     for (int i = 0; i < nre / 2 && m < n; i++) {  /* nested pairs: smallest with largest */
@@ -196,6 +236,8 @@ int mm_mdof_complex_modes(const mm_mdof_system *s, mm_mdof_cmode *modes, mm_erro
     qsort(modes, (size_t)n, sizeof *modes, cmp_cmode);
     rc = MM_OK;
 out:
+    free(li);
+    free(lr);
     free(re);
     free(wi);
     free(wr);

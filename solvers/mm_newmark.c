@@ -996,6 +996,10 @@ int mm_newmark_solve(const mm_newmark_problem *p, const mm_newmark_options *o,
     int storing = res->t || res->q || res->qd || res->qdd || res->energy;
     if (storing)
         store_row(&r, 0, p->t0, r.q, r.v, r.a, r.Kq);
+    if (res->observe && (rc = res->observe(0, p->t0, r.q, r.v, r.a, res->observe_params))) {
+        rc = callback_failed(&r, rc, "observer", p->t0);
+        goto out;
+    }
     int next_row = 1;
     long next_step = rows > 1 ? row_step(o, N, rows, 1) : -1;
 
@@ -1016,6 +1020,10 @@ int mm_newmark_solve(const mm_newmark_problem *p, const mm_newmark_options *o,
         }
         swap_states(&r);
         res->steps = k + 1;
+        if (res->observe && (rc = res->observe(k + 1, t1, r.q, r.v, r.a, res->observe_params))) {
+            rc = callback_failed(&r, rc, "observer", t1);
+            goto out;
+        }
         if (k + 1 == next_step) {
             if (storing)
                 store_row(&r, next_row, t1, r.q, r.v, r.a, r.Kq);

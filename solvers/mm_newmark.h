@@ -156,6 +156,15 @@ typedef struct mm_newmark_result {
     mm_newmark_energy *energy;  /* energy bookkeeping at each row */
     int max_rows;
 
+    /* Optional (NULL: none): called with the state at t_0 (k = 0) and after
+     * every step k = 1..steps, whether the step is stored or not, so that a
+     * caller can follow every step without storing it.  The arrays hold n
+     * values and are valid during the call only.  Return 0 to go on, or a
+     * nonzero code to stop the run (returned as for the force callback). */
+    int (*observe)(long k, double t, const double *q, const double *qd, const double *qdd,
+                   void *params);
+    void *observe_params;
+
     /* Filled by mm_newmark_solve (also when it fails part-way: then they
      * describe the run up to the failure). */
     int rows;                   /* rows stored */

@@ -1,0 +1,221 @@
+/* mm_vib.c — drawings of the multi-DOF vibration exercises (mm_vib.h). */
+#include "mm_vib.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "mm_scene.h"
+
+double mm_vib_big(const double *u, size_t n)
+{
+    double b = 0;
+    for (size_t i = 0; i < n; i++)
+        b = fmax(b, fabs(u[i]));
+    return b > 0 ? b : 1;
+}
+
+int mm_vib_frames(double t_end, double period, int max_frames, double *t_show)
+{
+    if (max_frames > MM_ANIM_MAX_FRAMES)
+        max_frames = MM_ANIM_MAX_FRAMES;
+    if (max_frames < 2)
+        max_frames = 2;
+    *t_show = t_end;
+    if (!(period > 0) || !isfinite(period))
+        return max_frames / 2 < 2 ? 2 : max_frames / 2;
+    double want = ceil(16 * t_end / period) + 1;
+    if (want <= max_frames)
+        return want < 2 ? 2 : (int)want;
+    *t_show = (max_frames - 1) * period / 16;
+    return max_frames;
+}
+
+/* A zigzag spring of MM_VIB_SPRING_POINTS points from (x0, y) to (x1, y). */
+static void spring(mm_shape *s, int f, double x0, double x1, double y, double width)
+{
+    double len = x1 - x0, lead = len / 8, pitch = (len - 2 * lead) / 6;
+    size_t o = (size_t)f * MM_VIB_SPRING_POINTS;
+    s->x[o] = x0, s->y[o] = y;
+    s->x[o + 1] = x0 + lead, s->y[o + 1] = y;
+    for (int k = 0; k < 4; k++) {
+        s->x[o + 2 + k] = x0 + lead + (k + 1) * 1.2 * pitch;
+        s->y[o + 2 + k] = y + (k % 2 ? -0.5 : 0.5) * width;
+    }
+    s->x[o + 6] = x1 - lead, s->y[o + 6] = y;
+    s->x[o + 7] = x1, s->y[o + 7] = y;
+}
+
+int mm_vib_masses_numbers(int n, const double *K)
+{
+    int springs = 0;
+    for (int i = 0; i < n; i++) {
+        double ground = 0;
+        for (int j = 0; j < n; j++) {
+            ground += K[i * n + j];
+            springs += j > i && K[i * n + j] != 0;
+        }
+        springs += ground != 0;
+    }
+    return 2 * (springs * MM_VIB_SPRING_POINTS + n * MM_SCENE_BOX_POINTS);
+}
+
+void mm_vib_mode_frames(int n, const double *phi, int ld, int j, double omega, double A, int nf,
+                        double *t, double *q)
+{
+    double T = omega > 0 ? 2 * M_PI / omega : 1;
+    for (int f = 0; f < nf; f++) {
+        double s = sin(2 * M_PI * f / (nf - 1));
+        t[f] = T * f / (nf - 1);
+        for (int i = 0; i < n; i++)
+            q[(size_t)f * n + i] = A * phi[(size_t)i * ld + j] * s;
+    }
+}
+
+int mm_vib_masses_draw(mm_result *res, int n, const double *K, int nf, const double *q,
+                       double gap)
+{
+    double w = 0.5 * gap, H = 0.5 * gap, big = 0;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++)
+            big = fmax(big, fabs(K[i * n + j]));
+    int wall[2] = {0, 0};
+    char name[32];
+    for (int i = 0; i < n; i++) {
+        double ground = 0;
+        for (int j = 0; j < n; j++)
+            ground += K[i * n + j];
+        int right = 2 * i + 1 > n;                    /* tie to the nearer wall */
+        if (fabs(ground) > 1e-12 * big) {
+            wall[right] = 1;
+            snprintf(name, sizeof name, right ? "spring %d-wall" : "spring wall-%d", i + 1);
+            mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_LINE, nf, MM_VIB_SPRING_POINTS);
+            if (!s)
+                return MM_ENOMEM;
+            for (int f = 0; f < nf; f++) {
+                double xi = (i + 1) * gap + q[(size_t)f * n + i];
+                if (right)
+                    spring(s, f, xi + w / 2, (n + 1) * gap, 0, 0.4 * H);
+                else
+                    spring(s, f, 0, xi - w / 2, 0, 0.4 * H);
+            }
+        }
+        for (int j = i + 1; j < n; j++) {
+            if (!(fabs(K[i * n + j]) > 1e-12 * big))
+                continue;
+            snprintf(name, sizeof name, "spring %d-%d", i + 1, j + 1);
+            int adj = j == i + 1;
+            mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_LINE, nf, adj ? MM_VIB_SPRING_POINTS : 4);
+            if (!s)
+                return MM_ENOMEM;
+            for (int f = 0; f < nf; f++) {
+                double xi = (i + 1) * gap + q[(size_t)f * n + i], xj = (j + 1) * gap + q[(size_t)f * n + j];
+                if (adj) {
+                    spring(s, f, xi + w / 2, xj - w / 2, 0, 0.4 * H);
+                } else {                               /* an arch above the row */
+                    double y = H * (0.8 + 0.3 * (j - i));
+                    size_t o = (size_t)f * 4;
+                    s->x[o] = xi, s->y[o] = H / 2;
+                    s->x[o + 1] = xi, s->y[o + 1] = y;
+                    s->x[o + 2] = xj, s->y[o + 2] = y;
+                    s->x[o + 3] = xj, s->y[o + 3] = H / 2;
+                }
+            }
+        }
+    }
+    for (int side = 0; side < 2; side++) {
+        if (!wall[side])
+            continue;
+        mm_shape *s = mm_anim_shape(res, side ? "wall right" : "wall left", MM_SHAPE_LINE, 1, 2);
+        if (!s)
+            return MM_ENOMEM;
+        s->style = "ground";
+        s->x[0] = s->x[1] = side ? (n + 1) * gap : 0;
+        s->y[0] = -H, s->y[1] = H;
+    }
+    for (int i = 0; i < n; i++) {
+        snprintf(name, sizeof name, "mass %d", i + 1);
+        mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_POLYGON, nf, MM_SCENE_BOX_POINTS);
+        if (!s)
+            return MM_ENOMEM;
+        for (int f = 0; f < nf; f++)
+            mm_scene_box(s, f, (i + 1) * gap + q[(size_t)f * n + i], 0, w, H, 0);
+    }
+    return MM_OK;
+}
+
+/* w(x) or u(x) of the displacement vector u at x, by the element's shape functions. */
+static double field_at(const mm_fem_problem *p, const double *u, double x)
+{
+    double L = p->uniform.L, Le = L / (double)p->n_el;
+    size_t e = (size_t)fmin(floor(x / Le), (double)p->n_el - 1);
+    double xi = x / Le - (double)e;
+    if (p->kind == MM_FEM_BAR)
+        return (1 - xi) * u[e] + xi * u[e + 1];
+    const double *v = u + 2 * e;
+    double x2 = xi * xi, x3 = x2 * xi;
+    return (1 - 3 * x2 + 2 * x3) * v[0] + Le * (xi - 2 * x2 + x3) * v[1] + (3 * x2 - 2 * x3) * v[2] +
+           Le * (x3 - x2) * v[3];
+}
+
+int mm_vib_member_draw(mm_result *res, const mm_fem_problem *p, int nf, const double *u,
+                       double scale)
+{
+    size_t ndof = mm_fem_ndof(p);
+    double L = p->uniform.L;
+    int np = 4 * (int)p->n_el + 1 < 401 ? 4 * (int)p->n_el + 1 : 401;
+    int beam = p->kind == MM_FEM_BEAM;
+    mm_shape *m = mm_anim_shape(res, beam ? "member" : "u(x)", MM_SHAPE_LINE, nf, np);
+    if (!m)
+        return MM_ENOMEM;
+    double y0 = beam ? 0 : 0.25 * L;                     /* a bar's u(x) is drawn above its axis */
+    for (int f = 0; f < nf; f++)
+        for (int k = 0; k < np; k++) {
+            double x = L * k / (np - 1);
+            m->x[(size_t)f * np + k] = x;
+            m->y[(size_t)f * np + k] = y0 + scale * field_at(p, u + (size_t)f * ndof, x);
+        }
+    if (!beam) {
+        mm_shape *axis = mm_anim_shape(res, "member", MM_SHAPE_LINE, 1, 2);
+        if (!axis)
+            return MM_ENOMEM;
+        axis->x[0] = 0, axis->x[1] = L;
+        axis->y[0] = axis->y[1] = 0;
+        int nt = p->n_el + 1 < 25 ? (int)p->n_el + 1 : 25;
+        for (int k = 0; k < nt; k++) {
+            size_t node = (size_t)llround((double)p->n_el * k / (nt - 1));
+            char name[24];
+            snprintf(name, sizeof name, "node %zu", node);
+            mm_shape *c = mm_anim_shape(res, name, MM_SHAPE_CIRCLE, nf, 1);
+            if (!c)
+                return MM_ENOMEM;
+            c->radius = 0.01 * L;
+            for (int f = 0; f < nf; f++) {
+                c->x[f] = L * (double)node / (double)p->n_el + scale * u[(size_t)f * ndof + node];
+                c->y[f] = 0;
+            }
+        }
+    }
+    /* supports: a wall for a clamped or fixed end, a wedge for a pin */
+    int left = p->bc != MM_FEM_FREE_FREE, right = p->bc == MM_FEM_FIXED_FIXED ||
+                                                  p->bc == MM_FEM_PINNED_PINNED || p->bc == MM_FEM_FIXED_PINNED;
+    for (int side = 0; side < 2; side++) {
+        if (!(side ? right : left))
+            continue;
+        int pin = p->bc == MM_FEM_PINNED_PINNED || (side && p->bc == MM_FEM_FIXED_PINNED);
+        mm_shape *s = mm_anim_shape(res, side ? "support right" : "support left",
+                                    pin ? MM_SHAPE_POLYGON : MM_SHAPE_LINE, 1, pin ? 3 : 2);
+        if (!s)
+            return MM_ENOMEM;
+        s->style = "ground";
+        double x = side ? L : 0, d = 0.04 * L;
+        if (pin) {
+            s->x[0] = x, s->y[0] = 0;
+            s->x[1] = x - d, s->y[1] = -1.5 * d;
+            s->x[2] = x + d, s->y[2] = -1.5 * d;
+        } else {
+            s->x[0] = s->x[1] = x;
+            s->y[0] = -2 * d, s->y[1] = 2 * d;
+        }
+    }
+    return MM_OK;
+}

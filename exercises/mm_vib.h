@@ -1,0 +1,56 @@
+/* mm_vib.h — what the multi-DOF vibration exercises (5.10-5.12, and
+ * num-newmark) share that is not numerics: drawing masses on springs,
+ * bars and beams in an answer's animation, and a mode's motion in frames.
+ * The numerics are in solvers/mm_mdof.h and solvers/mm_fem.h.
+ */
+#ifndef MM_VIB_H
+#define MM_VIB_H
+
+#include "mm_exercise.h"
+#include "mm_fem.h"
+
+/* How many frames show a motion of the given shortest period over t_end
+ * within max_frames (<= MM_ANIM_MAX_FRAMES): 16 frames a period; when
+ * that cannot cover t_end, the animation covers *t_show < t_end, else
+ * t_show = t_end.  At least 2 frames.  A period <= 0 or infinite:
+ * max_frames / 2 frames over t_end.  Keeping answers small (64 KB at the
+ * defaults) is what max_frames is for: pass budget / numbers per frame. */
+int mm_vib_frames(double t_end, double period, int max_frames, double *t_show);
+
+/* Points of a spring drawn by mm_vib_masses_draw: 2 leads, 3 coils. */
+#define MM_VIB_SPRING_POINTS 8
+
+/* Masses on their springs, nf frames: n blocks in a row, block i at rest
+ * at x = (i + 1) gap, moved by q[f*n + i] [m] in frame f.  The springs come
+ * from the stiffness matrix K (n x n): -K_ij joins blocks i and j (next
+ * neighbours in the row; others drawn as a line arching above), the row
+ * sum sum_j K_ij ties block i to the nearer wall (a wall is drawn where a
+ * spring meets it).  gap: rest spacing [m], a few times the largest |q|.
+ * Creates the shapes "wall", "spring i-j", "mass i".  Returns MM_OK or
+ * MM_ENOMEM. */
+int mm_vib_masses_draw(mm_result *res, int n, const double *K, int nf, const double *q,
+                       double gap);
+
+/* Numbers per frame of mm_vib_masses_draw for n masses (at most). */
+int mm_vib_masses_numbers(int n, const double *K);
+
+/* q[f*n + i] = A phi[i*ld + j] sin(2 pi f / (nf - 1)): one period of mode j
+ * in nf frames, and t[f] = f T / (nf - 1), T = 2 pi / omega (t in periods
+ * when omega = 0).  Cannot fail. */
+void mm_vib_mode_frames(int n, const double *phi, int ld, int j, double omega, double A, int nf,
+                        double *t, double *q);
+
+/* A bar's or beam's motion, nf frames of the displacement u (nf x ndof,
+ * every global DOF): a beam's centre line deflected by w(x) (Hermite
+ * interpolation, 4 points per element, at most 400 in all), a bar's axis
+ * with its nodes moved along it (drawn as ticks, 25 at most) and the curve
+ * of u(x) drawn above it, both scaled by scale (metres of drawing per metre
+ * of displacement).  Supports drawn as ground.  Creates "member", "nodes"
+ * (bar), "u(x)" (bar), "support".  Returns MM_OK or MM_ENOMEM. */
+int mm_vib_member_draw(mm_result *res, const mm_fem_problem *p, int nf, const double *u,
+                       double scale);
+
+/* The largest |u| over n values, or 1 when all are 0 (a scale's divisor). */
+double mm_vib_big(const double *u, size_t n);
+
+#endif
