@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "mm_mdof.h"
 #include "mm_scene.h"
 
 double mm_vib_big(const double *u, size_t n)
@@ -216,6 +217,49 @@ int mm_vib_member_draw(mm_result *res, const mm_fem_problem *p, int nf, const do
             s->x[0] = s->x[1] = x;
             s->y[0] = -2 * d, s->y[1] = 2 * d;
         }
+    }
+    return MM_OK;
+}
+
+int mm_vib_check_system(const mm_value *M, const mm_value *C, const mm_value *K, int nvec,
+                        const mm_value *const *vec, const char *const *vnames, mm_error *err)
+{
+    int n = M->rows;
+    const mm_value *sq[3] = {M, C, K};
+    static const char *const sname[3] = {"M", "C", "K"};
+    for (int k = 0; k < 3; k++) {
+        const mm_value *v = sq[k];
+        if (!v)
+            continue;
+        if (v->rows != n || v->cols != n)
+            return mm_error_set(err, MM_ERANGE, sname[k], "%s must be square and n x n like M (n = %d); got "
+                                "%d x %d", sname[k], n, v->rows, v->cols);
+        double big = mm_vib_big(v->data, (size_t)n * n);
+        for (int i = 0; i < n; i++)
+            for (int j = i + 1; j < n; j++)
+                if (fabs(v->data[i * n + j] - v->data[j * n + i]) > 1e-12 * big)
+                    return mm_error_set(err, MM_EVALUE, sname[k], "%s must be symmetric, but %s(%d,%d) = %g "
+                                        "and %s(%d,%d) = %g", sname[k], sname[k], i + 1, j + 1,
+                                        v->data[i * n + j], sname[k], j + 1, i + 1, v->data[j * n + i]);
+    }
+    for (int k = 0; k < nvec; k++)
+        if (vec[k]->cols != n)
+            return mm_error_set(err, MM_ERANGE, vnames[k], "%s must have %d values, one per coordinate; got %d",
+                                vnames[k], n, vec[k]->cols);
+    double w[MM_MDOF_MAX_STATE_DOF];
+    for (int k = 1; k < 3 && n <= MM_MDOF_MAX_STATE_DOF; k++) {
+        if (!sq[k])
+            continue;
+        mm_mdof_system ms = {n, M->data, NULL, sq[k]->data};
+        int rc = mm_mdof_modes(&ms, n, w, NULL, NULL, err);
+        if (rc == MM_ESINGULAR)
+            return mm_error_set(err, MM_ERANGE, "M", "M must be positive definite (every motion needs "
+                                "kinetic energy); this one is not");
+        if (rc == MM_ERANGE && k == 1)
+            return mm_error_set(err, MM_ERANGE, "C", "C must be positive semidefinite (a damper takes energy "
+                                "out, never puts it in)");
+        if (rc)
+            return rc;
     }
     return MM_OK;
 }

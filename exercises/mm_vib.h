@@ -8,6 +8,7 @@
 
 #include "mm_exercise.h"
 #include "mm_fem.h"
+#include "mm_status.h"
 
 /* How many frames show a motion of the given shortest period over t_end
  * within max_frames (<= MM_ANIM_MAX_FRAMES): 16 frames a period; when
@@ -49,6 +50,14 @@ void mm_vib_mode_frames(int n, const double *phi, int ld, int j, double omega, d
  * (bar), "u(x)" (bar), "support".  Returns MM_OK or MM_ENOMEM. */
 int mm_vib_member_draw(mm_result *res, const mm_fem_problem *p, int nf, const double *u,
                        double scale);
+
+/* The matrices of M q'' + C q' + K q = F as parameters named "M", "C",
+ * "K" (C may be NULL): square, n x n like M, symmetric to 1e-12 of their
+ * largest entry, M positive definite, C and K positive semidefinite; and
+ * the nvec vectors vec[k] (named vnames[k]) of n values each.  Returns
+ * MM_OK or MM_ERANGE / MM_EVALUE naming the parameter and saying why. */
+int mm_vib_check_system(const mm_value *M, const mm_value *C, const mm_value *K, int nvec,
+                        const mm_value *const *vec, const char *const *vnames, mm_error *err);
 
 /* The largest |u| over n values, or 1 when all are 0 (a scale's divisor). */
 double mm_vib_big(const double *u, size_t n);

@@ -11,6 +11,7 @@
 
 #include "mm_complex.h"
 #include "mm_linalg.h"
+#include "mm_ode.h"
 #include "mm_sdof.h"
 
 /* ==== small dense helpers (row-major) ======================================= */
@@ -530,6 +531,84 @@ out:
     free(B1);
     free(B0);
     free(A);
+    return rc;
+}
+
+/* ==== a general force: DOP853 ================================================== */
+
+typedef struct ode_ctx {
+    const mm_mdof_system *s;
+    mm_newmark_force_fn force;
+    void *params;
+    double *Minv, *r;
+    long evals;
+} ode_ctx;
+
+/* y = (q, q'): y' = (q', M^-1 (F - C q' - K q)). */
+static int ode_rhs(double t, const double *y, double *dy, void *p)
+{
+    ode_ctx *c = p;
+    const mm_mdof_system *s = c->s;
+    int n = s->n, rc = c->force(t, y, y + n, c->r, c->params);
+    c->evals++;
+    if (rc)
+        return rc;
+    for (int i = 0; i < n; i++) {
+        for (int j = 0; j < n; j++)
+            c->r[i] -= (s->C ? s->C[i * n + j] * y[n + j] : 0) + (s->K ? s->K[i * n + j] * y[j] : 0);
+        dy[i] = y[n + i];
+    }
+    matvec(n, c->Minv, c->r, dy + n);
+    return 0;
+}
+
+int mm_mdof_ode(const mm_mdof_system *s, mm_newmark_force_fn force, void *params, const double *q0,
+                const double *v0, int nt, const double *t, double rtol, double scale, double *q,
+                long *evals, mm_error *err)
+{
+    int n = s->n, rc;
+    if (n < 1 || n > MM_MDOF_MAX_STATE_DOF)
+        return mm_error_set(err, MM_ERANGE, "n", "the reference is computed for 1 to %d degrees of "
+                            "freedom; got %d", MM_MDOF_MAX_STATE_DOF, n);
+    size_t nn = (size_t)n * n;
+    double *Minv = malloc(nn * sizeof *Minv), *Id = calloc(nn, sizeof *Id);
+    double *y = malloc((size_t)nt * 2 * n * sizeof *y), *y0 = malloc(2 * (size_t)n * sizeof *y0);
+    double *r = malloc((size_t)n * sizeof *r);
+    mm_ode_work *w = mm_ode_work_alloc((size_t)(2 * n));
+    ode_ctx c = {s, force, params, Minv, r, 0};
+    if (!Minv || !Id || !y || !y0 || !r || !w) {
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        goto out;
+    }
+    for (int i = 0; i < n; i++) {
+        Id[(size_t)i * n + i] = 1;
+        y0[i] = q0 ? q0[i] : 0;
+        y0[n + i] = v0 ? v0[i] : 0;
+    }
+    if ((rc = mm_linalg_solve(n, n, s->M, Id, Minv, NULL, err)))
+        goto out;
+    mm_ode_problem prob = {.n = (size_t)(2 * n), .f = ode_rhs, .params = &c, .t0 = 0,
+                           .t_end = t[nt - 1] > 0 ? t[nt - 1] : 1, .y0 = y0};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = MM_ODE_DOP853;
+    opt.rtol = rtol;
+    opt.atol = rtol * scale;
+    opt.max_steps = 1000000;
+    mm_ode_result res = {.t_out = t, .nout = (size_t)nt, .y_out = y};
+    if ((rc = mm_ode_check(&prob, &opt, &res, err)) || (rc = mm_ode_solve(&prob, &opt, w, &res, err)))
+        goto out;
+    for (int k = 0; k < nt; k++)
+        memcpy(q + (size_t)k * n, y + (size_t)k * 2 * n, (size_t)n * sizeof *q);
+out:
+    if (evals)
+        *evals = c.evals;
+    mm_ode_work_free(w);
+    free(r);
+    free(y0);
+    free(y);
+    free(Id);
+    free(Minv);
     return rc;
 }
 

@@ -121,6 +121,18 @@ int mm_mdof_newmark_exact(const mm_mdof_system *s, const mm_mdof_motion *mo,
                           const mm_newmark_options *o, int nt, const long *k, double *q,
                           double *v, mm_error *err);
 
+/* The motion of (1) under a general force F(t, q, q') (mm_newmark's
+ * force callback: a nonlinear spring, say) by DOP853 at relative tolerance
+ * rtol (absolute rtol x scale [m]), dense output at the nt times t
+ * (nondecreasing, from 0) into q[i*n + j]: a reference with an error of a
+ * very different kind from a Newmark scheme's, where no exact motion is
+ * known.  *evals (may be NULL) receives the calls of F.  n <=
+ * MM_MDOF_MAX_STATE_DOF.  Errors: MM_ERANGE (n), MM_ESINGULAR (M singular),
+ * MM_ENOCONV (more than 1e6 steps), those of F, MM_ENOMEM. */
+int mm_mdof_ode(const mm_mdof_system *s, mm_newmark_force_fn force, void *params, const double *q0,
+                const double *v0, int nt, const double *t, double rtol, double scale, double *q,
+                long *evals, mm_error *err);
+
 /* ---- one modal coordinate, eq. (2) -------------------------------------------- */
 
 /* A load p(t) = p cos(Omega t) for 0 <= t < t_off, 0 after: Omega = 0 is a

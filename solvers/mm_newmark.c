@@ -522,14 +522,25 @@ static int account_energy(run *r)
 {
     const int n = r->n;
     const double h = r->h;
-    double dW = 0.5 * h * (dot(n, r->v, r->F) + dot(n, r->v1, r->F1));
-    double dD = 0.5 * h * (dot(n, r->v, r->Cv) + dot(n, r->v1, r->Cv1));
+    double dW, dD;
+    if (r->o->work_in_q) {  /* the trapezoidal rule in q: (q1 - q) . (F + F1)/2 */
+        dW = dD = 0;
+        for (int i = 0; i < n; i++) {
+            double dq = r->q1[i] - r->q[i];
+            dW += 0.5 * dq * (r->F[i] + r->F1[i]);
+            dD += 0.5 * dq * (r->Cv[i] + r->Cv1[i]);
+        }
+    } else {                /* the trapezoidal rule in t: h (q'.F + q1'.F1)/2 */
+        dW = 0.5 * h * (dot(n, r->v, r->F) + dot(n, r->v1, r->F1));
+        dD = 0.5 * h * (dot(n, r->v, r->Cv) + dot(n, r->v1, r->Cv1));
+    }
     if (r->k_nonsym) {      /* the circulatory force -(K - K^T)/2 q does work */
         matvec_t(n, r->p->K, r->q, r->x);
         matvec_t(n, r->p->K, r->q1, r->y);
         for (int i = 0; i < n; i++) {
             double ka0 = 0.5 * (r->Kq[i] - r->x[i]), ka1 = 0.5 * (r->Kq1[i] - r->y[i]);
-            dW -= 0.5 * h * (r->v[i] * ka0 + r->v1[i] * ka1);
+            double w = r->o->work_in_q ? 0.5 * (r->q1[i] - r->q[i]) : 0.5 * h;
+            dW -= r->o->work_in_q ? w * (ka0 + ka1) : w * (r->v[i] * ka0 + r->v1[i] * ka1);
         }
     }
     r->work += dW;

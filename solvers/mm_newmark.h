@@ -125,6 +125,13 @@ typedef struct mm_newmark_options {
                              the size of the forces in (1); in [1e-14, 1e-2] */
     int newton_max_iter;  /* most Newton corrections per step */
     long max_steps;       /* refuse runs needing more steps than this */
+    int work_in_q;        /* energy bookkeeping: 0 (default) integrates the
+                             powers q'.F and q'.C q' by the trapezoidal rule
+                             in t; 1 integrates F dq and C q' dq by the
+                             trapezoidal rule in q, (q_{k+1} - q_k).(F_k +
+                             F_{k+1})/2, which average acceleration keeps
+                             exactly on every linear system, forced and
+                             damped (Hughes, ch. 9) */
 } mm_newmark_options;
 
 /* ---- result ------------------------------------------------------------- */
@@ -135,10 +142,11 @@ typedef struct mm_newmark_options {
  * potential uses the symmetric part of K; the work of the antisymmetric
  * (circulatory) part of K is counted in work.  work and dissipated
  * integrate the powers q'.F and q'.C q' by the trapezoidal rule over each
- * step, so the balance residual is a second-order error indicator that
- * needs no reference solution.  It is round-off only where the scheme
- * conserves energy exactly: average acceleration on a free undamped
- * linear system. */
+ * step (or in q, options.work_in_q), so the balance residual is a
+ * second-order error indicator that needs no reference solution.  It is
+ * round-off only where the scheme conserves energy exactly: average
+ * acceleration on a free undamped linear system (and, with work_in_q, on
+ * any linear system). */
 typedef struct mm_newmark_energy {
     double kinetic;       /* 1/2 q'^T M q' [J] */
     double potential;     /* 1/2 q^T K q [J] */

@@ -109,7 +109,7 @@ static const mm_output outputs[] = {
 typedef struct sys {
     int n;
     const double *M, *C, *K, *F, *q0, *v0;
-    double w, knl, Minv[MAXN * MAXN];
+    double w, knl;
 } sys;
 
 static sys sys_of(const mm_value *in)
@@ -150,38 +150,13 @@ static int top_omega(const sys *s, double a, double *wmax, mm_error *err)
 
 static int check(const mm_value *in, mm_error *err)
 {
-    int n = in[P_M].rows, rc;
-    static const int sq[3] = {P_M, P_C, P_K}, vec[3] = {P_F, P_Q0, P_V0};
-    static const char *const sname[3] = {"M", "C", "K"}, *const vname[3] = {"F", "q0", "v0"};
-    for (int k = 0; k < 3; k++) {
-        const mm_value *v = &in[sq[k]];
-        if (v->rows != n || v->cols != n)
-            return mm_error_set(err, MM_ERANGE, sname[k], "%s must be square and n x n like M (n = %d); got "
-                                "%d x %d", sname[k], n, v->rows, v->cols);
-        double big = mm_maxabs(v->data, n * n);
-        for (int i = 0; i < n; i++)
-            for (int j = i + 1; j < n; j++)
-                if (fabs(v->data[i * n + j] - v->data[j * n + i]) > 1e-12 * big)
-                    return mm_error_set(err, MM_EVALUE, sname[k], "%s must be symmetric, but %s(%d,%d) = %g "
-                                        "and %s(%d,%d) = %g", sname[k], sname[k], i + 1, j + 1,
-                                        v->data[i * n + j], sname[k], j + 1, i + 1, v->data[j * n + i]);
-    }
-    for (int k = 0; k < 3; k++)
-        if (in[vec[k]].cols != n)
-            return mm_error_set(err, MM_ERANGE, vname[k], "%s must have %d values, one per coordinate; got %d",
-                                vname[k], n, in[vec[k]].cols);
-    sys s = sys_of(in);
-    double w[MAXN], wmax;
-    mm_mdof_system ms = {n, s.M, NULL, s.C};
-    if ((rc = mm_mdof_modes(&ms, n, w, NULL, NULL, err)) != MM_OK) {
-        if (rc == MM_ESINGULAR)
-            return mm_error_set(err, MM_ERANGE, "M", "M must be positive definite (every motion needs "
-                                "kinetic energy); this one is not");
-        if (!strcmp(err->param, "K"))
-            return mm_error_set(err, MM_ERANGE, "C", "C must be positive semidefinite (a damper takes "
-                                "energy out, never puts it in)");
+    const mm_value *vec[3] = {&in[P_F], &in[P_Q0], &in[P_V0]};
+    static const char *const vname[3] = {"F", "q0", "v0"};
+    int n = in[P_M].rows, rc = mm_vib_check_system(&in[P_M], &in[P_C], &in[P_K], 3, vec, vname, err);
+    if (rc != MM_OK)
         return rc;
-    }
+    sys s = sys_of(in);
+    double wmax;
     if ((rc = top_omega(&s, s.q0[0], &wmax, err)) != MM_OK)
         return rc;
     double h = in[P_H].x, t_end = in[P_TEND].x, max_steps = floor(MAX_WORK / (10 + (n + 1) * (n + 1)));
@@ -205,61 +180,16 @@ static int check(const mm_value *in, mm_error *err)
 
 /* ---- the runs --------------------------------------------------------------------- */
 
-/* What a run keeps: the plotted steps (every stride-th and the last) and
- * the energy balance of eqs. (7)-(8) followed over every step, with W and
- * D by the trapezoidal rule in q (exact for average acceleration on a
- * linear system): eb = E - E0 - W + D. */
-typedef struct follow {
-    const sys *s;
-    long stride, N;
-    int ns;
-    double *t, *q, *eb;                  /* ns, ns x n, ns */
-    double qp[MAXN], Fa[MAXN], Ca[MAXN];
-    double E0, W, D, bal, Emax;
+typedef struct run_out {
+    double *t, *q;               /* the stored rows */
+    mm_newmark_energy *e;        /* eq. (7) at the stored rows */
     mm_newmark_result r;
-} follow;
+} run_out;
 
-static int observe(long k, double t, const double *q, const double *v, const double *a, void *ctx)
-{
-    (void)a;
-    follow *fo = ctx;
-    const sys *s = fo->s;
-    int n = s->n;
-    double Fb[MAXN], Cb[MAXN], E = 0.25 * s->knl * q[0] * q[0] * q[0] * q[0];
-    for (int i = 0; i < n; i++) {
-        Fb[i] = s->F[i] * cos(s->w * t);
-        Cb[i] = 0;
-        double Kq = 0, Mv = 0;
-        for (int j = 0; j < n; j++) {
-            Cb[i] += s->C[i * n + j] * v[j];
-            Kq += s->K[i * n + j] * q[j];
-            Mv += s->M[i * n + j] * v[j];
-        }
-        E += 0.5 * (v[i] * Mv + q[i] * Kq);
-        if (k > 0) {
-            double dq = q[i] - fo->qp[i];
-            fo->W += dq * 0.5 * (fo->Fa[i] + Fb[i]);
-            fo->D += dq * 0.5 * (fo->Ca[i] + Cb[i]);
-        }
-        fo->qp[i] = q[i], fo->Fa[i] = Fb[i], fo->Ca[i] = Cb[i];
-    }
-    if (k == 0)
-        fo->E0 = E;
-    double eb = E - fo->E0 - fo->W + fo->D;
-    fo->bal = fmax(fo->bal, fabs(eb));
-    fo->Emax = fmax(fo->Emax, fmax(fabs(E), fmax(fabs(fo->W), fabs(fo->D))));
-    if (k % fo->stride == 0 || k == fo->N) {
-        int row = k == fo->N ? fo->ns - 1 : (int)(k / fo->stride);
-        fo->t[row] = t;
-        fo->eb[row] = eb;
-        memcpy(fo->q + (size_t)row * n, q, sizeof(double) * n);
-    }
-    return 0;
-}
-
-/* A run of N steps of h, followed; or, with points > 0, points rows spread
- * evenly stored in fo->t, fo->q (the animation). */
-static int run(sys *s, const mm_newmark_options *base, double h, long N, long stride, int points, follow *fo,
+/* N steps of h, storing every stride-th and the last, or `points` rows
+ * spread evenly when points > 0.  The work of F and C by the trapezoidal
+ * rule in q, eq. (8): exact for average acceleration on a linear system. */
+static int run(sys *s, const mm_newmark_options *base, double h, long N, long stride, int points, run_out *o,
                mm_result *res, mm_error *err)
 {
     int n = s->n;
@@ -268,77 +198,26 @@ static int run(sys *s, const mm_newmark_options *base, double h, long N, long st
                                .force_kind = s->knl > 0 ? MM_NEWMARK_FORCE_POSITION : MM_NEWMARK_FORCE_TIME,
                                .params = s, .q0 = s->q0, .qd0 = s->v0, .t0 = 0, .t_end = N * h};
     mm_newmark_options opt = *base;
-    opt.h = h, opt.points = points;
-    *fo = (follow){.s = s, .stride = stride, .N = N};
-    fo->ns = points > 0 ? points : (int)((N + stride - 1) / stride) + 1;
-    fo->t = mm_res_alloc(res, (size_t)fo->ns * sizeof *fo->t);
-    fo->q = mm_res_alloc(res, (size_t)fo->ns * n * sizeof *fo->q);
-    fo->eb = mm_res_alloc(res, (size_t)fo->ns * sizeof *fo->eb);
+    opt.h = h, opt.stride = stride, opt.points = points, opt.work_in_q = 1;
+    int rc = mm_newmark_check(&prob, &opt, err), rows = mm_newmark_output_rows(&prob, &opt);
+    if (rc != MM_OK)
+        return rc;
+    o->t = mm_res_alloc(res, (size_t)rows * sizeof *o->t);
+    o->q = mm_res_alloc(res, (size_t)rows * n * sizeof *o->q);
+    o->e = mm_res_alloc(res, (size_t)rows * sizeof *o->e);
     mm_newmark_work *w = mm_newmark_work_alloc(n);
-    if (!fo->t || !fo->q || !fo->eb || !w) {
+    if (!o->t || !o->q || !o->e || !w) {
         mm_newmark_work_free(w);
         return MM_ENOMEM;
     }
-    if (points > 0)
-        fo->r = (mm_newmark_result){.t = fo->t, .q = fo->q, .max_rows = points};
-    else
-        fo->r = (mm_newmark_result){.observe = observe, .observe_params = fo};
-    int rc = mm_newmark_solve(&prob, &opt, w, &fo->r, err);
+    o->r = (mm_newmark_result){.t = o->t, .q = o->q, .energy = o->e, .max_rows = rows};
+    rc = mm_newmark_solve(&prob, &opt, w, &o->r, err);
     mm_newmark_work_free(w);
     if (rc == MM_ENOCONV || rc == MM_ENONFINITE)
         return mm_error_set(err, MM_ERANGE, "h", "at h = %g s the cubic spring changes too much within a step "
                             "(%s): reduce h or knl", h, rc == MM_ENOCONV ? "Newton did not converge" :
                             "the motion grew without bound");
     return rc;
-}
-
-/* y' = (q', M^-1 (F - C q' - K q)) for DOP853. */
-static int rhs(double t, const double *y, double *dy, void *ctx)
-{
-    const sys *s = ctx;
-    int n = s->n;
-    double r[MAXN];
-    force(t, y, y + n, r, (void *)s);
-    for (int i = 0; i < n; i++) {
-        for (int j = 0; j < n; j++)
-            r[i] -= s->C[i * n + j] * y[n + j] + s->K[i * n + j] * y[j];
-        dy[i] = y[n + i];
-    }
-    for (int i = 0; i < n; i++) {
-        dy[n + i] = 0;
-        for (int j = 0; j < n; j++)
-            dy[n + i] += s->Minv[i * n + j] * r[j];
-    }
-    return 0;
-}
-
-/* The nonlinear reference: DOP853 at rtol 1e-11 onto the sample times. */
-static int dop853_ref(sys *s, int ns, const double *t, double scale, double *q, long *evals, mm_result *res,
-                      mm_error *err)
-{
-    int n = s->n, rc;
-    double Id[MAXN * MAXN] = {0}, y0[2 * MAXN];
-    for (int i = 0; i < n; i++) {
-        Id[i * n + i] = 1;
-        y0[i] = s->q0[i], y0[n + i] = s->v0[i];
-    }
-    if ((rc = mm_linalg_solve(n, n, s->M, Id, s->Minv, NULL, err)) != MM_OK)
-        return rc;
-    double *v = mm_res_alloc(res, (size_t)ns * n * sizeof *v);
-    if (!v)
-        return MM_ENOMEM;
-    mm_ode_result r;
-    rc = mm_ex_ode_grid((size_t)(2 * n), rhs, s, y0, t[ns - 1], ns, t, 1e-11, 1e-11 * scale, 0, NULL, NULL, &r,
-                        res, err);
-    *evals = r.n_eval;
-    if (rc != MM_OK)
-        return rc == MM_ENOCONV ? mm_error_set(err, MM_ERANGE, "knl", "the cubic spring stiffens the system so "
-                                               "much that the reference needs too many steps; lower knl or t_end")
-                                : rc;
-    for (int k = 0; k < ns; k++)        /* mm_ex_ode_grid keeps every component in r.y_out */
-        for (int i = 0; i < n; i++)
-            q[k * n + i] = r.y_out[(size_t)k * 2 * n + i];
-    return MM_OK;
 }
 
 static double worst_diff(int m, const double *a, const double *b)
@@ -359,7 +238,7 @@ static int animate(sys *s, const mm_newmark_options *o, double h, double t_end, 
     long steps = (long)ceil(t_show / h * (1 - 1e-12));
     if (steps < nf - 1)
         nf = (int)steps + 1;
-    follow a;
+    run_out a;
     int rc = run(s, o, h, steps, 1, nf < 2 ? 2 : nf, &a, res, err);
     if (rc != MM_OK)
         return rc;
@@ -415,10 +294,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_newmark_problem pr = {.n = n, .M = s.M, .t0 = 0, .t_end = t_end};
     o.h = h;
     long N = mm_newmark_step_count(&pr, &o), stride = (N + np - 2) / (np - 1);
-    follow r1;
+    run_out r1;
     if ((rc = run(&s, &o, h, N, stride, 0, &r1, res, err)) != MM_OK)
         return rc;
-    int ns = r1.ns;
+    int ns = r1.r.rows;
     long *ks = mm_res_alloc(res, (size_t)ns * sizeof *ks);
     double *q1 = r1.q, *qx = mm_res_alloc(res, (size_t)ns * n * sizeof *qx),
            *qd = mm_res_alloc(res, (size_t)ns * n * sizeof *qd);
@@ -443,7 +322,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                               "matrix (11): worst difference [m] (rounding)", dd, 0, tol);
         err_ref = 8 * eps * ns * fmax(A, mm_maxabs(qx, ns * n));
     } else {
-        if ((rc = dop853_ref(&s, ns, r1.t, fmax(A, 1e-300), qx, &ref_evals, res, err)) != MM_OK)
+        rc = mm_mdof_ode(&ms, force, &s, s.q0, s.v0, ns, r1.t, 1e-11, fmax(A, 1e-300), qx, &ref_evals, err);
+        if (rc == MM_ENOCONV)
+            return mm_error_set(err, MM_ERANGE, "knl", "the cubic spring stiffens the system so much that the "
+                                "reference needs over 1e6 steps; lower knl or t_end");
+        if (rc != MM_OK)
             return rc;
         err_ref = 1e-9 * fmax(A, mm_maxabs(qx, ns * n));      /* rtol 1e-11 over the run: seen below 1e-10 */
         double wt;
@@ -465,7 +348,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                          "stable is not accurate: reduce h", 100 * e1 / Aref, wmax * h, wmax * N * h);
 
     /* ---- energy, eqs. (7)-(8), over every step ---- */
-    double bal = r1.bal / fmax(r1.Emax, 1e-300);
+    double bal = r1.r.energy_error;
     mm_res_scalar_err(res, O_ENERGY, bal, 4 * eps * (double)N, MM_ERR_ESTIMATE);
     int independent = linear;
     if (method == 0 && linear)          /* eq. (8): kept step by step */
@@ -477,7 +360,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * under 1 % of the motion, a step resolving the fastest motion ---- */
     double wf = fmax(wmax, s.w);
     if (e1 > 1e4 * err_ref && e1 < 1e-2 * Aref && wf * h <= 0.5) {
-        follow r2;
+        run_out r2;
         if ((rc = run(&s, &o, h / 2, 2 * N, 2 * stride, 0, &r2, res, err)) != MM_OK)
             return rc;
         double e2 = worst_diff(ns * n, r2.q, qx), p = log2(e1 / e2);
@@ -490,9 +373,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                                   "estimate 4/3 |q_h - q_h/2| [m]", e1, 0, 1.5 * est + 2 * err_ref);
         }
         /* W and D: the h/2 run's differ by 3/4 of the h-run's error */
-        double re = 4 * eps * N * r1.Emax;
-        mm_res_scalar_err(res, O_WORK, r1.W, 4.0 / 3 * fabs(r1.W - r2.W) + re, MM_ERR_ESTIMATE);
-        mm_res_scalar_err(res, O_DISS, r1.D, 4.0 / 3 * fabs(r1.D - r2.D) + re, MM_ERR_ESTIMATE);
+        const mm_newmark_energy *a = &r1.r.energy_end, *b = &r2.r.energy_end;
+        mm_res_scalar_err(res, O_WORK, a->work, 4.0 / 3 * fabs(a->work - b->work), MM_ERR_ESTIMATE);
+        mm_res_scalar_err(res, O_DISS, a->dissipated, 4.0 / 3 * fabs(a->dissipated - b->dissipated),
+                          MM_ERR_ESTIMATE);
         independent = 1;
     }
     if (!independent)
@@ -516,8 +400,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
     }
     for (int k = 0; k < ns; k++) {
+        const mm_newmark_energy *e = &r1.e[k];
         sb->x[k] = r1.t[k];
-        sb->y[k] = r1.eb[k];
+        sb->y[k] = e->kinetic + e->potential - r1.r.energy_start - e->work + e->dissipated;
     }
     const mm_newmark_result *R = &r1.r;
     mm_res_method(res, mm_newmark_method_name(o.method), h);

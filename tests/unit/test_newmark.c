@@ -739,6 +739,27 @@ static void energy_balance_should_be_a_second_order_error_indicator(void **state
               "central difference: second order too");
 }
 
+/* With the work taken by the trapezoidal rule in q, average acceleration
+ * keeps the balance to rounding on a forced, damped system (its step
+ * identity E_{k+1} - E_k = (q_{k+1} - q_k).(F_k + F_{k+1} - C v_k -
+ * C v_{k+1})/2), while central difference still shows its error. */
+static void work_in_q_should_make_the_average_acceleration_balance_exact(void **state)
+{
+    (void)state;
+    osc s = {1.0, 2.0, 100.0, 1.0, 8.0};
+    double x0 = 0.01, v0 = 0.0;
+    mm_newmark_problem p = osc_problem(&s, &x0, &v0, 10.0);
+    mm_newmark_options o = options(MM_NEWMARK_AVERAGE, 0.01);
+    o.work_in_q = 1;
+    mm_newmark_result res;
+    mm_error err;
+    assert_int_equal(integrate_bare(&p, &o, &res, &err), MM_OK);
+    check_abs(res.energy_error, 0, 1e-13, "1000 steps of rounding");
+    o.method = MM_NEWMARK_CENTRAL;
+    assert_int_equal(integrate_bare(&p, &o, &res, &err), MM_OK);
+    assert_true(res.energy_error > 1e-6);
+}
+
 /* HHT-alpha removes energy that no physical damper took: on a free
  * undamped oscillator the balance shows it, while average acceleration
  * keeps the energy to round-off. */
@@ -1309,6 +1330,7 @@ int main(void)
         cmocka_unit_test(verlet_energy_error_should_stay_bounded_over_1e5_periods),
         cmocka_unit_test(average_acceleration_should_conserve_energy_over_1e5_periods),
         cmocka_unit_test(energy_balance_should_be_a_second_order_error_indicator),
+        cmocka_unit_test(work_in_q_should_make_the_average_acceleration_balance_exact),
         cmocka_unit_test(energy_balance_should_show_the_numerical_dissipation_of_hht_alpha),
         cmocka_unit_test(energy_balance_should_count_the_work_of_a_nonsymmetric_stiffness),
         cmocka_unit_test(hht_alpha_should_damp_the_stiff_mode_at_its_spectral_radius),
