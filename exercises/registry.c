@@ -45,6 +45,8 @@ extern const mm_exercise mm_ex_vib_coulomb;
 /* ==== end of 5.2-5.9 ==== */
 
 /* ==== 5 Vibrations, 5.10-5.12 ==== */
+extern const mm_exercise mm_ex_vib_2dof;
+extern const mm_exercise mm_ex_vib_absorber;
 /* ==== end of 5.10-5.12 ==== */
 
 const mm_exercise *const mm_exercises[] = {
@@ -84,6 +86,8 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 5.2-5.9 ==== */
 
     /* ==== 5 Vibrations, 5.10-5.12 ==== */
+    &mm_ex_vib_2dof,
+    &mm_ex_vib_absorber,
     /* ==== end of 5.10-5.12 ==== */
 };
 

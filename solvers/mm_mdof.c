@@ -116,6 +116,23 @@ out:
     return rc;
 }
 
+void mm_mdof_two_dof(double m1, double m2, double k1, double k2, double k3, double *omega,
+                     double *phi)
+{
+    double a = (k1 + k2) / m1, d = (k2 + k3) / m2, b = -k2 / sqrt(m1 * m2);
+    double l2 = 0.5 * (a + d) + hypot(0.5 * (a - d), b);
+    double l1 = l2 > 0 ? (k1 * k2 + k1 * k3 + k2 * k3) / (m1 * m2 * l2) : 0;
+    double th = 0.5 * atan2(2 * b, a - d), c = cos(th), s = sin(th);
+    double x[2][2] = {{-s, c}, {c, s}};          /* x[j]: mode j of [a b; b d] */
+    omega[0] = sqrt(l1);
+    omega[1] = sqrt(l2);
+    for (int j = 0; j < 2; j++) {
+        double sg = x[j][0] < 0 || (x[j][0] == 0 && x[j][1] < 0) ? -1 : 1;
+        phi[j] = sg * x[j][0] / sqrt(m1);         /* phi = M^-1/2 x: phi^T M phi = 1 */
+        phi[2 + j] = sg * x[j][1] / sqrt(m2);
+    }
+}
+
 /* G = [0 I; -M^-1 K  -M^-1 C] (2n x 2n), or its balanced form with the
  * velocity scaled by 1/w when w > 0:  [0 wI; -M^-1 K / w  -M^-1 C]. */
 static int state_matrix(const mm_mdof_system *s, double w, double *G, int ldg, mm_error *err)

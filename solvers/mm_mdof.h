@@ -86,6 +86,19 @@ typedef struct mm_mdof_cmode {
  * MM_ESINGULAR (M singular), MM_ENOCONV, MM_ENOMEM. */
 int mm_mdof_complex_modes(const mm_mdof_system *s, mm_mdof_cmode *modes, mm_error *err);
 
+/* The chain wall-k1-m1-k2-m2-k3-wall in closed form: omega[0] <= omega[1]
+ * [rad/s] and the mass-normalised modes phi (2 x 2, mode j in column j:
+ * phi[i*2 + j], first component >= 0, the second > 0 where the first is
+ * 0), from the symmetric matrix M^-1/2 K M^-1/2 = [a b; b d]:
+ *     lambda_2 = (a + d)/2 + hypot((a - d)/2, b),
+ *     lambda_1 = (k1 k2 + k1 k3 + k2 k3) / (m1 m2 lambda_2)
+ * (no cancellation: every term of the determinant is >= 0), and the
+ * modes by the rotation angle theta = atan2(2b, a - d)/2.  A repeated pair
+ * (k2 = 0, k1/m1 = k3/m2) gives the uncoupled modes.  m1, m2 > 0,
+ * k1, k2, k3 >= 0.  Cannot fail. */
+void mm_mdof_two_dof(double m1, double m2, double k1, double k2, double k3, double *omega,
+                     double *phi);
+
 /* ---- exact motion by transition matrices ------------------------------------ */
 
 typedef struct mm_mdof_motion {
