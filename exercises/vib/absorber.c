@@ -190,7 +190,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * (c2 -> infinity: one mass m1 + m2 on k1) */
     double spread = 0;
     for (int s = -1; s <= 1; s += 2) {
-        double g2 = (1 + s * sqrt(mu / (2 + mu))) / (1 + mu), wp = wn * sqrt(g2);
+        double r = sqrt(mu / (2 + mu));     /* 1 - r = (2/(2 + mu)) / (1 + r), without cancellation */
+        double g2 = (s > 0 ? 1 + r : 2 / (2 + mu) / (1 + r)) / (1 + mu), wp = wn * sqrt(g2);
         for (int k = 0; k < 2; k++) {
             absorber t = o;
             t.c2 = k ? o.c2 : 0;
