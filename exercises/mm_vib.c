@@ -263,3 +263,51 @@ int mm_vib_check_system(const mm_value *M, const mm_value *C, const mm_value *K,
     }
     return MM_OK;
 }
+
+int mm_vib_chain_draw(mm_result *res, int n, int right_wall, int nf, const double *q, double gap)
+{
+    int step = (n + 59) / 60, nm = (n + step - 1) / step, cs = (n + 119) / 120, nc = (n + cs - 1) / cs;
+    double L = (n + 1) * gap, big = mm_vib_big(q, (size_t)nf * n), H = 0.3 * L;
+    mm_shape *line = mm_anim_shape(res, "springs", MM_SHAPE_LINE, nf, nm + 1 + right_wall);
+    mm_shape *across = mm_anim_shape(res, "u across", MM_SHAPE_LINE, nf, nc + 1 + right_wall);
+    if (!line || !across)
+        return MM_ENOMEM;
+    for (int f = 0; f < nf; f++) {
+        const double *u = q + (size_t)f * n;
+        size_t o = (size_t)f * line->npts, p = (size_t)f * across->npts;
+        line->x[o] = 0, line->y[o] = 0;
+        across->x[p] = 0, across->y[p] = H;
+        for (int k = 0; k < nm; k++) {
+            int i = k * step;
+            line->x[o + 1 + k] = (i + 1) * gap + u[i], line->y[o + 1 + k] = 0;
+        }
+        for (int k = 0; k < nc; k++) {
+            int i = k * cs;
+            across->x[p + 1 + k] = (i + 1) * gap, across->y[p + 1 + k] = H + 0.15 * L * u[i] / big;
+        }
+        if (right_wall) {
+            line->x[o + nm + 1] = L, line->y[o + nm + 1] = 0;
+            across->x[p + nc + 1] = L, across->y[p + nc + 1] = H;
+        }
+    }
+    char name[24];
+    for (int k = 0; k < nm; k++) {
+        int i = k * step;
+        snprintf(name, sizeof name, "mass %d", i + 1);
+        mm_shape *c = mm_anim_shape(res, name, MM_SHAPE_CIRCLE, nf, 1);
+        if (!c)
+            return MM_ENOMEM;
+        c->radius = 0.2 * gap * step;
+        for (int f = 0; f < nf; f++)
+            c->x[f] = (i + 1) * gap + q[(size_t)f * n + i], c->y[f] = 0;
+    }
+    for (int side = 0; side <= right_wall; side++) {
+        mm_shape *w = mm_anim_shape(res, side ? "wall right" : "wall left", MM_SHAPE_LINE, 1, 2);
+        if (!w)
+            return MM_ENOMEM;
+        w->style = "ground";
+        w->x[0] = w->x[1] = side ? L : 0;
+        w->y[0] = -0.5 * gap * step, w->y[1] = 0.5 * gap * step;
+    }
+    return MM_OK;
+}

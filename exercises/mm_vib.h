@@ -35,6 +35,16 @@ int mm_vib_masses_draw(mm_result *res, int n, const double *K, int nf, const dou
 /* Numbers per frame of mm_vib_masses_draw for n masses (at most). */
 int mm_vib_masses_numbers(int n, const double *K);
 
+/* A chain of n masses between walls (right_wall: 0 for a free right end),
+ * nf frames: the masses as dots on a line of springs (straight), moved
+ * along the line by q[f*n + i] [m], and the same displacements drawn
+ * across the line as a curve above it (a chain's mode looks like a
+ * string's).  At most 60 masses are drawn (every k-th of a longer chain)
+ * and 120 points of the curve.  gap: the rest spacing [m].  Creates
+ * "springs", "mass i", "wall left", "wall right", "u across".  Returns
+ * MM_OK or MM_ENOMEM. */
+int mm_vib_chain_draw(mm_result *res, int n, int right_wall, int nf, const double *q, double gap);
+
 /* q[f*n + i] = A phi[i*ld + j] sin(2 pi f / (nf - 1)): one period of mode j
  * in nf frames, and t[f] = f T / (nf - 1), T = 2 pi / omega (t in periods
  * when omega = 0).  Cannot fail. */
