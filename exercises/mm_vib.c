@@ -163,8 +163,8 @@ int mm_vib_member_draw(mm_result *res, const mm_fem_problem *p, int nf, const do
 {
     size_t ndof = mm_fem_ndof(p);
     double L = p->uniform.L;
-    int np = 4 * (int)p->n_el + 1 < 401 ? 4 * (int)p->n_el + 1 : 401;
-    int beam = p->kind == MM_FEM_BEAM;
+    int beam = p->kind == MM_FEM_BEAM, per = beam ? 2 : 1, cap = beam ? 61 : 51;
+    int np = per * (int)p->n_el + 1 < cap ? per * (int)p->n_el + 1 : cap;
     mm_shape *m = mm_anim_shape(res, beam ? "member" : "u(x)", MM_SHAPE_LINE, nf, np);
     if (!m)
         return MM_ENOMEM;
@@ -181,7 +181,7 @@ int mm_vib_member_draw(mm_result *res, const mm_fem_problem *p, int nf, const do
             return MM_ENOMEM;
         axis->x[0] = 0, axis->x[1] = L;
         axis->y[0] = axis->y[1] = 0;
-        int nt = p->n_el + 1 < 25 ? (int)p->n_el + 1 : 25;
+        int nt = p->n_el + 1 < 11 ? (int)p->n_el + 1 : 11;
         for (int k = 0; k < nt; k++) {
             size_t node = (size_t)llround((double)p->n_el * k / (nt - 1));
             char name[24];

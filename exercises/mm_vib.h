@@ -53,10 +53,10 @@ void mm_vib_mode_frames(int n, const double *phi, int ld, int j, double omega, d
 
 /* A bar's or beam's motion, nf frames of the displacement u (nf x ndof,
  * every global DOF): a beam's centre line deflected by w(x) (Hermite
- * interpolation, 4 points per element, at most 400 in all), a bar's axis
- * with its nodes moved along it (drawn as ticks, 25 at most) and the curve
- * of u(x) drawn above it, both scaled by scale (metres of drawing per metre
- * of displacement).  Supports drawn as ground.  Creates "member", "nodes"
+ * interpolation, 2 points per element, at most 61 in all), a bar's axis
+ * with its nodes moved along it (drawn as dots, 11 at most) and the curve
+ * of u(x) drawn above it (at most 51 points), both scaled by scale (metres
+ * of drawing per metre of displacement).  Supports drawn as ground.  Creates "member", "nodes"
  * (bar), "u(x)" (bar), "support".  Returns MM_OK or MM_ENOMEM. */
 int mm_vib_member_draw(mm_result *res, const mm_fem_problem *p, int nf, const double *u,
                        double scale);
