@@ -69,6 +69,33 @@ int mm_vib_member_draw(mm_result *res, const mm_fem_problem *p, int nf, const do
 int mm_vib_check_system(const mm_value *M, const mm_value *C, const mm_value *K, int nvec,
                         const mm_value *const *vec, const char *const *vnames, mm_error *err);
 
+/* A modally damped system M q'' + C q' + K q = F cos(W t), C = M Phi
+ * diag(c) Phi^T M (c_j = 2 zeta_j omega_j), from q0, v0, computed three
+ * ways at the ns sampled steps k_i h (every stride-th of N = ceil(t_end/h)
+ * steps, and the last), for the transient exercises:
+ *   q_nm   direct integration, mm_newmark average acceleration, coupled;
+ *   q_ex   modal superposition of all n modes, each exact (mm_mdof);
+ *   q_m    the same with the first m modes only (truncated);
+ * and two checks made on res: q_nm against the superposition of every
+ * mode's exact discrete Newmark solution (rounding: the scheme commutes
+ * with the modal decomposition), and q_ex against the transition matrix of
+ * the coupled system (rounding).  Phi: n x n mass-normalised modes, omega
+ * their frequencies.  Arrays come from res's arena.  Returns MM_OK or an
+ * mm_status code with err filled. */
+typedef struct mm_vib_transient {
+    int ns;               /* samples */
+    long steps, stride;   /* Newmark steps, and steps between samples */
+    double *t, *q_nm, *q_ex, *q_m;   /* ns, and ns x n each */
+    double err_max;       /* max |q_nm - q_ex|: Newmark's error, exact to rounding */
+    double trunc_max;     /* max |q_m - q_ex|: the truncation error, exact */
+    double round;         /* the rounding of these (an estimate) */
+} mm_vib_transient;
+
+int mm_vib_transient_run(mm_result *res, int n, const double *M, const double *K, const double *omega,
+                         const double *Phi, const double *c, int m, const double *q0, const double *v0,
+                         const double *F, double W, double h, double t_end, int points,
+                         mm_vib_transient *out, mm_error *err);
+
 /* The largest |u| over n values, or 1 when all are 0 (a scale's divisor). */
 double mm_vib_big(const double *u, size_t n);
 

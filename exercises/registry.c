@@ -47,6 +47,7 @@ extern const mm_exercise mm_ex_vib_coulomb;
 /* ==== 5 Vibrations, 5.10-5.12 ==== */
 extern const mm_exercise mm_ex_vib_2dof;
 extern const mm_exercise mm_ex_vib_absorber;
+extern const mm_exercise mm_ex_vib_2dof_transient;
 extern const mm_exercise mm_ex_vib_chain_modes;
 extern const mm_exercise mm_ex_vib_bar_modes;
 extern const mm_exercise mm_ex_vib_beam_modes;
@@ -91,6 +92,7 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== 5 Vibrations, 5.10-5.12 ==== */
     &mm_ex_vib_2dof,
     &mm_ex_vib_absorber,
+    &mm_ex_vib_2dof_transient,
     &mm_ex_vib_chain_modes,
     &mm_ex_vib_bar_modes,
     &mm_ex_vib_beam_modes,
