@@ -51,6 +51,7 @@ extern const mm_exercise mm_ex_vib_2dof_transient;
 extern const mm_exercise mm_ex_vib_chain_modes;
 extern const mm_exercise mm_ex_vib_ndof_transient;
 extern const mm_exercise mm_ex_vib_bar_modes;
+extern const mm_exercise mm_ex_vib_bar_wave;
 extern const mm_exercise mm_ex_vib_beam_modes;
 /* ==== end of 5.10-5.12 ==== */
 
@@ -97,6 +98,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_vib_chain_modes,
     &mm_ex_vib_ndof_transient,
     &mm_ex_vib_bar_modes,
+    &mm_ex_vib_bar_wave,
     &mm_ex_vib_beam_modes,
     /* ==== end of 5.10-5.12 ==== */
 };

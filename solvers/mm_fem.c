@@ -603,8 +603,9 @@ static void band_matvec(size_t n, int kd, const double *Ab, const double *x, dou
     }
 }
 
-/* A = U^T U in place (U upper, band storage).  Returns 0, or i + 1 when
- * pivot i is not positive (A not positive definite). */
+/* A = U^T U in place (U upper, band storage); the diagonal slots receive
+ * 1 / U_ii (the solves multiply).  Returns 0, or i + 1 when pivot i is
+ * not positive (A not positive definite). */
 static size_t band_cholesky(size_t n, int kd, double *Ab)
 {
     size_t w = (size_t)kd + 1;
@@ -616,33 +617,53 @@ static size_t band_cholesky(size_t n, int kd, double *Ab)
             d -= Ab[k * w + (i - k)] * Ab[k * w + (i - k)];
         if (!(d > 0))
             return i + 1;
-        ui[0] = sqrt(d);
+        double r = 1 / sqrt(d);
+        ui[0] = r;
         for (size_t dj = 1; dj < w && i + dj < n; dj++) {
             size_t j = i + dj;
             double sum = ui[dj];
             for (size_t k = j > (size_t)kd ? j - (size_t)kd : 0; k < i; k++)
                 sum -= Ab[k * w + (i - k)] * Ab[k * w + (j - k)];
-            ui[dj] = sum / ui[0];
+            ui[dj] = sum * r;
         }
     }
     return 0;
 }
 
-/* Solve U^T U x = b in place. */
-static void band_chol_solve(size_t n, int kd, const double *Ub, double *x)
+/* Is the band matrix diagonal (a lumped mass, say)? */
+static int band_is_diagonal(size_t n, int kd, const double *Ab)
 {
     size_t w = (size_t)kd + 1;
+    for (size_t i = 0; i < n; i++)
+        for (size_t d = 1; d < w && i + d < n; d++)
+            if (Ab[i * w + d] != 0)
+                return 0;
+    return 1;
+}
+
+/* Solve U^T U x = b in place (Ub from band_cholesky); diag: Ub is
+ * diagonal (band_is_diagonal), one product per entry. */
+static void band_chol_solve(size_t n, int kd, const double *Ub, int diag, double *x)
+{
+    size_t w = (size_t)kd + 1;
+    if (diag) {
+        for (size_t i = 0; i < n; i++)
+            x[i] *= Ub[i * w] * Ub[i * w];
+        return;
+    }
     for (size_t i = 0; i < n; i++) {              /* U^T y = b */
         double sum = x[i];
-        for (size_t k = i > (size_t)kd ? i - (size_t)kd : 0; k < i; k++)
+        size_t k0 = i > (size_t)kd ? i - (size_t)kd : 0;
+        for (size_t k = k0; k < i; k++)
             sum -= Ub[k * w + (i - k)] * x[k];
-        x[i] = sum / Ub[i * w];
+        x[i] = sum * Ub[i * w];
     }
     for (size_t i = n; i-- > 0;) {                /* U x = y */
         double sum = x[i];
-        for (size_t d = 1; d < w && i + d < n; d++)
+        size_t dmax = n - 1 - i < w - 1 ? n - 1 - i : w - 1;
+        for (size_t d = 1; d <= dmax; d++)
             sum -= Ub[i * w + d] * x[i + d];
-        x[i] = sum / Ub[i * w];
+        x[i] = sum * Ub[i * w];
     }
 }
 
@@ -686,6 +707,15 @@ out:
  * -1 when x is outside [0, L]. */
 static long locate(const mm_fem_problem *p, double x, double *xi, double *Le)
 {
+    if (!p->elements) {                      /* uniform: the element by division */
+        double L = p->uniform.L, h = L / (double)p->n_el;
+        if (!(x >= 0 && x <= L * (1 + 1e-15)))
+            return -1;
+        size_t e = (size_t)fmin(floor(x / h), (double)p->n_el - 1);
+        *Le = h;
+        *xi = fmin(fmax(x / h - (double)e, 0), 1);
+        return (long)e;
+    }
     double x0 = 0;
     for (size_t e = 0; e < p->n_el; e++) {
         mm_fem_element el = element_at(p, e);
@@ -766,7 +796,7 @@ int mm_fem_static_solve(const mm_fem_problem *p, const double *f, double *u, mm_
     for (size_t g = 0; g < ndof; g++)
         if (map[g] >= 0)
             x[map[g]] = f[g];
-    band_chol_solve(nf, kd, Kb, x);
+    band_chol_solve(nf, kd, Kb, 0, x);
     for (size_t g = 0; g < ndof; g++)
         u[g] = map[g] >= 0 ? x[map[g]] : 0;
 out:
@@ -903,7 +933,7 @@ int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fe
     size_t nf = map ? mm_fem_free_dofs(p, map) : 0, w = 0;
     int kd = mm_fem_half_band(p, nf);
     w = (size_t)kd + 1;
-    double *Kb = NULL, *Mb = NULL, *Sb = NULL, *Mf = NULL, *vec = NULL, *f = NULL;
+    double *Kb = NULL, *Mb = NULL, *Sb = NULL, *Mf = NULL, *vec = NULL, *f = NULL, *fo = NULL;
     if (map) {
         Kb = malloc(nf * w * sizeof *Kb);
         Mb = malloc(nf * w * sizeof *Mb);
@@ -933,6 +963,7 @@ int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fe
         Sb[i] = sm * Mb[i] + sk * Kb[i];
         Mf[i] = Mb[i];
     }
+    int mdiag = band_is_diagonal(nf, kd, Mf), sdiag = band_is_diagonal(nf, kd, Sb);
     if (band_cholesky(nf, kd, Mf) || band_cholesky(nf, kd, Sb)) {
         rc = mm_error_set(err, MM_ESINGULAR, "h", "the matrix a step solves with is not positive "
                           "definite");
@@ -944,8 +975,28 @@ int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fe
     for (size_t g = 0; g < ndof; g++)
         if (map[g] >= 0)
             a[map[g]] = f[g];
-    band_chol_solve(nf, kd, Mf, a);
+    band_chol_solve(nf, kd, Mf, mdiag, a);
 
+    /* the energy identity: E~ with the correction of beta, W and D in q */
+    const double be = tr->scheme == MM_FEM_AVERAGE ? 0.25 : 0.0;
+    fo = malloc(2 * nf * sizeof *fo);
+    if (!fo) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    double *fprev = fo, *cv0 = fo + nf, Wq = 0, Dq = 0, E0 = 0, bal = 0, big = 0;
+    for (size_t g = 0; g < ndof; g++)
+        if (map[g] >= 0)
+            fprev[map[g]] = f[g];
+    memset(cv0, 0, nf * sizeof *cv0);            /* at rest: C v = 0 */
+    {
+        band_matvec(nf, kd, Mb, a, t1);
+        double ama = 0;
+        for (size_t i = 0; i < nf; i++)
+            ama += a[i] * t1[i];
+        E0 = -0.5 * h * h * (0.25 - be) * ama;
+        big = fabs(E0);
+    }
     int row = 0, snapi = 0;
     for (long k = 0;; k++) {
         /* record step k */
@@ -991,16 +1042,49 @@ int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fe
             for (size_t i = 0; i < nf; i++)
                 r[i] -= ca * t1[i] + cb * t2[i];
         }
-        band_chol_solve(nf, kd, Sb, r);             /* a_{k+1} */
-        double big = 0;
+        band_chol_solve(nf, kd, Sb, sdiag, r);      /* a_{k+1} */
+        double qbig = 0, dW = 0, dD = 0;
+        for (size_t g = 0; g < ndof; g++)            /* f_{k+1} again (r was overwritten) */
+            if (map[g] >= 0)
+                t2[map[g]] = f[g];
         for (size_t i = 0; i < nf; i++) {
-            double bt = tr->scheme == MM_FEM_AVERAGE ? 0.25 * h * h : 0;
-            q[i] = qt[i] + bt * r[i];
+            double bt = tr->scheme == MM_FEM_AVERAGE ? 0.25 * h * h : 0, qn = qt[i] + bt * r[i];
+            dW += 0.5 * (qn - q[i]) * (fprev[i] + t2[i]);
+            qt[i] = qn - q[i];                       /* keep the step's dq */
+            q[i] = qn;
             v[i] = vt[i] + 0.5 * h * r[i];
             a[i] = r[i];
-            big = fmax(big, fabs(q[i]));
+            qbig = fmax(qbig, fabs(q[i]));
         }
-        if (!isfinite(big) || big > 1e150) {
+        memcpy(fprev, t2, nf * sizeof *fprev);
+        if (ca != 0 || cb != 0) {                   /* C v_{k+1} into t1, D by the rule in q */
+            band_matvec(nf, kd, Mb, v, t1);
+            band_matvec(nf, kd, Kb, v, t2);
+            for (size_t i = 0; i < nf; i++) {
+                double cv = ca * t1[i] + cb * t2[i];
+                dD += 0.5 * qt[i] * (cv0[i] + cv);
+                cv0[i] = cv;
+            }
+        }
+        Wq += dW;
+        Dq += dD;
+        {
+            double e = 0, ek = 0;
+            band_matvec(nf, kd, Mb, v, t1);
+            for (size_t i = 0; i < nf; i++)
+                ek += 0.5 * v[i] * t1[i];
+            band_matvec(nf, kd, Kb, q, t1);
+            for (size_t i = 0; i < nf; i++)
+                e += 0.5 * q[i] * t1[i];
+            band_matvec(nf, kd, Mb, a, t1);
+            double ama = 0;
+            for (size_t i = 0; i < nf; i++)
+                ama += a[i] * t1[i];
+            double Et = ek + e - 0.5 * h * h * (0.25 - be) * ama;
+            bal = fmax(bal, fabs(Et - E0 - Wq + Dq));
+            big = fmax(big, fmax(fmax(ek, fabs(e)), fmax(fabs(Wq), fabs(Dq))));
+        }
+        if (!isfinite(qbig) || qbig > 1e150) {
             rc = mm_error_set(err, MM_ENONFINITE, "h", "the motion grew without bound by t = %g s: "
                               "the step h = %g s is past the stability limit of %s", tn, h,
                               tr->scheme == MM_FEM_CENTRAL ? "central difference" : "the scheme");
@@ -1008,8 +1092,10 @@ int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fe
         }
     }
     (void)snapi;
+    tr->energy_balance = big > 0 ? bal / big : 0;
     rc = MM_OK;
 out:
+    free(fo);
     free(f);
     free(vec);
     free(Mf);

@@ -310,6 +310,13 @@ typedef struct mm_fem_transient {
     int nsnap;                /* full displacement fields to keep */
     const long *snap;         /* at these steps (each 0..steps) */
     double *snaps;            /* nsnap x ndof, or NULL */
+    double energy_balance;    /* out: the scheme's energy identity over the
+                                 run, max |E~_k - E~_0 - W_k + D_k| over the
+                                 largest term, where E~ = 1/2 v'Mv + 1/2 q'Kq
+                                 - h^2/2 (1/4 - beta) a'Ma (beta = 1/4 average
+                                 acceleration, 0 central difference) and W, D
+                                 the trapezoidal rule in q of f and C v: zero
+                                 but for rounding, a check of the run */
 } mm_fem_transient;
 
 #define MM_FEM_MAX_STEPS 1000000L

@@ -513,7 +513,7 @@ static void banded_newmark_should_equal_the_modal_newmark_solution(void **state)
     for (int c = 0; c < 2; c++) {
         mm_fem_load ld = {MM_FEM_LOAD_POINT, 50, 1.0, Omegas[c], INFINITY, 0};
         double out[STEPS + 1];
-        mm_fem_transient tr = {MM_FEM_AVERAGE, 2e-4, STEPS, dmp, 1, 1, &tip, out, 0, NULL, NULL};
+        mm_fem_transient tr = {MM_FEM_AVERAGE, 2e-4, STEPS, dmp, 1, 1, &tip, out, 0, NULL, NULL, 0};
         assert_int_equal(mm_fem_transient_solve(&p, &ld, &tr, &err), MM_OK);
         ld.P = 1;
         mm_fem_load_vector(&p, &ld, 0, f);
@@ -574,7 +574,7 @@ static void modal_response_should_be_the_limit_of_the_direct_run(void **state)
         for (int r = 0; r < 3; r++) {
             long steps = 8000L << r;
             double h = T / (double)steps, *out = malloc((size_t)(steps + 1) * sizeof *out);
-            mm_fem_transient tr = {MM_FEM_AVERAGE, h, steps, dmp, steps / 40, 1, &mid, out, 0, NULL, NULL};
+            mm_fem_transient tr = {MM_FEM_AVERAGE, h, steps, dmp, steps / 40, 1, &mid, out, 0, NULL, NULL, 0};
             assert_int_equal(mm_fem_transient_solve(&p, &lds[c], &tr, &err), MM_OK);
             double t[41], q[41];
             for (int i = 0; i <= 40; i++)
