@@ -53,6 +53,7 @@ extern const mm_exercise mm_ex_vib_ndof_transient;
 extern const mm_exercise mm_ex_vib_bar_modes;
 extern const mm_exercise mm_ex_vib_bar_wave;
 extern const mm_exercise mm_ex_vib_beam_modes;
+extern const mm_exercise mm_ex_vib_beam_transient;
 /* ==== end of 5.10-5.12 ==== */
 
 const mm_exercise *const mm_exercises[] = {
@@ -100,6 +101,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_vib_bar_modes,
     &mm_ex_vib_bar_wave,
     &mm_ex_vib_beam_modes,
+    &mm_ex_vib_beam_transient,
     /* ==== end of 5.10-5.12 ==== */
 };
 

@@ -905,6 +905,29 @@ int mm_fem_modal_response(const mm_fem_problem *p, const mm_fem_modes *modes, si
 
 /* ==== direct integration ========================================================== */
 
+/* 1/2 q^T K q of the free-DOF vector q, from element strains and
+ * curvatures (no cancellation inside K q, as in rayleigh()). */
+static double strain_energy(const mm_fem_problem *p, const long *map, const double *q)
+{
+    int dpn = dofs_per_node(p->kind);
+    double e = 0, v[4];
+    for (size_t el = 0; el < p->n_el; el++) {
+        mm_fem_element m = element_at(p, el);
+        for (int a = 0; a < 2 * dpn; a++) {
+            long fi = map[el * (size_t)dpn + (size_t)a];
+            v[a] = fi >= 0 ? q[fi] : 0;
+        }
+        double h = m.L;
+        if (p->kind == MM_FEM_BAR) {
+            e += 0.5 * m.E * m.A / h * (v[1] - v[0]) * (v[1] - v[0]);
+        } else {
+            double sl = (v[2] - v[0]) / h, k0 = (6 * sl - 4 * v[1] - 2 * v[3]) / h, k1 = (-6 * sl + 2 * v[1] + 4 * v[3]) / h;
+            e += m.E * m.I * h * (k0 * k0 + k0 * k1 + k1 * k1) / 6;
+        }
+    }
+    return e;
+}
+
 int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fem_transient *tr,
                            mm_error *err)
 {
@@ -977,7 +1000,8 @@ int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fe
             a[map[g]] = f[g];
     band_chol_solve(nf, kd, Mf, mdiag, a);
 
-    /* the energy identity: E~ with the correction of beta, W and D in q */
+    /* the energy identity: E~ with the correction of beta, W and D by the
+     * rule in q, accumulated every step, E~ evaluated at the stored steps */
     const double be = tr->scheme == MM_FEM_AVERAGE ? 0.25 : 0.0;
     fo = malloc(2 * nf * sizeof *fo);
     if (!fo) {
@@ -989,17 +1013,23 @@ int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fe
         if (map[g] >= 0)
             fprev[map[g]] = f[g];
     memset(cv0, 0, nf * sizeof *cv0);            /* at rest: C v = 0 */
-    {
-        band_matvec(nf, kd, Mb, a, t1);
-        double ama = 0;
-        for (size_t i = 0; i < nf; i++)
-            ama += a[i] * t1[i];
-        E0 = -0.5 * h * h * (0.25 - be) * ama;
-        big = fabs(E0);
-    }
     int row = 0, snapi = 0;
     for (long k = 0;; k++) {
         /* record step k */
+        if (k % tr->stride == 0 || k == tr->steps) {
+            double ek = 0, ama = 0, e = strain_energy(p, map, q);
+            band_matvec(nf, kd, Mb, v, t1);
+            for (size_t i = 0; i < nf; i++)
+                ek += 0.5 * v[i] * t1[i];
+            band_matvec(nf, kd, Mb, a, t1);
+            for (size_t i = 0; i < nf; i++)
+                ama += a[i] * t1[i];
+            double Et = ek + e - 0.5 * h * h * (0.25 - be) * ama;
+            if (k == 0)
+                E0 = Et;
+            bal = fmax(bal, fabs(Et - E0 - Wq + Dq));
+            big = fmax(big, fmax(fmax(ek, e), fmax(fabs(Wq), fabs(Dq))));
+        }
         if (tr->out && k % tr->stride == 0) {
             for (int o = 0; o < tr->nout; o++) {
                 long fi = map[tr->dofs[o]];
@@ -1068,22 +1098,6 @@ int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fe
         }
         Wq += dW;
         Dq += dD;
-        {
-            double e = 0, ek = 0;
-            band_matvec(nf, kd, Mb, v, t1);
-            for (size_t i = 0; i < nf; i++)
-                ek += 0.5 * v[i] * t1[i];
-            band_matvec(nf, kd, Kb, q, t1);
-            for (size_t i = 0; i < nf; i++)
-                e += 0.5 * q[i] * t1[i];
-            band_matvec(nf, kd, Mb, a, t1);
-            double ama = 0;
-            for (size_t i = 0; i < nf; i++)
-                ama += a[i] * t1[i];
-            double Et = ek + e - 0.5 * h * h * (0.25 - be) * ama;
-            bal = fmax(bal, fabs(Et - E0 - Wq + Dq));
-            big = fmax(big, fmax(fmax(ek, fabs(e)), fmax(fabs(Wq), fabs(Dq))));
-        }
         if (!isfinite(qbig) || qbig > 1e150) {
             rc = mm_error_set(err, MM_ENONFINITE, "h", "the motion grew without bound by t = %g s: "
                               "the step h = %g s is past the stability limit of %s", tn, h,
