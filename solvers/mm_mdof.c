@@ -635,6 +635,19 @@ out:
 static double sdof_harmonic(double omega, double c, double e0, double ed0, double p, double Omega,
                             double t, double *etad)
 {
+    if (omega > 0 && c > 4 * omega) {
+        /* strongly overdamped (zeta > 2): two decaying exponentials, which
+         * never overflow (cosh and e^{-zeta omega t} would, at large t) */
+        double hc = 0.5 * c, sq = hc * sqrt((1 - 2 * omega / c) * (1 + 2 * omega / c));
+        double r1 = -(hc + sq), r2 = -omega * omega / (hc + sq);      /* fast, slow: no cancellation */
+        double complex P = p / mm_cmplx(omega * omega - Omega * Omega, c * Omega), e = cexp(mm_cmplx(0, Omega * t));
+        double xp0 = creal(P), vp0 = -Omega * cimag(P);
+        double A = ((ed0 - vp0) - r2 * (e0 - xp0)) / (r1 - r2), B = (e0 - xp0) - A;
+        double e1 = exp(r1 * t), e2 = exp(r2 * t);
+        if (etad)
+            *etad = A * r1 * e1 + B * r2 * e2 + creal(mm_cmplx(0, Omega) * P * e);
+        return A * e1 + B * e2 + creal(P * e);
+    }
     if (omega > 0) {
         mm_sdof s = {.m = 1, .c = c, .k = omega * omega, .F0 = p, .omega = Omega, .x0 = e0, .v0 = ed0};
         mm_sdof_props pr;

@@ -315,8 +315,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             return rc;
         double dd = worst_diff(ns * n, q1, qd), big = fmax(A, mm_maxabs(qd, ns * n));
         /* rounding: a few eps of the state per step in the run, per
-         * squaring in the powers */
-        double tol = 4 * eps * ((double)N + 64.0 * ns) * big + 1e-300;
+         * squaring in the powers, and of the phase omega t of the force */
+        double tol = 4 * eps * ((double)N + 64.0 * ns + 2 * s.w * N * h) * big + 1e-300;
         mm_res_scalar_err(res, O_DISC, dd, tol, MM_ERR_BOUND);
         mm_res_check_abs(res, "q(t) vs the exact discrete solution of the scheme, powers of its amplification "
                               "matrix (11): worst difference [m] (rounding)", dd, 0, tol);

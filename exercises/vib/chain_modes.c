@@ -154,7 +154,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                           "bound 8 eps lambda_max / lambda_j", wb, 0, 1);
     /* the backward error of a symmetric eigen solver: up to about n eps lambda_max */
     mm_res_check_abs(res, "modes vs sampled sines (4): worst difference over eps lambda_max / gap x |phi|", shape, 0,
-                     4.0 * n + 32);
+                     16.0 * n + 64);
 
     /* the chosen mode, one period in 24 frames */
     enum { NF = 24 };

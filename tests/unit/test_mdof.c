@@ -345,6 +345,30 @@ static void sdof_pulse_should_leave_the_free_vibration_of_a_rectangular_pulse(vo
     }
 }
 
+/* A strongly overdamped mode (zeta = 50) under a harmonic load: the
+ * exponential form against the transition matrix, and no overflow at
+ * zeta omega t = 1e5 (where cosh and e^{-zeta omega t} would). */
+static void sdof_pulse_should_stay_finite_when_strongly_overdamped(void **state)
+{
+    (void)state;
+    double m = 1, c = 100, k = 1, F = 3, x0 = 0.2, v0 = 1, q[30], v[30];
+    long ks[30];
+    for (int i = 0; i < 30; i++)
+        ks[i] = i;
+    mm_mdof_system s = {1, &m, &c, &k};
+    mm_mdof_motion mo = {&x0, &v0, &F, 2};
+    mm_error err;
+    assert_int_equal(mm_mdof_exact(&s, &mo, 0.1, 30, ks, q, v, &err), MM_OK);
+    mm_mdof_pulse g = {F, 2, INFINITY};
+    for (int i = 0; i < 30; i++) {
+        double vd, x = mm_mdof_sdof_pulse(1, c, x0, v0, &g, ks[i] * 0.1, &vd);
+        check_abs(x, q[i], 1e-13, "overdamped: displacement");
+        check_abs(vd, v[i], 1e-12, "overdamped: velocity");
+    }
+    double x = mm_mdof_sdof_pulse(1e3, 1e6, x0, v0, &g, 1e3, NULL);
+    assert_true(isfinite(x));
+}
+
 /* A ramp load a1 tau from rest, undamped: eta = a1 (tau/w^2 - sin(w tau)/w^3);
  * and a cubic load with damping against DOP853. */
 static int poly_rhs(double t, const double *y, double *dy, void *params)
@@ -413,6 +437,7 @@ int main(void)
         cmocka_unit_test(newmark_runs_should_equal_their_exact_discrete_solution),
         cmocka_unit_test(sdof_pulse_should_handle_rigid_modes),
         cmocka_unit_test(sdof_pulse_should_leave_the_free_vibration_of_a_rectangular_pulse),
+        cmocka_unit_test(sdof_pulse_should_stay_finite_when_strongly_overdamped),
         cmocka_unit_test(sdof_poly_should_be_exact_for_polynomial_loads),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
