@@ -224,7 +224,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         t[i] = h * (double)(i * stride);
     if ((rc = mm_fem_modal_response(&p, &md, (size_t)m, &dmp, &ld, rows, t, 1, &dof, wm, err)))
         return rc;
-    double wmax = mm_vib_big(wd, (size_t)rows), big = fmax(wmax, mm_vib_big(wm, (size_t)rows));
+    double wmax = mm_vib_big(wd, (size_t)rows), big = fmax(wmax, mm_vib_big(wm, (size_t)rows)), newmark_err = 0;
     if (nall == nf) {
         if ((rc = mm_fem_modal_response(&p, &md, nall, &dmp, &ld, rows, t, 1, &dof, wa, err)))
             return rc;
@@ -240,6 +240,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
         mm_res_scalar_err(res, O_TRUNC, tmax, 64 * eps * rows * big, MM_ERR_ESTIMATE);
         mm_res_scalar_err(res, O_TERR, emax, 64 * eps * rows * big, MM_ERR_ESTIMATE);
+        newmark_err = emax;
         /* rounding of the steps, relative to the terms a step adds up (q +
          * h v + h^2 a, which cancel where omega h >> 1), and of the modes:
          * about 30 eps omega_max/omega_1 of the motion (measured on
@@ -286,7 +287,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return rc;
     wst = u[dof];
     mm_res_scalar(res, O_WST, wst);                   /* cubic elements: exact at the nodes */
-    mm_res_scalar_err(res, O_WMAX, wmax, nall == nf ? 0 : rmax, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_WMAX, wmax, nall == nf ? newmark_err : rmax, MM_ERR_ESTIMATE);
     if (wst != 0)
         mm_res_scalar(res, O_DAF, wmax / fabs(wst));
     mm_series *sd = mm_res_series(res, O_SD, rows), *sm = mm_res_series(res, O_SM, rows);
