@@ -60,7 +60,8 @@ static const mm_output outputs[] = {
     [O_HSL] = MM_SCALAR("courant_limit_lumped", "largest stable Courant number of central difference, lumped "
                         "mass (2 / (omega_max h_e / c))", "", .flags = MM_EXACT),
     [O_HSC] = MM_SCALAR("courant_limit_consistent", "the same, consistent mass", "", .flags = MM_EXACT),
-    [O_UMAX] = MM_SCALAR("u_end_max", "largest free-end displacement, the model shown first", "m"),
+    [O_UMAX] = MM_SCALAR("u_end_max", "largest free-end displacement at the stored steps, the model shown first",
+                         "m"),
     [O_UMAXX] = MM_SCALAR("u_end_max_exact", "2 F L / (E A): twice the static stretch", "m", .flags = MM_ANSWER | MM_EXACT),
     [O_EBL] = MM_SCALAR("energy_identity_lumped", "the scheme's energy identity over the run, relative", ""),
     [O_EBC] = MM_SCALAR("energy_identity_consistent", "the same, consistent mass", ""),
@@ -121,8 +122,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     o.method = method ? MM_NEWMARK_AVERAGE : MM_NEWMARK_CENTRAL;
     o.h = h;
 
-    /* the history: every stride-th step, about 150 points */
-    long stride = steps / 150 + 1;
+    /* the history: every stride-th step, about 150 points; where a round
+     * trip 2L/c is a whole number of steps, a divisor of it, so that the
+     * largest displacement falls on a stored step */
+    long stride = steps / 150 + 1, trip = lround(2 * n_el / C);
+    if (fabs(2 * n_el / C - trip) < 1e-9 * trip)
+        while (trip % stride)
+            stride--;
     int rows = (int)(steps / stride) + 1, shown = 0, rc;
     size_t tip = (size_t)n_el;
     mm_series *ux = mm_res_series(res, O_UX, rows), *sx = mm_res_series(res, O_SX, n_el);

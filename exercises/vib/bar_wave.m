@@ -8,6 +8,8 @@ f = 2:n + 1; K = K(f, f); Ml = Ml(f, f); Mc = Mc(f, f);     % u = 0 at x = 0
 lim = [2/(sqrt(max(eig(K, Ml)))*he/c), 2/(sqrt(max(eig(K, Mc)))*he/c)];   % eq. (3), exact for the mesh
 out.courant_limit_lumped = lim(1); out.courant_limit_consistent = lim(2);
 steps = ceil(transits*T/h*(1 - 1e-12)); stride = floor(steps/150) + 1;
+trip = round(2*n/courant);                                   % a round trip in whole steps: stored
+if abs(2*n/courant - trip) < 1e-9*trip, while mod(trip, stride) ~= 0, stride = stride - 1; end, end
 fv = zeros(n, 1); fv(n) = F;                                 % the end force
 explicit = strcmp(method, 'central-difference');
 for model = 1:2                                              % lumped first, then consistent
