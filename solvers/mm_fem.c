@@ -5,6 +5,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -356,13 +357,129 @@ static void rayleigh(const mm_fem_problem *p, const double *phi, double *kk,
     }
 }
 
-static mm_fem_method pick_method(mm_fem_method asked, size_t nf, size_t nev)
+static mm_fem_method pick_method(mm_fem_method asked, size_t nf, size_t nev, int rigid)
 {
-    if (asked == MM_FEM_DENSE || asked == MM_FEM_BANDED)
+    if (asked != MM_FEM_AUTO)
         return asked;
-    if (nf > MM_LINALG_MAX_N)
-        return MM_FEM_BANDED;
-    return nf > 40 && 3 * nev < nf ? MM_FEM_BANDED : MM_FEM_DENSE;
+    int few = nf > MM_LINALG_MAX_N || (nf > 40 && 3 * nev < nf);
+    if (!few)
+        return MM_FEM_DENSE;
+    return !rigid && nev <= 20 ? MM_FEM_SUBSPACE : MM_FEM_BANDED;
+}
+
+/* Banded symmetric algebra, defined below with the transient drivers. */
+static void band_matvec(size_t n, int kd, const double *Ab, const double *x, double *y);
+static size_t band_cholesky(size_t n, int kd, double *Ab);
+static void band_chol_solve(size_t n, int kd, const double *Ub, int diag, double *x);
+
+/* The nwant lowest eigenpairs of the banded pencil (Kb, Mb), K positive
+ * definite, by subspace iteration (K. J. Bathe, Finite Element Procedures,
+ * sec. 11.6): X <- K^-1 M X, then the Ritz step on its span, until the
+ * wanted Ritz values stop changing.  lambda[nwant], V (nf x nwant,
+ * row-major, mass-normalised).  MM_ESINGULAR when K is not positive
+ * definite, MM_ENOCONV when 300 iterations do not settle. */
+static int subspace(size_t nf, int kd, const double *Kb, const double *Mb, size_t nwant,
+                    double *lambda, double *V, mm_error *err)
+{
+    size_t w = (size_t)kd + 1, p = nwant + nwant / 2 + 4;
+    if (p > nf)
+        p = nf;
+    int rc = MM_OK;
+    double *Kc = malloc(nf * w * sizeof *Kc), *X = malloc(nf * p * sizeof *X), *Y = malloc(nf * p * sizeof *Y);
+    double *Z = malloc(nf * p * sizeof *Z), *Kr = malloc(p * p * sizeof *Kr), *Mr = malloc(p * p * sizeof *Mr);
+    double *Q = malloc(p * p * sizeof *Q), *lam = malloc(p * sizeof *lam), *prev = malloc(p * sizeof *prev);
+    if (!Kc || !X || !Y || !Z || !Kr || !Mr || !Q || !lam || !prev) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    memcpy(Kc, Kb, nf * w * sizeof *Kc);
+    if (band_cholesky(nf, kd, Kc)) {
+        rc = mm_error_set(err, MM_ESINGULAR, "bc", "the stiffness matrix is not positive definite");
+        goto out;
+    }
+    uint64_t st = UINT64_C(0x9E3779B97F4A7C15);        /* a fixed, irregular start */
+    for (size_t j = 0; j < p; j++)
+        for (size_t i = 0; i < nf; i++) {
+            st ^= st << 13, st ^= st >> 7, st ^= st << 17;
+            X[j * nf + i] = j == 0 ? 1.0 : (double)(st >> 11) / 9007199254740992.0 - 0.5;
+        }
+    int settled = 0;
+    for (size_t j = 0; j < p; j++)                     /* Y = M X */
+        band_matvec(nf, kd, Mb, X + j * nf, Y + j * nf);
+    for (int it = 0;; it++) {
+        for (size_t j = 0; j < p; j++) {               /* Z = K^-1 Y, X <- M Z */
+            memcpy(Z + j * nf, Y + j * nf, nf * sizeof *Z);
+            band_chol_solve(nf, kd, Kc, 0, Z + j * nf);
+            band_matvec(nf, kd, Mb, Z + j * nf, X + j * nf);
+        }
+        for (size_t a = 0; a < p; a++)                 /* Kr = Z^T K Z = Z^T (old Y), Mr = Z^T M Z */
+            for (size_t b = a; b < p; b++) {
+                double sk = 0, sm = 0;
+                for (size_t i = 0; i < nf; i++) {
+                    sk += Z[a * nf + i] * Y[b * nf + i];
+                    sm += Z[a * nf + i] * X[b * nf + i];
+                }
+                Kr[a * p + b] = Kr[b * p + a] = sk;
+                Mr[a * p + b] = Mr[b * p + a] = sm;
+            }
+        for (size_t a = 0; a < p; a++)                 /* symmetric to rounding: make it exact */
+            for (size_t b = a + 1; b < p; b++)
+                Kr[a * p + b] = Kr[b * p + a] = 0.5 * (Kr[a * p + b] + Kr[b * p + a]);
+        mm_error e2;
+        if ((rc = mm_linalg_sygv((int)p, Kr, Mr, lam, Q, &e2))) {
+            rc = mm_error_set(err, rc == MM_ESINGULAR ? MM_ENOCONV : rc, NULL, "subspace iteration: %s", e2.msg);
+            goto out;
+        }
+        /* the new vectors Z Q, and their M products (M Z) Q for the next
+         * round: Y <- (M Z) Q, Z <- Z Q (Z Q into Y's old place first) */
+        for (size_t j = 0; j < p; j++)
+            for (size_t i = 0; i < nf; i++) {
+                double sum = 0;
+                for (size_t k = 0; k < p; k++)
+                    sum += Z[k * nf + i] * Q[k * p + j];
+                Y[j * nf + i] = sum;
+            }
+        double *t = Z;
+        Z = Y, Y = t;                                  /* Z: the Ritz vectors */
+        for (size_t j = 0; j < p; j++)
+            for (size_t i = 0; i < nf; i++) {
+                double sum = 0;
+                for (size_t k = 0; k < p; k++)
+                    sum += X[k * nf + i] * Q[k * p + j];
+                Y[j * nf + i] = sum;
+            }
+        /* settled: the wanted Ritz values change by less than 1e-10 twice
+         * running (they then jitter at ~1e-12, their rounding; the modes
+         * are good to ~1e-6 and the Rayleigh quotients the caller takes
+         * of them to ~1e-12) */
+        double change = 0;
+        for (size_t j = 0; j < nwant && it > 0; j++)
+            change = fmax(change, fabs(lam[j] - prev[j]) / fabs(lam[j]));
+        memcpy(prev, lam, p * sizeof *lam);
+        settled = it > 0 && change <= 1e-10 ? settled + 1 : 0;
+        if (settled == 2)
+            break;
+        if (it == 300) {
+            rc = mm_error_set(err, MM_ENOCONV, NULL, "subspace iteration did not settle");
+            goto out;
+        }
+    }
+    for (size_t j = 0; j < nwant; j++) {
+        lambda[j] = lam[j];
+        for (size_t i = 0; i < nf; i++)
+            V[i * nwant + j] = Z[j * nf + i];
+    }
+out:
+    free(prev);
+    free(lam);
+    free(Q);
+    free(Mr);
+    free(Kr);
+    free(Z);
+    free(Y);
+    free(X);
+    free(Kc);
+    return rc;
 }
 
 /* Sign: the first displacement (u or w, not theta) larger than 1e-6 of the
@@ -403,14 +520,16 @@ int mm_fem_modes_solve(const mm_fem_problem *p, size_t nmodes,
                             "modes must be between 1 and %d; got %zu",
                             MM_FEM_MAX_MODES, nmodes);
     if (opt->method != MM_FEM_AUTO && opt->method != MM_FEM_DENSE &&
-        opt->method != MM_FEM_BANDED)
+        opt->method != MM_FEM_BANDED && opt->method != MM_FEM_SUBSPACE)
         return mm_error_set(err, MM_EVALUE, "method",
                             "unknown solver method code %d", (int)opt->method);
 
     size_t ndof = mm_fem_ndof(p), fixed[4], nfix = fixed_dofs(p, fixed);
     size_t nf = ndof - nfix, nrig = rigid_possible(p);
     size_t nwant = nmodes + nrig < nf ? nmodes + nrig : nf;
-    mm_fem_method method = pick_method(opt->method, nf, nwant);
+    mm_fem_method method = pick_method(opt->method, nf, nwant, nrig > 0);
+    if (method == MM_FEM_SUBSPACE && nrig > 0)
+        method = MM_FEM_BANDED;           /* K is singular: no K^-1 */
     int kd = half_band(p->kind);
     if ((size_t)kd >= nf)
         kd = (int)nf - 1;             /* a tiny mesh: the band is the matrix */
@@ -442,6 +561,12 @@ int mm_fem_modes_solve(const mm_fem_problem *p, size_t nmodes,
         band_to_dense(nf, kd, Kb, K);
         band_to_dense(nf, kd, Mb, M);
         rc = mm_linalg_sygv((int)nf, K, M, lambda, V, err);
+    } else if (method == MM_FEM_SUBSPACE) {
+        rc = subspace(nf, kd, Kb, Mb, nwant, lambda, V, err);
+        if (rc == MM_ENOCONV && opt->method == MM_FEM_AUTO) {   /* fall back */
+            method = MM_FEM_BANDED;
+            rc = mm_linalg_sbgv_first((int)nf, kd, (int)nwant, Kb, Mb, lambda, V, err);
+        }
     } else {
         rc = mm_linalg_sbgv_first((int)nf, kd, (int)nwant, Kb, Mb, lambda, V, err);
     }
@@ -701,6 +826,18 @@ out:
     free(Kb);
     free(map);
     return rc;
+}
+
+double mm_fem_omega_bound(const mm_fem_problem *p)
+{
+    double top = 0;
+    for (size_t e = 0; e < p->n_el; e++) {
+        mm_fem_element el = element_at(p, e);
+        top = fmax(top, element_top(p->kind, p->mass, &el));
+        if (!p->elements)
+            break;                       /* uniform: every element alike */
+    }
+    return sqrt(top);
 }
 
 /* Element e and local coordinate xi in [0, 1] of the point x of the mesh;

@@ -117,8 +117,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         (rc = mm_fem_modes_solve(&po, (size_t)no, NULL, &other, err)) ||
         (rc = mm_fem_exact_omegas(&p, (size_t)nm, ex, err)))
         return rc;
-    mm_res_method(res, md.method == MM_FEM_DENSE ? "LAPACK dsygvd, dense: every mode of the mesh"
-                                                 : "LAPACK dsbgvx, banded: only the modes shown", 0);
+    mm_res_method(res, md.method == MM_FEM_DENSE    ? "LAPACK dsygvd, dense: every mode of the mesh"
+                       : md.method == MM_FEM_BANDED ? "LAPACK dsbgvx, banded: only the modes shown"
+                                                    : "subspace iteration with K^-1 M, banded: only the modes shown",
+                  0);
     mm_res_method_stat(res, "free_dofs", (double)md.n_free);
 
     /* eq. (4) against the eigen solver: rounding, eps lambda_max / lambda_j */
