@@ -306,8 +306,9 @@ typedef struct mm_exercise {
     const char *title;
     const char *summary;   /* one line for the catalog */
     const char *tags;      /* comma-separated */
-    const char *theory;    /* path of the Markdown file from the source root */
-    const char *script;    /* path of the Octave/MATLAB body (<name>.m), or NULL */
+    const char *theory;    /* path of the Markdown file from the source root; the
+                              Octave/MATLAB body of its script is beside it, with
+                              the extension .m instead of .md */
     const mm_param *params;
     int n_params;
     const mm_output *outputs;   /* every output an answer can carry */
