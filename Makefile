@@ -134,7 +134,8 @@ run: deps
 	@$(MAKE) --no-print-directory all
 	$(SERVER_BIN) --host $(HOST) --port $(PORT)
 
-test: deps
+test:
+	@scripts/deps.sh --test
 	@$(MAKE) --no-print-directory tests
 	@BUILD=$(BUILD) tests/run.sh
 
