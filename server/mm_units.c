@@ -109,6 +109,7 @@ int mm_unit_parse(const char *text, mm_quantity *q, mm_error *err)
 {
     memset(q, 0, sizeof *q);
     q->value = 1;
+    q->number = 1;
     int denominator = 0;
     const char *p = text;
     for (;;) {
@@ -146,6 +147,7 @@ int mm_unit_parse(const char *text, mm_quantity *q, mm_error *err)
             q->dim[k] = (signed char)(q->dim[k] + pw * dim[k]);
         q->has_unit = 1;
     }
+    q->factor = q->value;
     return MM_OK;
 }
 
@@ -188,6 +190,8 @@ int mm_quantity_parse(const char *text, mm_quantity *q, mm_error *err)
     int rc = mm_unit_parse(p, q, err);
     if (rc != MM_OK)
         return rc;
+    q->number = v;
+    q->factor = q->value;
     q->value *= v;
     return MM_OK;
 }

@@ -27,6 +27,8 @@ enum { MM_DIM_KG, MM_DIM_M, MM_DIM_S, MM_DIM_RAD, MM_DIM_COUNT };
 
 typedef struct mm_quantity {
     double value;               /* in SI: kg, m, s, rad and their products */
+    double number;              /* the number as typed (value = number * factor) */
+    double factor;              /* the unit's factor to SI (1 for none) */
     signed char dim[MM_DIM_COUNT];  /* powers of kg, m, s, rad */
     int has_unit;               /* 0: a bare number */
 } mm_quantity;
