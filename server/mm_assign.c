@@ -40,6 +40,7 @@ struct mm_assignment {
     ask ask[MM_ASSIGN_MAX_ASK];
     int nask;
     int class_size, reveal;
+    char key[128];              /* the instructor's key, "" for none */
     char **students;            /* the roster, in order */
     long *roster_draw;          /* the draw each roster student holds */
     int nstudents;
@@ -431,7 +432,7 @@ int mm_assign_load(const cJSON *j, const mm_exercise *ex, mm_assignment **out, m
     snprintf(a->title, sizeof a->title, "%s", cJSON_IsString(title) ? title->valuestring : ex->title);
     for (const cJSON *e = j->child; e; e = e->next) {
         static const char *const keys[] = {"name", "title", "exercise", "params", "ask", "class_size",
-                                           "students", "reveal", "note"};
+                                           "students", "reveal", "note", "instructor_key"};
         int known = 0;
         for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)
             known |= strcmp(e->string, keys[k]) == 0;
@@ -472,6 +473,13 @@ int mm_assign_load(const cJSON *j, const mm_exercise *ex, mm_assignment **out, m
     a->class_size = cJSON_IsNumber(cs) ? cs->valueint : 0;
     if (rv)
         a->reveal = cJSON_IsTrue(rv);
+    const cJSON *key = cJSON_GetObjectItem(j, "instructor_key");
+    if (key && (!cJSON_IsString(key) || strlen(key->valuestring) < 8 || strlen(key->valuestring) >= sizeof a->key)) {
+        rc = mm_error_set(err, MM_EVALUE, "instructor_key", "instructor_key must be a text of 8 to 127 characters");
+        goto fail;
+    }
+    if (key)
+        snprintf(a->key, sizeof a->key, "%s", key->valuestring);
     const cJSON *st = cJSON_GetObjectItem(j, "students");
     if (st) {
         int n = cJSON_GetArraySize(st);
@@ -871,4 +879,168 @@ int mm_assign_check_json(const mm_assignment *a, const char *body, size_t len, m
     cJSON_Delete(doc);
     cJSON_Delete(root);
     return out->nonfinite ? error_doc(out, MM_ENONFINITE, "", "the expected answer is not finite") : 200;
+}
+
+const char *mm_assign_key(const mm_assignment *a) { return a->key[0] ? a->key : NULL; }
+
+/* the variant solved: its inputs and the parsed answer (NULL on failure) */
+static cJSON *solve_variant(const mm_assignment *a, const char *student, mm_input *in,
+                            char (*text)[MM_ASSIGN_TEXT], int *n, mm_error *err)
+{
+    if (mm_assign_variant(a, student, in, text, n, err) != MM_OK)
+        return NULL;
+    mm_buf ans;
+    mm_buf_init(&ans, MM_ANSWER_MAX);
+    int status = mm_api_solve(a->ex, in, *n, &ans);
+    cJSON *doc = status == 200 ? cJSON_Parse(ans.p) : NULL;
+    if (!doc)
+        mm_error_set(err, MM_EINTERNAL, "", "the variant could not be solved");
+    mm_buf_free(&ans);
+    return doc;
+}
+
+static double expected_of(const ask *k, const cJSON *doc)
+{
+    const cJSON *s;
+    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, "scalars")) {
+        if (strcmp(cJSON_GetObjectItem(s, "name")->valuestring, k->name) == 0)
+            return cJSON_GetObjectItem(s, "value")->valuedouble * k->out_factor / k->ask_factor;
+    }
+    return NAN;
+}
+
+static void csv_field(mm_buf *b, const char *s)
+{
+    int quote = strpbrk(s, ",\"\n\r") != NULL;
+    if (quote)
+        mm_buf_char(b, '"');
+    for (; *s; s++) {
+        if (*s == '"')
+            mm_buf_char(b, '"');
+        mm_buf_char(b, *s);
+    }
+    if (quote)
+        mm_buf_char(b, '"');
+}
+
+int mm_assign_csv(const mm_assignment *a, const char *list, size_t len, mm_buf *out)
+{
+    mm_buf_reset(out);
+    mm_buf_puts(out, "student");
+    for (int k = 0; k < a->ex->n_params; k++) {
+        mm_buf_char(out, ',');
+        csv_field(out, a->ex->params[k].name);
+    }
+    for (int i = 0; i < a->nask; i++) {
+        char h[128];
+        snprintf(h, sizeof h, "%s%s%s%s", a->ask[i].name, a->ask[i].rule.unit[0] ? " [" : "",
+                 a->ask[i].rule.unit, a->ask[i].rule.unit[0] ? "]" : "");
+        mm_buf_char(out, ',');
+        csv_field(out, h);
+    }
+    mm_buf_puts(out, "\r\n");
+    mm_input in[MM_MAX_PARAMS];
+    char (*text)[MM_ASSIGN_TEXT] = malloc(MM_MAX_PARAMS * sizeof *text);
+    if (!text)
+        return error_doc(out, MM_ENOMEM, "", "out of memory");
+    int lines = 0, status = 200;
+    for (size_t at = 0; at < len && status == 200;) {
+        size_t end = at;
+        while (end < len && list[end] != '\n')
+            end++;
+        char id[160];
+        size_t idl = 0, k = at;
+        int quoted = k < end && list[k] == '"';
+        for (k += (size_t)quoted; k < end && idl + 1 < sizeof id; k++) {
+            if (quoted ? list[k] == '"' : (list[k] == ',' || list[k] == ';' || list[k] == '\r'))
+                break;
+            id[idl++] = list[k];
+        }
+        while (idl && (id[idl - 1] == ' ' || id[idl - 1] == '\t'))
+            idl--;
+        id[idl] = '\0';
+        at = end + 1;
+        if (!idl || (lines == 0 && (strcmp(id, "id") == 0 || strcmp(id, "student") == 0)))
+            continue;                                   /* blank lines, a header */
+        if (++lines > MM_ASSIGN_MAX_STUDENTS) {
+            status = error_doc(out, MM_ETOOBIG, "", "at most 5000 students in one list");
+            break;
+        }
+        int n;
+        mm_error err;
+        cJSON *doc = solve_variant(a, id, in, text, &n, &err);
+        if (!doc) {
+            status = mm_api_error(out, &err);
+            break;
+        }
+        csv_field(out, id);
+        for (int p = 0; p < n; p++) {
+            mm_buf_char(out, ',');
+            csv_field(out, text[p]);
+        }
+        for (int i = 0; i < a->nask; i++) {
+            char v[40] = "";
+            double x = expected_of(&a->ask[i], doc);
+            if (isfinite(x))
+                snprintf(v, sizeof v, "%.17g", x);
+            mm_buf_char(out, ',');
+            mm_buf_puts(out, v);
+        }
+        mm_buf_puts(out, "\r\n");
+        cJSON_Delete(doc);
+    }
+    free(text);
+    if (status == 200 && lines == 0)
+        status = error_doc(out, MM_EVALUE, "", "the class list has no student ids (one per line, first column)");
+    return out->failed ? error_doc(out, MM_ETOOBIG, "", "the table is too large") : status;
+}
+
+int mm_assign_key_json(const mm_assignment *a, const char *student, mm_buf *out)
+{
+    mm_buf variant;
+    mm_buf_init(&variant, 1 << 20);
+    int status = mm_assign_variant_json(a, student, &variant);
+    if (status != 200) {
+        mm_buf_reset(out);
+        mm_buf_put(out, variant.p, variant.len);
+        mm_buf_free(&variant);
+        return status;
+    }
+    mm_input in[MM_MAX_PARAMS];
+    char (*text)[MM_ASSIGN_TEXT] = malloc(MM_MAX_PARAMS * sizeof *text);
+    int n;
+    mm_error err;
+    cJSON *doc = text ? solve_variant(a, student, in, text, &n, &err) : NULL;
+    free(text);
+    mm_buf_reset(out);
+    if (!doc) {
+        mm_buf_free(&variant);
+        return error_doc(out, MM_EINTERNAL, "", "the variant could not be solved");
+    }
+    mm_buf_puts(out, "{\"variant\":");
+    mm_buf_put(out, variant.p, variant.len);
+    mm_buf_puts(out, ",\"expected\":[");
+    for (int i = 0; i < a->nask; i++) {
+        if (i)
+            mm_buf_char(out, ',');
+        mm_buf_puts(out, "{\"name\":");
+        mm_buf_str(out, a->ask[i].name);
+        double x = expected_of(&a->ask[i], doc);
+        mm_buf_puts(out, ",\"value\":");
+        if (isfinite(x))
+            mm_buf_num(out, x, a->ask[i].name);
+        else
+            mm_buf_puts(out, "null");
+        mm_buf_puts(out, ",\"unit\":");
+        mm_buf_str(out, a->ask[i].rule.unit);
+        mm_buf_char(out, '}');
+    }
+    mm_buf_puts(out, "],\"answer\":");
+    char *ans = cJSON_PrintUnformatted(doc);
+    mm_buf_puts(out, ans ? ans : "null");
+    free(ans);
+    mm_buf_char(out, '}');
+    cJSON_Delete(doc);
+    mm_buf_free(&variant);
+    return 200;
 }

@@ -15,7 +15,8 @@
  *            {"name": "phase", "unit": "deg", "abs": 0.5}],    absolute, in the asked unit
  *    "class_size": 300,                     expected class (for the duplicate warning)
  *    "students": ["s001", "s002"],          optional roster: distinct variants, in order
- *    "reveal": true}                        expected answers shown by a check (default)
+ *    "reveal": true,                        expected answers shown by a check (default)
+ *    "instructor_key": "s3cret"}            unlocks the answer key and the class CSV
  *
  * The judging rules, as the instructor reads them:
  *   - An answer is a number with a unit ("256.6 N", "0.2566 kN", "1,5 kN");
@@ -101,6 +102,22 @@ int mm_assign_variant_json(const mm_assignment *a, const char *student, mm_buf *
  * "unit","tolerance","rule","error"?,"note"?}],"score":k,"max_score":n}.
  * Returns the HTTP status. */
 int mm_assign_check_json(const mm_assignment *a, const char *body, size_t len, mm_buf *out);
+
+/* The instructor's key of the assignment ("instructor_key" in the course
+ * file), or NULL when it has none (then the instructor's routes are off). */
+const char *mm_assign_key(const mm_assignment *a);
+
+/* For the instructor: from a class list (CSV text, the student id in the
+ * first column, an optional header line "id,..." skipped, at most
+ * MM_ASSIGN_MAX_STUDENTS lines), a CSV with one row per student: the id,
+ * every parameter of the variant, and every asked answer in its asked unit
+ * (17 significant digits).  Returns the HTTP status (400 for a bad list). */
+int mm_assign_csv(const mm_assignment *a, const char *list, size_t len, mm_buf *out);
+
+/* For the instructor: the variant with its expected answers and the whole
+ * solve answer ({"variant":{...},"expected":[{"name","value","unit"}],
+ * "answer":{...}}).  Returns the HTTP status. */
+int mm_assign_key_json(const mm_assignment *a, const char *student, mm_buf *out);
 
 /* One judgement, for tests and for the instructor's sheets. */
 typedef struct mm_judgement {

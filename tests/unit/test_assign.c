@@ -247,6 +247,43 @@ static void bad_assignments_should_be_refused_with_the_reason(void **state)
     mm_buf_free(&notes);
 }
 
+static void the_instructor_should_get_a_class_csv_and_an_answer_key(void **state)
+{
+    (void)state;
+    mm_buf notes, csv, key;
+    mm_buf_init(&notes, 1 << 16);
+    mm_buf_init(&csv, 1 << 20);
+    mm_buf_init(&key, 1 << 22);
+    mm_assignment *a = load(forced, &notes, MM_OK);
+    const char *list = "id,name\nalice,Alice A.\n\n\"bob\",Bob B.\r\ncarol\n";
+    assert_int_equal(mm_assign_csv(a, list, strlen(list), &csv), 200);
+    /* a header and three rows; each row's X agrees with the key for that student */
+    int rows = 0;
+    for (const char *p = csv.p; (p = strstr(p, "\r\n")); p += 2)
+        rows++;
+    assert_int_equal(rows, 4);
+    assert_non_null(strstr(csv.p, "student,m,k,c,F0,omega,x0,v0,t_end,points,X [mm],phase [deg],omega_n [rad/s]\r\n"));
+    assert_int_equal(mm_assign_key_json(a, "bob", &key), 200);
+    cJSON *k = cJSON_Parse(key.p);
+    double X = cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(k, "expected"), 0), "value")->valuedouble;
+    const char *row = strstr(csv.p, "\r\nbob,");
+    assert_non_null(row);
+    const char *last3 = row + strcspn(row + 2, "\r") + 2;            /* end of bob's row */
+    int commas = 0;
+    const char *xfield = last3;
+    while (xfield > row && commas < 3)
+        if (*--xfield == ',')
+            commas++;
+    check_rel(strtod(xfield + 1, NULL), X, 0, "the CSV and the key give the same X (mm)");
+    assert_non_null(cJSON_GetObjectItem(cJSON_GetObjectItem(k, "answer"), "scalars"));
+    cJSON_Delete(k);
+    assert_int_equal(mm_assign_csv(a, "id\n", 3, &csv), 400);
+    mm_assign_free(a);
+    mm_buf_free(&notes);
+    mm_buf_free(&csv);
+    mm_buf_free(&key);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -257,6 +294,7 @@ int main(void)
         cmocka_unit_test(variants_should_be_pure_functions_of_assignment_and_student),
         cmocka_unit_test(a_roster_should_get_distinct_variants_and_small_sets_a_warning),
         cmocka_unit_test(bad_assignments_should_be_refused_with_the_reason),
+        cmocka_unit_test(the_instructor_should_get_a_class_csv_and_an_answer_key),
     };
     return cmocka_run_group_tests_name("assign", tests, NULL, NULL);
 }
