@@ -331,6 +331,12 @@ const mm_exercise *mm_exercise_find(const char *id);
 const char *mm_chapter_title(int chapter);
 const char *mm_section_title(const char *section);
 
+/* Check one exercise: id matching its chapter, a section of the book's
+ * contents, the required texts, an output table well formed (names unique
+ * identifiers, families sane, tables with columns and units, one
+ * animation at most).  Returns MM_OK or MM_EINTERNAL saying what is wrong. */
+int mm_exercise_check(const mm_exercise *ex, mm_error *err);
+
 /* Check the registry: ids unique and well formed, every section titled,
  * parameter and output tables well formed (names unique, families sane,
  * tables with columns).  For start-up and tests.  Returns MM_OK or
