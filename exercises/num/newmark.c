@@ -435,7 +435,6 @@ const mm_exercise mm_ex_num_newmark = {
     .summary = "M q'' + C q' + K q = F(q, q', t) for a small system by Newmark, HHT-alpha or central difference.",
     .tags = "numerical methods, time integration, Newmark, HHT-alpha, central difference, Newton, energy",
     .theory = "exercises/num/newmark.md",
-    .script = "exercises/num/newmark.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

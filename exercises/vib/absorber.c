@@ -253,7 +253,6 @@ const mm_exercise mm_ex_vib_absorber = {
     .summary = "A small tuned mass stops the machine it hangs on: anti-resonance, two new peaks, Den Hartog's optimum.",
     .tags = "vibration, 2 DOF, forced, absorber, tuned mass damper, anti-resonance, Den Hartog",
     .theory = "exercises/vib/absorber.md",
-    .script = "exercises/vib/absorber.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

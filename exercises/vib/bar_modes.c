@@ -211,7 +211,6 @@ const mm_exercise mm_ex_vib_bar_modes = {
     .summary = "Natural frequencies of a bar from linear elements, consistent and lumped mass, against n pi c / L.",
     .tags = "vibration, continuous systems, bar, finite elements, consistent mass, lumped mass, convergence",
     .theory = "exercises/vib/bar_modes.md",
-    .script = "exercises/vib/bar_modes.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

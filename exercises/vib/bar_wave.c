@@ -228,7 +228,6 @@ const mm_exercise mm_ex_vib_bar_wave = {
     .summary = "A sudden end load on a bar: the exact travelling front against finite elements, lumped and consistent.",
     .tags = "vibration, waves, bar, finite elements, central difference, Courant number, dispersion",
     .theory = "exercises/vib/bar_wave.md",
-    .script = "exercises/vib/bar_wave.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -195,7 +195,6 @@ const mm_exercise mm_ex_vib_beam_modes = {
     .summary = "Natural frequencies of a beam from Hermite elements against the roots beta L of its frequency equation.",
     .tags = "vibration, continuous systems, beam, finite elements, Euler-Bernoulli, convergence",
     .theory = "exercises/vib/beam_modes.md",
-    .script = "exercises/vib/beam_modes.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -331,7 +331,6 @@ const mm_exercise mm_ex_vib_beam_transient = {
     .summary = "A force crossing a beam, or applied suddenly: modal superposition and Newmark on the FE model.",
     .tags = "vibration, beam, finite elements, moving load, impact, modal superposition, truncation, Newmark",
     .theory = "exercises/vib/beam_transient.md",
-    .script = "exercises/vib/beam_transient.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

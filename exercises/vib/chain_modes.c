@@ -185,7 +185,6 @@ const mm_exercise mm_ex_vib_chain_modes = {
     .summary = "n equal masses on equal springs: frequencies and sampled-sine modes against their closed form.",
     .tags = "vibration, n DOF, chain, natural frequencies, mode shapes, eigenvalues, rounding",
     .theory = "exercises/vib/chain_modes.md",
-    .script = "exercises/vib/chain_modes.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -189,7 +189,6 @@ const mm_exercise mm_ex_vib_ndof_transient = {
     .summary = "A chain pushed at one mass: modal superposition with m modes against direct integration of all.",
     .tags = "vibration, n DOF, transient, modal superposition, Rayleigh damping, truncation, Newmark",
     .theory = "exercises/vib/ndof_transient.md",
-    .script = "exercises/vib/ndof_transient.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

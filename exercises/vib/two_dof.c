@@ -147,7 +147,6 @@ const mm_exercise mm_ex_vib_2dof = {
     .summary = "Two masses in a chain of three springs: two frequencies, two mode shapes, in phase and against.",
     .tags = "vibration, 2 DOF, natural frequencies, mode shapes, eigenvalues",
     .theory = "exercises/vib/two_dof.md",
-    .script = "exercises/vib/two_dof.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -157,7 +157,6 @@ const mm_exercise mm_ex_vib_2dof_transient = {
     .summary = "Two masses set moving: modal superposition (exact) beside Newmark's direct integration.",
     .tags = "vibration, 2 DOF, transient, modal superposition, Newmark, truncation",
     .theory = "exercises/vib/two_dof_transient.md",
-    .script = "exercises/vib/two_dof_transient.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,
