@@ -694,19 +694,95 @@ double mm_mdof_sdof_pulse(double omega, double c, double e0, double ed0,
     return sdof_harmonic(omega, c, x1, v1, 0, 0, t - load->t_off, etad);
 }
 
+/* phi_j(z) = sum_i z^i / (i + j)!, j = 0..5: the series for |z| < 1, else
+ * phi_0 = e^z and phi_{j+1} = (phi_j - 1/j!) / z (no cancellation there). */
+static void phi_functions(double complex z, double complex ph[6])
+{
+    if (cabs(z) < 1) {
+        for (int j = 0; j < 6; j++) {
+            double complex sum = 0, term = 1;
+            double f = 1;
+            for (int k = 2; k <= j; k++)
+                f *= k;
+            term = 1 / f;                              /* z^0 / j! */
+            for (int i = 0; i < 30 && term != 0; i++) {
+                sum += term;
+                term *= z / (i + j + 1);
+            }
+            ph[j] = sum;
+        }
+        return;
+    }
+    double f = 1;
+    ph[0] = cexp(z);
+    for (int j = 0; j < 5; j++) {
+        if (j > 1)
+            f *= j;                                    /* j! */
+        ph[j + 1] = (ph[j] - 1 / f) / z;
+    }
+}
+
+/* the augmented system y = (omega eta, eta', u_0..u_3), u_k = (tau/dt)^k / k!,
+ * by the matrix exponential: the fallback near critical damping */
+static void sdof_poly_expm(double omega, double c, const double a[4], double dt, double *eta, double *etad)
+{
+    double A[36] = {0}, E[36], y0[6] = {omega * *eta, *etad, 1, 0, 0, 0}, dk = dt;
+    A[1] = omega * dt;
+    A[6] = -omega * dt, A[7] = -c * dt;
+    for (int k = 0; k < 4; k++, dk *= dt)
+        A[8 + k] = a[k] * dk * (k == 3 ? 6 : k == 2 ? 2 : 1);     /* a_k k! dt^{k+1} */
+    for (int k = 1; k < 4; k++)
+        A[(2 + k) * 6 + 1 + k] = 1;                    /* du_k = u_{k-1} d(tau/dt) */
+    mm_error e;
+    if (expm(6, A, E, &e) != MM_OK) {                  /* out of memory only */
+        *eta = *etad = NAN;
+        return;
+    }
+    double y[2] = {0, 0};
+    for (int r = 0; r < 2; r++)
+        for (int k = 0; k < 6; k++)
+            y[r] += E[r * 6 + k] * y0[k];
+    *eta = y[0] / omega;
+    *etad = y[1];
+}
+
 void mm_mdof_sdof_poly(double omega, double c, const double a[4], double dt, double *eta,
                        double *etad)
 {
-    double b[4];
-    if (omega > 0) {                  /* a polynomial particular solution, top down */
-        double w2 = omega * omega;
-        b[3] = a[3] / w2;
-        b[2] = (a[2] - 3 * c * b[3]) / w2;
-        b[1] = (a[1] - 2 * c * b[2] - 6 * b[3]) / w2;
-        b[0] = (a[0] - c * b[1] - 2 * b[2]) / w2;
-        double vh, xh = sdof_harmonic(omega, c, *eta - b[0], *etad - b[1], 0, 0, dt, &vh);
-        *eta = xh + b[0] + dt * (b[1] + dt * (b[2] + dt * b[3]));
-        *etad = vh + b[1] + dt * (2 * b[2] + dt * 3 * b[3]);
+    if (omega > 0) {
+        /* the free motion, then the load's response from rest,
+         *   sum_k a_k k! dt^{k+1} (phi_{k+1}(r1 dt) - phi_{k+1}(r2 dt)) / (r1 - r2)
+         * with the roots r1, r2 of r^2 + c r + omega^2: no cancellation
+         * however fast the load changes, while the roots are apart */
+        double zeta = 0.5 * c / omega, hc = 0.5 * c;
+        if (fabs(zeta - 1) < 0.1) {
+            sdof_poly_expm(omega, c, a, dt, eta, etad);
+            return;
+        }
+        double complex r1, r2;
+        if (zeta > 1) {
+            double sq = hc * sqrt((1 - omega / hc) * (1 + omega / hc));
+            r1 = -(hc + sq), r2 = -omega * omega / (hc + sq);
+        } else {
+            double wd = omega * sqrt((1 - zeta) * (1 + zeta));
+            r1 = mm_cmplx(-hc, wd), r2 = mm_cmplx(-hc, -wd);
+        }
+        double vh, xh = sdof_harmonic(omega, c, *eta, *etad, 0, 0, dt, &vh);
+        double complex p1[6], p2[6], fe = 0, fv = 0;
+        phi_functions(r1 * dt, p1);
+        phi_functions(r2 * dt, p2);
+        double fk = 1, dk = dt;
+        for (int k = 0; k < 4; k++) {
+            if (k > 1)
+                fk *= k;
+            if (a[k] != 0) {
+                fe += a[k] * fk * dk * (p1[k + 1] - p2[k + 1]);
+                fv += a[k] * fk * dk * (r1 * p1[k + 1] - r2 * p2[k + 1]);
+            }
+            dk *= dt;
+        }
+        *eta = xh + creal(fe / (r1 - r2));
+        *etad = vh + creal(fv / (r1 - r2));
         return;
     }
     if (c == 0) {                     /* integrate the load twice */
@@ -715,15 +791,21 @@ void mm_mdof_sdof_poly(double omega, double c, const double a[4], double dt, dou
         *etad += dt * (a[0] + dt * (a[1] / 2 + dt * (a[2] / 3 + dt * a[3] / 4)));
         return;
     }
-    /* u = eta': u' + c u = p, particular u_p = sum d_i tau^i */
-    double d[4];
-    d[3] = a[3] / c;
-    d[2] = (a[2] - 3 * d[3]) / c;
-    d[1] = (a[1] - 2 * d[2]) / c;
-    d[0] = (a[0] - d[1]) / c;
-    double em = -expm1(-c * dt), u0 = *etad;
-    *eta += dt * (d[0] + dt * (d[1] / 2 + dt * (d[2] / 3 + dt * d[3] / 4))) + (u0 - d[0]) * em / c;
-    *etad = d[0] + dt * (d[1] + dt * (d[2] + dt * d[3])) + (u0 - d[0]) * (1 - em);
+    /* a rigid-body mode: u = eta', u' + c u = p; from rest by the same
+     * functions, u: sum_k a_k k! dt^{k+1} phi_{k+1}(-c dt), and eta, the
+     * response of eta'' + c eta' = p: sum_k a_k k! dt^{k+2} phi_{k+2}(-c dt) */
+    double complex ph[6];
+    phi_functions(-c * dt, ph);
+    double em = -expm1(-c * dt), u0 = *etad, fu = 0, fx = 0, fk = 1, dk = dt;
+    for (int k = 0; k < 4; k++) {
+        if (k > 1)
+            fk *= k;
+        fu += a[k] * fk * dk * creal(ph[k + 1]);
+        fx += a[k] * fk * dk * dt * creal(ph[k + 2]);
+        dk *= dt;
+    }
+    *eta += u0 * em / c + fx;
+    *etad = u0 * (1 - em) + fu;
 }
 
 int mm_mdof_modal_response(int n, int m, const double *omega, const double *c,

@@ -167,10 +167,13 @@ double mm_mdof_sdof_pulse(double omega, double c, double e0, double ed0,
 
 /* Advance (eta, eta') of (2) exactly over a time dt >= 0 under the
  * polynomial load p(tau) = a[0] + a[1] tau + a[2] tau^2 + a[3] tau^3
- * (tau from 0 at the start of the interval): a particular polynomial
- * solution plus the free motion.  Accurate while omega dt is not tiny for
- * a load of high degree (the polynomial's terms grow like (omega dt)^-deg
- * and cancel).  omega >= 0, c >= 0.  Cannot fail. */
+ * (tau from 0 at the start of the interval): the free motion plus the
+ * load's response from rest, sum_k a_k k! dt^{k+1} (phi_{k+1}(r1 dt) -
+ * phi_{k+1}(r2 dt)) / (r1 - r2) with r1, r2 the roots of r^2 + c r +
+ * omega^2 and phi_j the functions of exponential integrators: to a few eps
+ * however stiff (c >> omega) or fast (omega dt << 1) the mode; within 10 %
+ * of critical damping, where the roots meet, by the exponential of the
+ * augmented 6 x 6 system.  omega >= 0, c >= 0.  Cannot fail. */
 void mm_mdof_sdof_poly(double omega, double c, const double a[4], double dt, double *eta,
                        double *etad);
 

@@ -63,8 +63,7 @@ enum { O_W1, O_WST, O_WMAX, O_DAF, O_TRUNC, O_TEST, O_TERR, O_EB, O_SD, O_SM, O_
 
 static const mm_output outputs[] = {
     [O_W1] = MM_SCALAR("omega1", "lowest natural frequency of the mesh", "rad/s"),
-    [O_WST] = MM_SCALAR("w_static", "static deflection at the probe under P at the load position", "m",
-                        .flags = MM_EXACT),
+    [O_WST] = MM_SCALAR("w_static", "static deflection at the probe under P at the load position", "m"),
     [O_WMAX] = MM_SCALAR("w_max", "largest |deflection| at the probe, direct run", "m", .flags = MM_ANSWER),
     [O_DAF] = MM_SCALAR("dynamic_factor", "w_max / |w_static|", ""),
     [O_TRUNC] = MM_SCALAR("truncation_error", "largest |w_retained - w_all modes| at the probe", "m"),
@@ -179,7 +178,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_fem_modes md = {w, sh, 0, 0, 0, MM_FEM_AUTO};
     if ((rc = mm_fem_modes_solve(&p, nall, &fo, &md, err)))
         return rc;
-    mm_res_scalar_err(res, O_W1, w[0], 1e-10 * w[0], MM_ERR_ESTIMATE);
+    /* rounding: an eigen solver leaves about eps omega_max^2 / omega_1^2 / 2
+     * of omega1 (subspace iteration far less, but a dense solver that much) */
+    double wtop;
+    if ((rc = mm_fem_omega_max(&p, &wtop, err)))
+        return rc;
+    double kappa = (wtop / w[0]) * (wtop / w[0]);     /* omega_max^2 / omega_1^2 ~ cond(K) */
+    mm_res_scalar_err(res, O_W1, w[0], 0.5 * eps * kappa * w[0], MM_ERR_ESTIMATE);
     mm_res_method(res, mm_newmark_method_name(MM_NEWMARK_AVERAGE), h);
     mm_res_method_stat(res, "steps", (double)steps);
     mm_res_method_stat(res, "modes_computed", (double)nall);
@@ -200,9 +205,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * the damping and stiffness a step solves with (kS below), and the
      * curvatures of a fine mesh (measured: 0.08 eps elements^3, 20 to 400
      * elements) */
-    double wtop;
-    if ((rc = mm_fem_omega_max(&p, &wtop, err)))
-        return rc;
     /* kS: how much larger than M the matrix S = M + h/2 C + h^2/4 K a step
      * solves with is, 1 + h c_max/2 + (omega_max h)^2/4 */
     double kS = 1 + 0.5 * h * (dmp.a + dmp.b * wtop * wtop) + 0.25 * (wtop * h) * (wtop * h);
@@ -224,7 +226,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         t[i] = h * (double)(i * stride);
     if ((rc = mm_fem_modal_response(&p, &md, (size_t)m, &dmp, &ld, rows, t, 1, &dof, wm, err)))
         return rc;
-    double wmax = mm_vib_big(wd, (size_t)rows), big = fmax(wmax, mm_vib_big(wm, (size_t)rows)), newmark_err = 0;
+    /* the probe's scale, and the beam's (rounding of the modes and solves
+     * is relative to the whole deflection, not to the probe's) */
+    double wmax = mm_maxabs(wd, rows), big = fmax(wmax, mm_maxabs(wm, rows)), newmark_err = 0, gbig = big;
+    for (size_t g = 0; g < (size_t)nf_anim * nd; g += 2)
+        gbig = fmax(gbig, fabs(snaps[g]));
     if (nall == nf) {
         if ((rc = mm_fem_modal_response(&p, &md, nall, &dmp, &ld, rows, t, 1, &dof, wa, err)))
             return rc;
@@ -238,9 +244,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             emax = fmax(emax, fabs(wd[i] - wa[i]));
             dd = fmax(dd, fabs(wd[i] - wn[i]));
         }
-        mm_res_scalar_err(res, O_TRUNC, tmax, 64 * eps * rows * big, MM_ERR_ESTIMATE);
-        mm_res_scalar_err(res, O_TERR, emax, 64 * eps * rows * big, MM_ERR_ESTIMATE);
-        newmark_err = emax;
+        /* rounding of the sums and of the modes (see the check below) */
+        /* and an eigen solver's rounding of omega_j, eps kappa / 2 relative
+         * at most, as a phase error over the run */
+        double mre = (64 * eps * rows + 256 * eps * (w[nall - 1] / w[0]) + 0.5 * eps * kappa * (1 + w[0] * t_end)) *
+                     gbig;
+        mm_res_scalar_err(res, O_TRUNC, tmax, mre, MM_ERR_ESTIMATE);
+        mm_res_scalar_err(res, O_TERR, emax, mre + 16 * eps * ((double)steps + kS) * gbig, MM_ERR_ESTIMATE);
+        newmark_err = emax + dd;
         /* rounding of the steps, relative to the terms a step adds up (q +
          * h v + h^2 a, which cancel where omega h >> 1), and of the modes:
          * about 30 eps omega_max/omega_1 of the motion (measured on
@@ -259,7 +270,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* eq. (3) at the probe, at the sampled times; the static deflection */
-    double *f = mm_res_alloc(res, nd * sizeof *f), *u = mm_res_alloc(res, nd * sizeof *u), rmax = 0, wst;
+    double *f = mm_res_alloc(res, nd * sizeof *f), *u = mm_res_alloc(res, nd * sizeof *u), rmax = 0, umax = 0, wst;
     mm_series *sr = mm_res_series(res, O_SR, rows);
     if (!f || !u || !sr)
         return MM_ENOMEM;
@@ -280,16 +291,28 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
         sr->x[i] = t[i], sr->y[i] = r;
         rmax = fmax(rmax, fabs(r));
+        for (size_t g = 0; g < nd; g += 2)
+            umax = fmax(umax, fabs(u[g]));
     }
-    mm_res_scalar_err(res, O_TEST, rmax, 64 * eps * big, MM_ERR_ESTIMATE);
+    /* rounding: the static solve leaves up to about eps cond(K) ~ eps kappa of u */
+    mm_res_scalar_err(res, O_TEST, rmax, 64 * eps * big + 2 * eps * kappa * umax, MM_ERR_ESTIMATE);
     mm_fem_load_vector(&p, &still, kind ? 0 : 0.5 * L / ld.v, f);     /* moving: the load at midspan */
     if ((rc = mm_fem_static_solve(&p, f, u, err)))
         return rc;
     wst = u[dof];
-    mm_res_scalar(res, O_WST, wst);                   /* cubic elements: exact at the nodes */
-    mm_res_scalar_err(res, O_WMAX, wmax, nall == nf ? newmark_err : rmax, MM_ERR_ESTIMATE);
+    /* cubic elements: exact at the nodes, but for the solve's rounding */
+    double west = 2 * eps * kappa * fabs(wst);
+    for (size_t g = 0; g < nd; g += 2)
+        west = fmax(west, 2 * eps * kappa * fabs(u[g]));
+    mm_res_scalar_err(res, O_WST, wst, west, MM_ERR_ESTIMATE);
+    /* w_max: off the exact motion by Newmark's error (measured where every
+     * mode is computed, else estimated by r), and by the run's rounding,
+     * a few eps a step of terms up to kS times the motion */
+    double werr = (nall == nf ? newmark_err : rmax) + 16 * eps * ((double)steps + kS) * gbig;
+    mm_res_scalar_err(res, O_WMAX, wmax, werr, MM_ERR_ESTIMATE);
     if (wst != 0)
-        mm_res_scalar(res, O_DAF, wmax / fabs(wst));
+        mm_res_scalar_err(res, O_DAF, wmax / fabs(wst), wmax / fabs(wst) * (werr / fmax(wmax, 1e-300) + west /
+                          fabs(wst)), MM_ERR_ESTIMATE);
     mm_series *sd = mm_res_series(res, O_SD, rows), *sm = mm_res_series(res, O_SM, rows);
     if (!sd || !sm)
         return MM_ENOMEM;

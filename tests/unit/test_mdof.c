@@ -422,6 +422,41 @@ static void sdof_poly_should_be_exact_for_polynomial_loads(void **state)
     }
 }
 
+/* Stiff, fast and near-critical modes, where a polynomial particular
+ * solution cancels catastrophically (a moving load crossing an element in
+ * 80 ns on a mode with c / omega^2 = 0.75 s gave 1e-6 m for 1e-23 m):
+ * against the augmented exponential at 60 digits (mpmath). */
+static void sdof_poly_should_stay_exact_when_stiff_fast_or_near_critical(void **state)
+{
+    (void)state;
+    static const struct {
+        double w, c, a[4], dt, e0, v0, eta, etad;
+        const char *what;
+    } cs[] = {
+        {1.3e8, 1.26e16, {-2.5, 3.0e7, -1.1e14, 4e20}, 8e-8, 0, 0, -9.4188353629817073208e-24,
+         -4.7555543048835967429e-17, "overdamped 5e7 times, the load crossing in 80 ns"},
+        {10, 0.1, {1, 2e6, -3e12, 1e18}, 1e-6, 0.01, -0.5, 0.0099995000001583418699, -0.49999969997501583917,
+         "underdamped, omega dt = 1e-5"},
+        {100, 210, {1, 1e5, 1e10, 1e15}, 1e-5, 0, 0, 7.995101839797925094e-11, 0.000020816541287269410912,
+         "5 % past critical, omega dt = 1e-3"},
+        {0, 1e6, {1, -1e3, 1e6, 1e9}, 1e-3, 0.2, 3, 0.20000300108133733644, 1.9960079940000000831e-6,
+         "rigid, c dt = 1000"},
+        {1, 10, {1, -1, 0.5, 0.1}, 2, 0.3, -2, 0.22685892891605180307, 0.1386737541506355893, "overdamped, slow"},
+        {3, 0, {0, 0, 0, 2}, 1e-4, 0, 0, 9.9999999785714309943e-22, 4.9999999850000009825e-17,
+         "undamped cubic, omega dt = 3e-4"},
+        {100, 195, {1, 0.1, 0.01, 0.001}, 50, 0.02, -1, 0.01558323896589107534, 0.00085937616815000001824,
+         "2.5 % under critical, omega dt = 5000"},
+        {2e5, 4.1e5, {3, -1e6, 2e11, 5e16}, 1e-6, 1e-6, 0.3, 1.2270092185682171337e-6, 0.16192915342009874436,
+         "2.5 % past critical, omega dt = 0.2"},
+    };
+    for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++) {
+        double eta = cs[i].e0, etad = cs[i].v0;
+        mm_mdof_sdof_poly(cs[i].w, cs[i].c, cs[i].a, cs[i].dt, &eta, &etad);
+        check_abs(eta, cs[i].eta, 1e-12 * fabs(cs[i].eta), cs[i].what);
+        check_abs(etad, cs[i].etad, 1e-12 * fabs(cs[i].etad), cs[i].what);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -439,6 +474,7 @@ int main(void)
         cmocka_unit_test(sdof_pulse_should_leave_the_free_vibration_of_a_rectangular_pulse),
         cmocka_unit_test(sdof_pulse_should_stay_finite_when_strongly_overdamped),
         cmocka_unit_test(sdof_poly_should_be_exact_for_polynomial_loads),
+        cmocka_unit_test(sdof_poly_should_stay_exact_when_stiff_fast_or_near_critical),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
