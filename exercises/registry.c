@@ -24,6 +24,7 @@ extern const mm_exercise mm_ex_num_plot;
 /* ==== end of 2 ==== */
 
 /* ==== 3 Statics ==== */
+extern const mm_exercise mm_ex_sta_truss;
 /* ==== end of 3 ==== */
 
 /* ==== 4 Dynamics ==== */
@@ -63,6 +64,7 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 2 ==== */
 
     /* ==== 3 Statics ==== */
+    &mm_ex_sta_truss,
     /* ==== end of 3 ==== */
 
     /* ==== 4 Dynamics ==== */

@@ -215,7 +215,7 @@ static int members_at(const mm_truss *t, int joint)
 /* err->msg: what is wrong, in the words of a statics course (param "members"). */
 static int describe(const mm_truss *t, const mm_truss_result *res, mm_error *err)
 {
-    char dir[48], what[200] = "", extra[120] = "";
+    char dir[48], what[200] = "", extra[200] = "";
     int d = res->determinacy;
     int mech = res->free_joint >= 0, red = res->redundant_member >= 0 || res->redundant_support >= 0;
     if (mech) {
@@ -236,16 +236,20 @@ static int describe(const mm_truss *t, const mm_truss_result *res, mm_error *err
                      direction_words(res->free_dir, dir, sizeof dir));
         } else {
             int c = members_at(t, j);
-            snprintf(what, sizeof what, "joint %d%s can move %s without stretching any member", j + 1,
-                     c == 0 ? " (no member)" : c == 1 ? " (one member only)" : "",
-                     direction_words(res->free_dir, dir, sizeof dir));
+            if (c == 0)
+                snprintf(what, sizeof what, "joint %d is joined to no member, so nothing holds it", j + 1);
+            else
+                snprintf(what, sizeof what, "joint %d%s can move %s without stretching any member", j + 1,
+                         c == 1 ? " (one member only)" : "", direction_words(res->free_dir, dir, sizeof dir));
         }
     }
     if (red) {
         if (res->redundant_member >= 0) {
             int e = res->redundant_member;
-            snprintf(extra, sizeof extra, "member %d (joints %d-%d) is redundant, one of %d forces in a self-stress",
-                     e + 1, t->ends[2 * e] + 1, t->ends[2 * e + 1] + 1, res->redundant_count);
+            snprintf(extra, sizeof extra,
+                     "member %d (joints %d-%d) is redundant: it and %d other forces can be nonzero with no "
+                     "load (a self-stress)",
+                     e + 1, t->ends[2 * e] + 1, t->ends[2 * e + 1] + 1, res->redundant_count - 1);
         } else {
             snprintf(extra, sizeof extra, "the support at joint %d is redundant", res->redundant_support + 1);
         }
