@@ -25,6 +25,9 @@ extern const mm_exercise mm_ex_num_plot;
 
 /* ==== 3 Statics ==== */
 extern const mm_exercise mm_ex_sta_truss;
+extern const mm_exercise mm_ex_sta_belt_friction;
+extern const mm_exercise mm_ex_sta_centroid;
+extern const mm_exercise mm_ex_sta_beam_diagrams;
 /* ==== end of 3 ==== */
 
 /* ==== 4 Dynamics ==== */
@@ -65,6 +68,9 @@ const mm_exercise *const mm_exercises[] = {
 
     /* ==== 3 Statics ==== */
     &mm_ex_sta_truss,
+    &mm_ex_sta_belt_friction,
+    &mm_ex_sta_centroid,
+    &mm_ex_sta_beam_diagrams,
     /* ==== end of 3 ==== */
 
     /* ==== 4 Dynamics ==== */

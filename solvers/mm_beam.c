@@ -462,7 +462,7 @@ void mm_beam_extreme_y(const mm_beam *b, double *value, double *x)
 
 /* ==== virtual work ========================================================================= */
 
-int mm_beam_unit_load(const mm_beam *b, double x0, double *y, mm_error *err)
+int mm_beam_unit_load(const mm_beam *b, double x0, double *y, double *scale, mm_error *err)
 {
     if (!(b->EI > 0))
         return mm_error_set(err, MM_EVALUE, "EI", "the deflection needs EI > 0");
@@ -484,7 +484,7 @@ int mm_beam_unit_load(const mm_beam *b, double x0, double *y, mm_error *err)
     qsort(xs, (size_t)n, sizeof *xs, cmp_double);
     static const double gx[3] = {-0.77459666924148337704, 0, 0.77459666924148337704};
     static const double gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
-    double sum = 0;
+    double sum = 0, abs_sum = 0;
     for (int i = 0; i + 1 < n; i++) {
         double u = xs[i], v = xs[i + 1];
         if (!(v > u))
@@ -495,9 +495,12 @@ int mm_beam_unit_load(const mm_beam *b, double x0, double *y, mm_error *err)
             mm_beam_eval(b, xg, 1, &M);
             mm_beam_eval(ub, xg, 1, &m);
             sum += 0.5 * (v - u) * gw[g] * M.M * m.M;
+            abs_sum += 0.5 * (v - u) * gw[g] * fabs(M.M * m.M);
         }
     }
     *y = sum / b->EI;                            /* eq. (9) */
+    if (scale)
+        *scale = abs_sum / b->EI;
     free(xs);
     mm_beam_free(ub);
     return MM_OK;

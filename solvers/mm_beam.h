@@ -113,7 +113,9 @@ void mm_beam_extreme_y(const mm_beam *b, double *value, double *x);
  * with m the bending moment of a unit upward force at x0 on the same
  * supports, by 3-point Gauss-Legendre quadrature on every piece (exact:
  * M m is a quartic there).  Independent of the double integration.
- * Returns MM_OK, MM_EVALUE when EI = 0, or MM_ENOMEM. */
-int mm_beam_unit_load(const mm_beam *b, double x0, double *y, mm_error *err);
+ * *scale (may be NULL) receives the integral of |M m| / EI, the size of
+ * the terms that cancel in it.  Returns MM_OK, MM_EVALUE when EI = 0, or
+ * MM_ENOMEM. */
+int mm_beam_unit_load(const mm_beam *b, double x0, double *y, double *scale, mm_error *err);
 
 #endif

@@ -203,7 +203,7 @@ static void virtual_work_should_match_the_double_integration(void **state)
         double x = L * k / 14, yv;
         mm_beam_value v;
         mm_beam_eval(b, x, 1, &v);
-        assert_int_equal(mm_beam_unit_load(b, x, &yv, NULL), MM_OK);
+        assert_int_equal(mm_beam_unit_load(b, x, &yv, NULL, NULL), MM_OK);
         /* both exact: rounding of sums of ~100 terms */
         check_abs(yv, v.y, 1e-12 * scale, "unit-load deflection = integrated deflection");
     }
@@ -255,7 +255,7 @@ static void bad_beams_should_be_refused_naming_the_parameter(void **state)
     p.EI = 0;
     mm_beam *b = solved(&p);
     double y;
-    assert_int_equal(mm_beam_unit_load(b, 1, &y, &err), MM_EVALUE);
+    assert_int_equal(mm_beam_unit_load(b, 1, &y, NULL, &err), MM_EVALUE);
     mm_beam_free(b);
     mm_beam_free(NULL);
 }
