@@ -24,6 +24,8 @@ extern const mm_exercise mm_ex_num_plot;
 /* ==== end of 2 ==== */
 
 /* ==== 3 Statics ==== */
+extern const mm_exercise mm_ex_sta_moment;
+extern const mm_exercise mm_ex_sta_force_system;
 extern const mm_exercise mm_ex_sta_truss;
 extern const mm_exercise mm_ex_sta_belt_friction;
 extern const mm_exercise mm_ex_sta_centroid;
@@ -67,6 +69,8 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 2 ==== */
 
     /* ==== 3 Statics ==== */
+    &mm_ex_sta_moment,
+    &mm_ex_sta_force_system,
     &mm_ex_sta_truss,
     &mm_ex_sta_belt_friction,
     &mm_ex_sta_centroid,
