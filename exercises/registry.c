@@ -29,6 +29,7 @@ extern const mm_exercise mm_ex_sta_force_system;
 extern const mm_exercise mm_ex_sta_particle_cables;
 extern const mm_exercise mm_ex_sta_plane_body;
 extern const mm_exercise mm_ex_sta_space_body;
+extern const mm_exercise mm_ex_sta_frame;
 extern const mm_exercise mm_ex_sta_truss;
 extern const mm_exercise mm_ex_sta_belt_friction;
 extern const mm_exercise mm_ex_sta_centroid;
@@ -77,6 +78,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_sta_particle_cables,
     &mm_ex_sta_plane_body,
     &mm_ex_sta_space_body,
+    &mm_ex_sta_frame,
     &mm_ex_sta_truss,
     &mm_ex_sta_belt_friction,
     &mm_ex_sta_centroid,
