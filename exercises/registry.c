@@ -33,6 +33,7 @@ extern const mm_exercise mm_ex_sta_frame;
 extern const mm_exercise mm_ex_sta_truss;
 extern const mm_exercise mm_ex_sta_wedge_incline;
 extern const mm_exercise mm_ex_sta_journal_bearing;
+extern const mm_exercise mm_ex_sta_thrust_bearing;
 extern const mm_exercise mm_ex_sta_belt_friction;
 extern const mm_exercise mm_ex_sta_centroid;
 extern const mm_exercise mm_ex_sta_beam_diagrams;
@@ -84,6 +85,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_sta_truss,
     &mm_ex_sta_wedge_incline,
     &mm_ex_sta_journal_bearing,
+    &mm_ex_sta_thrust_bearing,
     &mm_ex_sta_belt_friction,
     &mm_ex_sta_centroid,
     &mm_ex_sta_beam_diagrams,
