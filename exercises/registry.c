@@ -34,6 +34,7 @@ extern const mm_exercise mm_ex_sta_truss;
 extern const mm_exercise mm_ex_sta_wedge_incline;
 extern const mm_exercise mm_ex_sta_journal_bearing;
 extern const mm_exercise mm_ex_sta_thrust_bearing;
+extern const mm_exercise mm_ex_sta_rolling_resistance;
 extern const mm_exercise mm_ex_sta_belt_friction;
 extern const mm_exercise mm_ex_sta_centroid;
 extern const mm_exercise mm_ex_sta_beam_diagrams;
@@ -86,6 +87,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_sta_wedge_incline,
     &mm_ex_sta_journal_bearing,
     &mm_ex_sta_thrust_bearing,
+    &mm_ex_sta_rolling_resistance,
     &mm_ex_sta_belt_friction,
     &mm_ex_sta_centroid,
     &mm_ex_sta_beam_diagrams,
