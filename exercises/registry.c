@@ -38,6 +38,7 @@ extern const mm_exercise mm_ex_sta_rolling_resistance;
 extern const mm_exercise mm_ex_sta_belt_friction;
 extern const mm_exercise mm_ex_sta_centroid;
 extern const mm_exercise mm_ex_sta_beam_diagrams;
+extern const mm_exercise mm_ex_sta_stability;
 /* ==== end of 3 ==== */
 
 /* ==== 4 Dynamics ==== */
@@ -91,6 +92,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_sta_belt_friction,
     &mm_ex_sta_centroid,
     &mm_ex_sta_beam_diagrams,
+    &mm_ex_sta_stability,
     /* ==== end of 3 ==== */
 
     /* ==== 4 Dynamics ==== */
