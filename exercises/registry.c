@@ -39,6 +39,7 @@ extern const mm_exercise mm_ex_sta_belt_friction;
 extern const mm_exercise mm_ex_sta_centroid;
 extern const mm_exercise mm_ex_sta_beam_diagrams;
 extern const mm_exercise mm_ex_sta_stability;
+extern const mm_exercise mm_ex_sta_virtual_work;
 /* ==== end of 3 ==== */
 
 /* ==== 4 Dynamics ==== */
@@ -93,6 +94,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_sta_centroid,
     &mm_ex_sta_beam_diagrams,
     &mm_ex_sta_stability,
+    &mm_ex_sta_virtual_work,
     /* ==== end of 3 ==== */
 
     /* ==== 4 Dynamics ==== */

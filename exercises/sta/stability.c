@@ -134,6 +134,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
          * exact zero of the computed V', within the rounding of V' over V'' */
         w[i] = roots[i].fx != 0 ? roots[i].width
                                 : 4 * DBL_EPSILON * (s.k * s.a * s.a + s.W * s.L) / fmax(fabs(d2V(&s, roots[i].x)), 1e-300);
+        /* a neutral (triple) root: cos(theta) - 1 rounds to 0 below sqrt(2 eps) */
+        if (roots[i].fx == 0)
+            w[i] = fmin(w[i], 4 * sqrt(DBL_EPSILON));
         d2[i] = d2V(&s, th[i]);
         /* neutral: V'' at rounding level of its terms; then V'''' decides */
         kind[i] = fabs(d2[i]) <= 1e-9 * big ? 1 : d2[i] > 0 ? 2 : 0;
