@@ -158,6 +158,14 @@ static int draw(const mm_value *P, const mm_value *C, const mm_section_props *p,
                          p->yc + half * c, "highlight", 0, 0);
     if (!rc)
         rc = mm_sta_circle(res, "centroid", p->xc, p->yc, 0.015 * size, "highlight");
+    /* a uniform plate of this shape balances on a pin at C: its weight acts
+     * there (drawn per unit areal weight: the arrow's value is the area) */
+    mm_shape *w = mm_anim_shape(res, "weight of a uniform plate (per N/m^2)", MM_SHAPE_ARROW, 1, 2);
+    double *wv = w ? mm_shape_values(res, w) : NULL;
+    if (!wv)
+        return MM_ENOMEM;
+    w->unit = "m^2", w->scale = 0.3 * size / p->A, wv[0] = p->A;
+    w->x[0] = w->x[1] = p->xc, w->y[0] = p->yc, w->y[1] = p->yc - 0.3 * size;
     if (!rc)
         rc = mm_sta_label(res, p->xc + 0.03 * size, p->yc + 0.03 * size, "C (%.4g, %.4g)", p->xc, p->yc);
     if (!rc)
