@@ -110,6 +110,55 @@ int main(void)
     us = time_truss(&p.t, 5, MM_ESINGULAR);
     printf("100-joint truss with a diagonal missing:                             %8.1f us\n", us);
 
+    /* a beam with every kind of load at its limits: 50 forces, 20 distributed, 20 couples, EI */
+    {
+        double pt[2 * 50], dl[4 * 20], mo[2 * 20];
+        for (int i = 0; i < 50; i++)
+            pt[2 * i] = 0.2 * i + 0.05, pt[2 * i + 1] = -100 - i;
+        for (int i = 0; i < 20; i++) {
+            dl[4 * i] = 0.5 * i, dl[4 * i + 1] = 0.5 * i + 0.4, dl[4 * i + 2] = -50, dl[4 * i + 3] = -80;
+            mo[2 * i] = 0.5 * i + 0.2, mo[2 * i + 1] = 30;
+        }
+        mm_beam_problem bp = {.L = 10, .kind = MM_BEAM_TWO_SUPPORTS, .a = 1, .b = 9, .n_point = 50, .point = pt,
+                              .n_dist = 20, .dist = dl, .n_moment = 20, .moment = mo, .EI = 1e6};
+        double best = 1e30;
+        for (int k = 0; k < 50; k++) {
+            double t0 = now_us(), v, x;
+            mm_beam *b;
+            if (mm_beam_solve(&bp, &b, NULL) != MM_OK)
+                return 1;
+            mm_beam_extreme_V(b, &v, &x);
+            mm_beam_extreme_M(b, &v, &x);
+            mm_beam_extreme_y(b, &v, &x);
+            mm_beam_unit_load(b, x, &v, NULL, NULL);
+            mm_beam_free(b);
+            best = fmin(best, now_us() - t0);
+        }
+        printf("beam, 90 loads: solve, extremes of V, M, y and the unit-load deflection: %8.1f us\n", best);
+    }
+    /* a star polygon of 200 vertices: Green's theorem, simplicity test, ear clipping */
+    {
+        double xy[400];
+        int tri[3 * 198];
+        for (int k = 0; k < 200; k++) {
+            double t = 2 * M_PI * k / 200, r = k % 2 ? 1 : 0.6;
+            xy[2 * k] = r * cos(t), xy[2 * k + 1] = r * sin(t);
+        }
+        double best = 1e30, best_t = 1e30;
+        for (int k = 0; k < 20; k++) {
+            mm_section_props sp;
+            double t0 = now_us();
+            if (mm_section_polygon(200, xy, &sp, NULL, NULL) != MM_OK)
+                return 1;
+            double t1 = now_us();
+            if (mm_section_triangulate(200, xy, tri) != 198)
+                return 1;
+            best = fmin(best, t1 - t0);
+            best_t = fmin(best_t, now_us() - t1);
+        }
+        printf("200-vertex star: properties with the simplicity test %8.1f us, ear clipping %8.1f us\n", best, best_t);
+    }
+
     /* sta-truss end to end: parse, validate, solve, checks, JSON */
     const mm_exercise *ex = mm_exercise_find("sta-truss");
     if (ex) {
