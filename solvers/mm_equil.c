@@ -403,11 +403,13 @@ static double inverse_norm1(const lu *f, double *v, double *s)
 static int qrcp(int m, int n, double *M, int *perm, double *nrm, double *nrm0)
 {
     int kmax = m < n ? m : n;
+    /* the matrix is equilibrated (entries at most 1): plain sums of squares
+     * neither overflow nor lose anything that matters to the rank */
     for (int j = 0; j < n; j++) {
         double s = 0;
         for (int i = 0; i < m; i++)
-            s = hypot(s, M[(size_t)i * n + j]);
-        nrm[j] = nrm0[j] = s;
+            s += M[(size_t)i * n + j] * M[(size_t)i * n + j];
+        nrm[j] = nrm0[j] = sqrt(s);
         perm[j] = j;
     }
     double r00 = 0;
@@ -433,7 +435,8 @@ static int qrcp(int m, int n, double *M, int *perm, double *nrm, double *nrm0)
         /* the reflector that zeroes column k below the diagonal */
         double alpha = M[(size_t)k * n + k], xn = 0;
         for (int i = k + 1; i < m; i++)
-            xn = hypot(xn, M[(size_t)i * n + k]);
+            xn += M[(size_t)i * n + k] * M[(size_t)i * n + k];
+        xn = sqrt(xn);
         double beta = alpha, tau = 0;
         if (xn > 0) {
             beta = -copysign(hypot(alpha, xn), alpha);
@@ -466,8 +469,8 @@ static int qrcp(int m, int n, double *M, int *perm, double *nrm, double *nrm0)
                 if (t2 <= sqrt(DBL_EPSILON)) {
                     double s = 0;
                     for (int i = k + 1; i < m; i++)
-                        s = hypot(s, M[(size_t)i * n + j]);
-                    nrm[j] = nrm0[j] = s;
+                        s += M[(size_t)i * n + j] * M[(size_t)i * n + j];
+                    nrm[j] = nrm0[j] = sqrt(s);
                 } else {
                     nrm[j] *= sqrt(t);
                 }

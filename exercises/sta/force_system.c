@@ -36,7 +36,7 @@ static const mm_param params[] = {
              .help = "the point the system is reduced to"},
 };
 
-enum { O_RX, O_RY, O_RZ, O_R, O_MX, O_MY, O_MZ, O_PITCH, O_PX, O_PY, O_PZ, O_MW, O_KIND, O_ANIM };
+enum { O_RX, O_RY, O_RZ, O_R, O_MX, O_MY, O_MZ, O_PITCH, O_PX, O_PY, O_PZ, O_MW, O_KIND, O_MLINE, O_ANIM };
 
 static const mm_output outputs[] = {
     [O_RX] = MM_SCALAR("Rx", "resultant force, x", "N", .flags = MM_ANSWER | MM_EXACT),
@@ -53,6 +53,7 @@ static const mm_output outputs[] = {
     [O_MW] = MM_SCALAR("M_wrench", "couple of the wrench along R (pitch times |R|)", "N m", .flags = MM_EXACT),
     [O_KIND] = MM_SCALAR("kind", "simplest equivalent (0 equilibrium, 1 couple, 2 single force, 3 wrench)", "",
                          .flags = MM_ANSWER | MM_EXACT),
+    [O_MLINE] = MM_SERIES("M_along", "|M_B| for B on the line from O through P", "N m", "t (B = O + t (P - O))", ""),
     [O_ANIM] = MM_ANIMATION("the forces, and the wrench on its central axis"),
 };
 
@@ -195,6 +196,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         t[k] += M[k] - MB[k];
     mm_check_residual(res, "M_B = M_O + (O - B) x R at B, the first force's point [N m]", norm(t),
                       Ms + MBs + norm(OB) * Rs, 64);
+    /* the couple's size at points B from O toward P: smallest on the central axis */
+    mm_series *ml = mm_res_series(res, O_MLINE, 61);
+    if (!ml)
+        return MM_ENOMEM;
+    double dir[3] = {P[0] - O[0], P[1] - O[1], P[2] - O[2]};
+    if (norm(dir) == 0)
+        dir[0] = 1;                                  /* P = O (or R = 0): along x */
+    for (int i = 0; i < 61; i++) {
+        double tt = -1 + 3.0 * i / 60, Bt[3] = {O[0] + tt * dir[0], O[1] + tt * dir[1], O[2] + tt * dir[2]}, Mt[3], st;
+        moment_about(in, Bt, Mt, &st);
+        ml->x[i] = tt, ml->y[i] = norm(Mt);
+    }
     mm_res_method(res, "closed form (sums of forces and cross products)", 0);
 
     /* the drawing */

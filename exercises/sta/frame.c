@@ -40,7 +40,7 @@ static const mm_param params[] = {
                          "body, x > x_C on the right, x = x_C on the hinge (counted with the left body)"},
 };
 
-enum { O_AX, O_AY, O_BX, O_BY, O_CX, O_CY, O_ANIM };
+enum { O_AX, O_AY, O_BX, O_BY, O_CX, O_CY, O_THRUST, O_ANIM };
 
 static const mm_output outputs[] = {
     [O_AX] = MM_SCALAR("Ax", "reaction at A, x", "N", .flags = MM_ANSWER),
@@ -49,6 +49,7 @@ static const mm_output outputs[] = {
     [O_BY] = MM_SCALAR("By", "reaction at B, y", "N", .flags = MM_ANSWER),
     [O_CX] = MM_SCALAR("Cx", "force of the right body on the left at C, x", "N", .flags = MM_ANSWER),
     [O_CY] = MM_SCALAR("Cy", "force of the right body on the left at C, y", "N", .flags = MM_ANSWER),
+    [O_THRUST] = MM_SERIES("Ax_of_rise", "A_x as the crown moves up or down", "N", "rise of C above the line AB", "m"),
     [O_ANIM] = MM_ANIMATION("the two bodies taken apart at C, with loads, reactions and pin forces"),
 };
 
@@ -130,6 +131,20 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!name)
         return MM_ENOMEM;
     mm_res_check_abs(res, name, cf[wk], x[wk], 64 * DBL_EPSILON * (Fs + Xmax) / er.rcond);
+    /* the thrust against the rise of the crown, by the closed form (3) */
+    {
+        double yl = A[1] + (B[1] - A[1]) * (C[0] - A[0]) / (B[0] - A[0]), h0 = C[1] - yl;
+        mm_series *th = mm_res_series(res, O_THRUST, 60);
+        if (!th)
+            return MM_ENOMEM;
+        for (int i = 0; i < 60; i++) {
+            double hh = h0 * (0.2 + 2.8 * i / 59), Cy = yl + hh;
+            double MCi = PR[2] - (C[0] * PR[1] - Cy * PR[0]);
+            double b21 = -(B[1] - Cy), dt = a11 * a22 - a12 * b21;
+            double Bxi = (-MA * a22 + MCi * a12) / dt;
+            th->x[i] = hh, th->y[i] = -Bxi - PL[0] - PR[0];
+        }
+    }
     mm_res_method(res, "six equilibrium equations of the two bodies, LU with the rank test", 0);
 
     /* the drawing: the bodies taken apart at C (the right one moved right) */

@@ -31,7 +31,7 @@ static const mm_param params[] = {
     [P_MU] = {"mu", "coefficient of friction", "", MM_REAL, 0.2, 0, 1, .help = "between the axle and the hub"},
 };
 
-enum { O_PHI, O_RF, O_TR, O_TL, O_MF, O_ETA, O_RFA, O_ANIM };
+enum { O_PHI, O_RF, O_TR, O_TL, O_MF, O_ETA, O_RFA, O_TRMU, O_TLMU, O_ANIM };
 
 static const mm_output outputs[] = {
     [O_PHI] = MM_SCALAR("phi", "friction angle atan(mu)", "rad", .flags = MM_EXACT),
@@ -41,6 +41,8 @@ static const mm_output outputs[] = {
     [O_MF] = MM_SCALAR("M_f", "friction torque in the bearing while raising", "N m", .flags = MM_ANSWER | MM_EXACT),
     [O_ETA] = MM_SCALAR("efficiency", "W / T_raise", "", .flags = MM_EXACT),
     [O_RFA] = MM_SCALAR("r_f_approx", "small-friction approximation mu r", "m", .flags = MM_EXACT),
+    [O_TRMU] = MM_SERIES("T_raise_mu", "pull to raise", "N", "mu", "", .figure = "T"),
+    [O_TLMU] = MM_SERIES("T_lower_mu", "pull below which it runs down", "N", "mu", "", .figure = "T"),
     [O_ANIM] = MM_ANIMATION("the pulley on its axle: load, pull and the bearing reaction on the friction circle"),
 };
 
@@ -110,6 +112,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                      32 * DBL_EPSILON);
     mm_res_check_abs(res, "the reaction's line: its distance from the centre vs r_f [m]", r * sin(xr[1]), rf,
                      32 * DBL_EPSILON * r);
+    mm_series *s1 = mm_res_series(res, O_TRMU, 101), *s2 = mm_res_series(res, O_TLMU, 101);
+    if (!s1 || !s2)
+        return MM_ENOMEM;
+    for (int i = 0; i <= 100; i++) {
+        double m = i / 100.0, f = r * sin(atan(m));
+        s1->x[i] = s2->x[i] = m;
+        s1->y[i] = W * (R + f) / (R - f), s2->y[i] = W * (R - f) / (R + f);
+    }
     mm_res_method(res, "friction circle (closed form); contact equations by Newton's method as a check", 0);
     mm_res_method_stat(res, "newton_iterations", ir + il);
     if (mu > 0.3)

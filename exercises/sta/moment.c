@@ -33,7 +33,7 @@ static const mm_param params[] = {
              .help = "direction of the axis through O (any length but zero)"},
 };
 
-enum { O_MX, O_MY, O_MZ, O_M, O_D, O_MAXIS, O_ANIM };
+enum { O_MX, O_MY, O_MZ, O_M, O_D, O_MAXIS, O_SLIDE, O_ANIM };
 
 static const mm_output outputs[] = {
     [O_MX] = MM_SCALAR("Mx", "moment about O, x component", "N m", .flags = MM_ANSWER | MM_EXACT),
@@ -42,6 +42,7 @@ static const mm_output outputs[] = {
     [O_M] = MM_SCALAR("M", "magnitude of the moment about O", "N m", .flags = MM_ANSWER | MM_EXACT),
     [O_D] = MM_SCALAR("d", "lever arm: distance from O to the line of action", "m", .flags = MM_EXACT),
     [O_MAXIS] = MM_SCALAR("M_axis", "moment about the axis through O along u", "N m", .flags = MM_ANSWER | MM_EXACT),
+    [O_SLIDE] = MM_SERIES("M_sliding", "|M_O| with the force slid along its line", "N m", "distance slid", "m"),
     [O_ANIM] = MM_ANIMATION("the force, its point, the moment about O and the axis"),
 };
 
@@ -139,6 +140,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         wp[k] = w[k] - we * e[k], Fp[k] = F[k] - Fe * e[k];
     cross(wp, Fp, Mp);
     mm_check_residual(res, "M_axis by the parts across the axis vs e . M [N m]", dot(e, Mp) - Ma, 4 * big, 16);
+    /* the moment as the force slides along its own line: it stays (transmissibility) */
+    mm_series *sl = mm_res_series(res, O_SLIDE, 41);
+    if (!sl)
+        return MM_ENOMEM;
+    for (int i = 0; i < 41; i++) {
+        double sd = (i - 20) * 0.1 * fmax(wn, 1), p[3], q[3];
+        for (int k = 0; k < 3; k++)
+            p[k] = w[k] + (Fn > 0 ? sd * F[k] / Fn : 0);
+        cross(p, F, q);
+        sl->x[i] = sd, sl->y[i] = norm(q);
+    }
     mm_res_method(res, "closed form (cross product)", 0);
 
     /* the drawing: axes at O, r - O, F at r, M at O, the axis */

@@ -32,11 +32,12 @@ static const mm_param params[] = {
                 .help = "the weight hung on the ring (z up), or any force"},
 };
 
-enum { O_T, O_TMAX, O_ANIM };
+enum { O_T, O_TMAX, O_TPLOT, O_ANIM };
 
 static const mm_output outputs[] = {
     [O_T] = MM_SCALAR("T%d", "tension in cable %d", "N", .flags = MM_ANSWER, .first = 1, .last = 3),
     [O_TMAX] = MM_SCALAR("T_max", "largest tension", "N"),
+    [O_TPLOT] = MM_SERIES("tension_by_cable", "cable tension", "N", "cable", "", .mark = "dots"),
     [O_ANIM] = MM_ANIMATION("the ring, its cables and the load"),
 };
 
@@ -169,6 +170,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         Tmax = fmax(Tmax, T[i]);
     }
     mm_res_scalar_err(res, O_TMAX, Tmax, 4 * DBL_EPSILON * Pn / er.rcond, MM_ERR_ESTIMATE);
+    mm_series *tp = mm_res_series(res, O_TPLOT, n);
+    if (!tp)
+        return MM_ENOMEM;
+    for (int i = 0; i < n; i++)
+        tp->x[i] = i + 1, tp->y[i] = T[i];
 
     /* check 1: the ring in equilibrium, eq. (1) */
     double sum[3] = {P[0], P[1], P[2]}, scale = Pn;

@@ -41,11 +41,12 @@ static const mm_param params[] = {
                 .help = "for the drawing only: the body as a polygon"},
 };
 
-enum { O_R, O_ANIM };
+enum { O_R, O_RPLOT, O_ANIM };
 
 static const mm_output outputs[] = {
     [O_R] = MM_SCALAR("R%d", "reaction of link %d (along its direction)", "N", .flags = MM_ANSWER, .first = 1,
                       .last = MAXL),
+    [O_RPLOT] = MM_SERIES("reaction_by_link", "reaction along the link's direction", "N", "link", "", .mark = "dots"),
     [O_ANIM] = MM_ANIMATION("the body on its supports with loads and reactions"),
 };
 
@@ -129,6 +130,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;
         Rmax = fmax(Rmax, fabs(R[k]));
     }
+    mm_series *rp = mm_res_series(res, O_RPLOT, n);
+    if (!rp)
+        return MM_ENOMEM;
+    for (int k = 0; k < n; k++)
+        rp->x[k] = k + 1, rp->y[k] = fabs(R[k]) <= rerr ? 0 : R[k];
 
     /* check 1: eq. (1) put back, forces and moment about the origin */
     double fx = -b[0], fy = -b[1], mz = -b[2], sf = Fs, sm = Fs * size;

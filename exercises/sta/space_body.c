@@ -38,11 +38,12 @@ static const mm_param params[] = {
                 "0,0,0;2,0,0;2,1,0;0,1,0", NULL, 50, 3, .help = "for the drawing only: a polygon in space"},
 };
 
-enum { O_R, O_ANIM };
+enum { O_R, O_RPLOT, O_ANIM };
 
 static const mm_output outputs[] = {
     [O_R] = MM_SCALAR("R%d", "reaction of link %d (along its direction)", "N", .flags = MM_ANSWER, .first = 1,
                       .last = MAXL),
+    [O_RPLOT] = MM_SERIES("reaction_by_link", "reaction along the link's direction", "N", "link", "", .mark = "dots"),
     [O_ANIM] = MM_ANIMATION("the body on its links with loads and reactions"),
 };
 
@@ -154,6 +155,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;
         Rmax = fmax(Rmax, fabs(R[k]));
     }
+    mm_series *rp = mm_res_series(res, O_RPLOT, n);
+    if (!rp)
+        return MM_ENOMEM;
+    for (int k = 0; k < n; k++)
+        rp->x[k] = k + 1, rp->y[k] = fabs(R[k]) <= rerr ? 0 : R[k];
     /* check 1: eq. (1) put back */
     double worst = 0, scale = 0;
     for (int c = 0; c < 6; c++) {

@@ -45,7 +45,7 @@ static const mm_param params[] = {
                          "100 rows"},
 };
 
-enum { O_DET, O_NJ, O_NM, O_NR, O_TMAX, O_CMAX, O_MEMBERS, O_REACT, O_ANIM };
+enum { O_DET, O_NJ, O_NM, O_NR, O_TMAX, O_CMAX, O_MEMBERS, O_REACT, O_FPLOT, O_ANIM };
 
 static const char *const mcols[] = {"member", "force", "joint_i", "joint_j", "length", "state", NULL};
 static const char *const munits[] = {"", "N", "", "", "m", "", NULL};
@@ -62,6 +62,7 @@ static const mm_output outputs[] = {
                          .flags = MM_ANSWER),
     [O_MEMBERS] = MM_TABLE("members", "member forces (tension positive)", mcols, munits),
     [O_REACT] = MM_TABLE("reactions", "support reactions", rcols, runits),
+    [O_FPLOT] = MM_SERIES("force_by_member", "member force (tension +)", "N", "member", "", .mark = "dots"),
     [O_ANIM] = MM_ANIMATION("the truss: members in tension and compression, loads and reactions"),
 };
 
@@ -272,6 +273,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         row[4] = hypot(t->xy[2 * b] - t->xy[2 * a], t->xy[2 * b + 1] - t->xy[2 * a + 1]);
         mt->text[e * 6 + 5] = F[e] > ftol ? "tension" : F[e] < -ftol ? "compression" : "zero-force";
     }
+    mm_series *fp = mm_res_series(res, O_FPLOT, m);
+    if (!fp)
+        return MM_ENOMEM;
+    for (int e = 0; e < m; e++)
+        fp->x[e] = e + 1, fp->y[e] = shown(F[e], ferr);
     mm_table *rt = mm_res_table(res, O_REACT, t->n_supports);
     if (!rt)
         return MM_ENOMEM;

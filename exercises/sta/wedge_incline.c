@@ -40,7 +40,8 @@ static const mm_param params[] = {
     [P_BETA] = {"beta", "wedge angle", "rad", MM_REAL, 0.2, 0.01, 1.0, .help = "wedge: the angle of its sloped face"},
 };
 
-enum { O_PUP, O_PHOLD, O_PTIP, O_FIRST, O_ASLIP, O_ATIP, O_PIN, O_POUT, O_LOCK, O_N1, O_N2, O_N3, O_ANIM };
+enum { O_PUP, O_PHOLD, O_PTIP, O_FIRST, O_ASLIP, O_ATIP, O_PIN, O_POUT, O_LOCK, O_N1, O_N2, O_N3, O_SUP, O_STIP,
+       O_SIN, O_SOUT, O_ANIM };
 
 static const mm_output outputs[] = {
     [O_PUP] = MM_SCALAR("P_up", "push that starts the block sliding up", "N", .flags = MM_ANSWER | MM_EXACT),
@@ -59,6 +60,11 @@ static const mm_output outputs[] = {
     [O_N1] = MM_SCALAR("N1", "floor on wedge, normal force (driving in)", "N"),
     [O_N2] = MM_SCALAR("N2", "wedge on load, normal force (driving in)", "N"),
     [O_N3] = MM_SCALAR("N3", "wall on load, normal force (driving in)", "N"),
+    [O_SUP] = MM_SERIES("P_up_alpha", "push to slide up", "N", "alpha", "rad", .figure = "block"),
+    [O_STIP] = MM_SERIES("P_tip_alpha", "push to tip", "N", "alpha", "rad", .figure = "block"),
+    [O_SIN] = MM_SERIES("P_in_beta", "push to drive the wedge in", "N", "beta", "rad", .figure = "wedge"),
+    [O_SOUT] = MM_SERIES("P_out_beta", "push at which it slips out (negative: pull)", "N", "beta", "rad",
+                         .figure = "wedge"),
     [O_ANIM] = MM_ANIMATION("the free-body diagram at the slipping or tipping limit"),
 };
 
@@ -127,6 +133,15 @@ static int block(const mm_value *in, mm_result *res, mm_error *err)
                          first == 2, 0);
     }
     mm_res_method(res, "closed forms; equilibrium with friction at the limit as a linear system", 0);
+    mm_series *s1 = mm_res_series(res, O_SUP, 141), *s2 = mm_res_series(res, O_STIP, 141);
+    if (!s1 || !s2)
+        return MM_ENOMEM;
+    for (int i = 0; i <= 140; i++) {
+        double q = i / 100.0;
+        s1->x[i] = s2->x[i] = q;
+        s1->y[i] = W * (sin(q) + mu * cos(q));
+        s2->y[i] = W * (w * cos(q) + h * sin(q)) / (2 * hP);
+    }
 
     /* the drawing at the first limit, in the slope frame turned by alpha */
     double P = first == 2 ? Ptip : Pup, N = W * ca, xn = first == 2 ? w : xN, F = P - W * sa;
@@ -198,6 +213,15 @@ static int wedge(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_check_abs(res, "P_out the same way vs W tan(beta - 2 phi) [N]", y[3], Pout,
                      64 * DBL_EPSILON * W / eo.rcond);
     mm_res_method(res, "closed forms with the friction angle; equilibrium as a linear system", 0);
+    double bmax = fmin(1.0, M_PI / 2 - 2 * phi - 0.02);
+    mm_series *s1 = mm_res_series(res, O_SIN, 101), *s2 = mm_res_series(res, O_SOUT, 101);
+    if (!s1 || !s2)
+        return MM_ENOMEM;
+    for (int i = 0; i <= 100; i++) {
+        double q = 0.01 + (bmax - 0.01) * i / 100;
+        s1->x[i] = s2->x[i] = q;
+        s1->y[i] = W * tan(q + 2 * phi), s2->y[i] = W * tan(q - 2 * phi);
+    }
 
     /* the drawing: floor, wall, wedge (thick end left), load box */
     rc = mm_sta_fbd(res);
