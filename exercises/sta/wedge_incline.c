@@ -272,7 +272,7 @@ const mm_exercise mm_ex_sta_wedge_incline = {
     .section = "3.8",
     .title = "Dry friction: a block on an incline and a wedge",
     .summary = "Does the pushed block slide or tip first? What push drives a wedge, and is it self-locking? "
-               "Coulomb friction at its limit, closed forms beside the numbers.",
+               "Dry friction at its limit, closed forms beside the numbers.",
     .tags = "statics, friction, incline, wedge, tipping, self-locking",
     .theory = "exercises/sta/wedge_incline.md",
     .script = "exercises/sta/wedge_incline.m",

@@ -122,7 +122,9 @@ export async function staTrussTests(test, origin) {
     // a Warren truss: 8 joints below at x = 0, 2, ..., 14; 7 above at x = 1, 3, ..., 13, y = 2
     const bottom = Array.from({ length: 8 }, (_, i) => [2 * i, 0]);
     const top = Array.from({ length: 7 }, (_, i) => [2 * i + 1, 2]);
-    for (const p of [...bottom, ...top]) await clickAt(page, p[0], p[1]);
+    // joints left to right: the drawing area grows as the truss does
+    const order = [...bottom, ...top].sort((p, q) => p[0] - q[0]);
+    for (const p of order) await clickAt(page, p[0], p[1]);
     assert.equal(await page.getAttribute(ED, 'data-joints'), '15');
     const bars = [];
     for (let i = 0; i < 7; i++) bars.push([bottom[i], bottom[i + 1]]);
@@ -143,6 +145,8 @@ export async function staTrussTests(test, origin) {
     await page.waitForFunction(() => location.search.includes('members='));
     const url = page.url();
     assert.ok(url.length < 600, `the drawing's URL is ${url.length} characters`);
+    console.log(`     the 15-joint truss's URL: ${url.length} characters`);
+    await (await page.$(ED)).screenshot({ path: 'test-output/screenshots/sta-truss-editor.png' });
     // the forces shown are the API's for the same parameters
     const q = new URL(url).search.replace(/^\?id=sta-truss&?/, '');
     const answer = await (await fetch(`${origin}/api/exercises/sta-truss/solve?${q}`)).json();

@@ -162,11 +162,12 @@ export function mount(host, api) {
     statusLine.className = `status ${kind || ''}`;
   }
 
-  // the view: the joints' bounding box with a margin, at least 10 x 6 m
+  // the view: the joints' bounding box with room around it to draw on (a
+  // quarter of its size each way), at least 12 x 6 m
   function fit() {
     const xs = truss.nodes.map((n) => n.x), ys = truss.nodes.map((n) => n.y);
-    let x0 = Math.min(0, ...xs), x1 = Math.max(8, ...xs), y0 = Math.min(-1, ...ys), y1 = Math.max(4, ...ys);
-    const m = 0.15 * Math.max(x1 - x0, y1 - y0, 4);
+    let x0 = Math.min(0, ...xs), x1 = Math.max(12, ...xs), y0 = Math.min(-1, ...ys), y1 = Math.max(5, ...ys);
+    const m = 0.25 * Math.max(x1 - x0, y1 - y0, 4);
     x0 -= m; x1 += m; y0 -= m; y1 += m;
     view = { x0, y0, w: x1 - x0, h: y1 - y0 };
     svg.setAttribute('viewBox', `${x0} ${-y1} ${view.w} ${view.h}`);
