@@ -20,6 +20,7 @@ const STYLE = `
 .truss-ed .tools label { font-size: 0.85rem; color: #505a64; }
 .truss-ed .tools input { width: 5.5em; font: inherit; font-size: 0.9rem; }
 .truss-ed svg { width: 100%; height: auto; touch-action: none; user-select: none; background: #fcfbf8; }
+.truss-ed svg * { vector-effect: non-scaling-stroke; }
 .truss-ed .status { font-size: 0.9rem; margin-top: 0.3rem; min-height: 1.4em; }
 .truss-ed .status.bad { color: #a8231b; }
 .truss-ed .status.ok { color: #1e6b2a; }
@@ -29,8 +30,8 @@ const STYLE = `
 .truss-ed .member.zero { stroke: #8a9098; stroke-dasharray: 4 3; }
 .truss-ed .member.selected { stroke-width: 6; }
 .truss-ed .joint { fill: #fff; stroke: #1d232a; stroke-width: 2; cursor: pointer; }
-.truss-ed .force-label { font: 11px system-ui, sans-serif; fill: #1d232a; paint-order: stroke; stroke: #fff; stroke-width: 3; }
-.truss-ed .joint-label { font: 11px system-ui, sans-serif; fill: #505a64; }
+.truss-ed .force-label { font-family: system-ui, sans-serif; fill: #1d232a; paint-order: stroke; stroke: #fff; stroke-width: 3; }
+.truss-ed .joint-label { font-family: system-ui, sans-serif; fill: #505a64; }
 .truss-ed .support { fill: #d9d6cf; stroke: #505a64; stroke-width: 1.5; }
 .truss-ed .load { stroke: #1d232a; stroke-width: 2; fill: none; }
 .truss-ed .reaction { stroke: #1e6b2a; stroke-width: 2; fill: none; }
@@ -70,8 +71,9 @@ function toParams(t) {
 function fmtForce(v) {
   const a = Math.abs(v);
   if (a === 0) return '0';
-  if (a >= 1e4) return `${(v / 1e3).toPrecision(3)} kN`;
-  return `${v.toPrecision(3)} N`;
+  if (a >= 1e6) return `${Number((v / 1e6).toPrecision(3))} MN`;
+  if (a >= 1e3) return `${Number((v / 1e3).toPrecision(3))} kN`;
+  return `${Number(v.toPrecision(3))} N`;
 }
 
 function el(tag, attrs = {}, parent = null) {
@@ -320,8 +322,9 @@ export function mount(host, api) {
   function render() {
     fit();
     world.replaceChildren();
-    const s = 0.012 * view.w;                       // a joint's radius, a support's size
-    const fs = 0.028 * view.w;                      // label size
+    const s = 0.01 * view.w;                        // a joint's radius, a support's size
+    const fs = 0.017 * view.w;                      // label size
+    const labelled = truss.members.length <= 40;    // force labels while they stay readable
     // members, coloured by their force when the answer is for this drawing
     truss.members.forEach(([i, j], k) => {
       const a = truss.nodes[i], b = truss.nodes[j];
@@ -333,8 +336,12 @@ export function mount(host, api) {
       line.dataset.member = String(k + 1);
       if (F !== undefined) {
         line.dataset.force = String(F);
-        const t = el('text', { class: 'force-label', x: (a.x + b.x) / 2, y: -(a.y + b.y) / 2, 'font-size': fs, 'text-anchor': 'middle' }, world);
+        const t = el('text', { class: 'force-label', x: (a.x + b.x) / 2, y: -(a.y + b.y) / 2, 'font-size': fs,
+          'text-anchor': 'middle', 'dominant-baseline': 'middle' }, world);
         t.textContent = fmtForce(F);
+        if (!labelled) t.setAttribute('visibility', 'hidden');
+        const title = el('title', {}, line);
+        title.textContent = `member ${k + 1}: ${fmtForce(F)} (${F > 0 ? 'tension' : F < 0 ? 'compression' : 'no force'})`;
       }
     });
     if (drag) {
@@ -376,7 +383,7 @@ export function mount(host, api) {
     truss.nodes.forEach((n, i) => {
       const c = el('circle', { class: 'joint', cx: n.x, cy: -n.y, r: s, 'vector-effect': 'non-scaling-stroke' }, world);
       c.dataset.joint = String(i + 1);
-      const t = el('text', { class: 'joint-label', x: n.x + 1.3 * s, y: -(n.y + 1.3 * s), 'font-size': fs }, world);
+      const t = el('text', { class: 'joint-label', x: n.x + 1.3 * s, y: -(n.y + 1.3 * s), 'font-size': 0.8 * fs }, world);
       t.textContent = String(i + 1);
     });
     root.dataset.joints = String(truss.nodes.length);
