@@ -338,7 +338,6 @@ const mm_exercise mm_ex_sta_beam_diagrams = {
                "exact V and M diagrams, their extremes and the deflection.",
     .tags = "statics, beam, shear force, bending moment, internal forces, deflection",
     .theory = "exercises/sta/beam_diagrams.md",
-    .script = "exercises/sta/beam_diagrams.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -183,7 +183,6 @@ const mm_exercise mm_ex_sta_belt_friction = {
                "torque, checked by a belt over many pegs.",
     .tags = "statics, friction, belt, capstan, slipping",
     .theory = "exercises/sta/belt_friction.md",
-    .script = "exercises/sta/belt_friction.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -259,7 +259,6 @@ const mm_exercise mm_ex_sta_centroid = {
                "by Green's theorem and by triangles.",
     .tags = "statics, centroid, centre of gravity, second moment of area, principal axes, composite area",
     .theory = "exercises/sta/centroid.md",
-    .script = "exercises/sta/centroid.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -256,7 +256,6 @@ const mm_exercise mm_ex_sta_force_system = {
                "equivalent: a single force, a couple or a wrench on its central axis.",
     .tags = "statics, force system, resultant, couple, wrench, equivalence, central axis",
     .theory = "exercises/sta/force_system.md",
-    .script = "exercises/sta/force_system.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

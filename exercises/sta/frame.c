@@ -194,7 +194,6 @@ const mm_exercise mm_ex_sta_frame = {
                "six equations, the arch's horizontal thrust.",
     .tags = "statics, frame, arch, three-hinged, systems of bodies, pin forces",
     .theory = "exercises/sta/frame.md",
-    .script = "exercises/sta/frame.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -168,7 +168,6 @@ const mm_exercise mm_ex_sta_journal_bearing = {
                "efficiency; checked by solving the contact equations.",
     .tags = "statics, friction, journal bearing, friction circle, pulley, efficiency",
     .theory = "exercises/sta/journal_bearing.md",
-    .script = "exercises/sta/journal_bearing.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -201,7 +201,6 @@ const mm_exercise mm_ex_sta_moment = {
     .summary = "M = r x F in space, its lever arm, and the moment about an axis through the point.",
     .tags = "statics, moment, cross product, lever arm, axis",
     .theory = "exercises/sta/moment.md",
-    .script = "exercises/sta/moment.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

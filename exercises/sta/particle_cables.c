@@ -246,7 +246,6 @@ const mm_exercise mm_ex_sta_particle_cables = {
     .summary = "Equilibrium of a particle in space: the tensions in two or three cables holding a loaded ring.",
     .tags = "statics, particle, equilibrium, cables, tension, space",
     .theory = "exercises/sta/particle_cables.md",
-    .script = "exercises/sta/particle_cables.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

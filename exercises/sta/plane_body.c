@@ -218,7 +218,6 @@ const mm_exercise mm_ex_sta_plane_body = {
                "improper and redundant supports named.",
     .tags = "statics, rigid body, plane, reactions, supports, equilibrium",
     .theory = "exercises/sta/plane_body.md",
-    .script = "exercises/sta/plane_body.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -146,7 +146,6 @@ const mm_exercise mm_ex_sta_rolling_resistance = {
                "slide; the boundary between them.",
     .tags = "statics, friction, rolling resistance, wheel, sliding",
     .theory = "exercises/sta/rolling_resistance.md",
-    .script = "exercises/sta/rolling_resistance.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

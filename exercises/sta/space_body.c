@@ -238,7 +238,6 @@ const mm_exercise mm_ex_sta_space_body = {
                "checked by virtual work; improper supports named by the motion they allow.",
     .tags = "statics, rigid body, space, reactions, six links, virtual work",
     .theory = "exercises/sta/space_body.md",
-    .script = "exercises/sta/space_body.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -279,7 +279,6 @@ const mm_exercise mm_ex_sta_stability = {
                "second derivative, and the critical load where the upright position buckles.",
     .tags = "statics, potential energy, stability, equilibrium, buckling, bifurcation",
     .theory = "exercises/sta/stability.md",
-    .script = "exercises/sta/stability.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -154,7 +154,6 @@ const mm_exercise mm_ex_sta_thrust_bearing = {
                "(uniform wear), as integrals over the contact.",
     .tags = "statics, friction, thrust bearing, collar, disc clutch, wear",
     .theory = "exercises/sta/thrust_bearing.md",
-    .script = "exercises/sta/thrust_bearing.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

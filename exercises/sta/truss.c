@@ -382,7 +382,6 @@ const mm_exercise mm_ex_sta_truss = {
                "mechanism or has a redundant member.",
     .tags = "statics, truss, method of joints, method of sections, determinacy, mechanism",
     .theory = "exercises/sta/truss.md",
-    .script = "exercises/sta/truss.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -223,7 +223,6 @@ const mm_exercise mm_ex_sta_virtual_work = {
                "force balance of its three bodies; the potential energy and its equilibria.",
     .tags = "statics, virtual work, mechanism, slider-crank, potential energy",
     .theory = "exercises/sta/virtual_work.md",
-    .script = "exercises/sta/virtual_work.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

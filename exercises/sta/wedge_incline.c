@@ -275,7 +275,6 @@ const mm_exercise mm_ex_sta_wedge_incline = {
                "Dry friction at its limit, closed forms beside the numbers.",
     .tags = "statics, friction, incline, wedge, tipping, self-locking",
     .theory = "exercises/sta/wedge_incline.md",
-    .script = "exercises/sta/wedge_incline.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,
