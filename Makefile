@@ -15,7 +15,7 @@ SANITIZE ?=
 CC       := gcc
 CXX      := g++
 
-PKGS     := libmicrohttpd libcjson lapacke fftw3 muparser libcmark
+PKGS     := libmicrohttpd libcjson lapacke fftw3 muparser libcmark zlib nettle
 TESTPKGS := cmocka libcurl
 
 WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes \
