@@ -20,77 +20,33 @@
 #include <time.h>
 
 #include "mm_api.h"
+#include "mm_draw.h"
 #include "mm_dtoa.h"
 #include "mm_params.h"
 #include "mm_result_impl.h"
 
-static unsigned long long rng = 0x2545F4914F6CDD1DULL;
-
-static double urand(void)
-{
-    rng ^= rng >> 12, rng ^= rng << 25, rng ^= rng >> 27;
-    return (double)((rng * 2685821657736338717ULL) >> 11) / 9007199254740992.0;
-}
+static mm_rng rng = {0x2545F4914F6CDD1DULL};   /* the product's generator (mm_draw.h) */
 
 /* A random value of p as parameter text in buf, and as JSON in json, or
- * NULL to keep the default (expressions keep theirs).  Numbers as in
- * test_exercises.c (log-uniform over wide positive ranges); arrays keep the
- * default's shape, each element scaled by a factor in [0.5, 1.5] (a
- * symmetric matrix stays symmetric), clamped to the limits. */
+ * NULL to keep the default (expressions keep theirs): mm_draw_text, whose
+ * texts are JSON already but for choices (quoted) and arrays ("1,2;3,4"
+ * becomes [[1,2],[3,4]]). */
 static const char *draw(const mm_param *p, char *buf, size_t size, char *json, size_t jsize)
 {
+    if (p->kind == MM_EXPR || mm_draw_text(p, &rng, buf, size) != MM_OK)
+        return NULL;
+    size_t j = 0;
     if (p->kind == MM_CHOICE) {
-        int n = 0;
-        while (p->choices[n])
-            n++;
-        snprintf(buf, size, "%s", p->choices[(int)(urand() * n) % n]);
-        snprintf(json, jsize, "\"%s\"", buf);
-        return buf;
+        j = (size_t)snprintf(json, jsize, "\"%s\"", buf);
+    } else if (p->kind == MM_VECTOR || p->kind == MM_MATRIX) {
+        j += (size_t)snprintf(json + j, jsize - j, p->kind == MM_MATRIX ? "[[" : "[");
+        for (const char *c = buf; *c && j + 4 < jsize; c++)
+            j += (size_t)snprintf(json + j, jsize - j, "%s", *c == ';' ? "],[" : (char[2]){*c, 0});
+        j += (size_t)snprintf(json + j, jsize - j, p->kind == MM_MATRIX ? "]]" : "]");
+    } else {
+        j = (size_t)snprintf(json, jsize, "%s", buf);
     }
-    if (p->kind == MM_REAL || p->kind == MM_INT) {
-        double v = p->min > 0 && p->max / p->min > 100 ? p->min * pow(p->max / p->min, urand())
-                                                        : p->min + (p->max - p->min) * urand();
-        if (p->kind == MM_INT)
-            v = floor(v + 0.5);
-        mm_dtoa(fmin(fmax(v, p->min), p->max), buf);
-        snprintf(json, jsize, "%s", buf);
-        return buf;
-    }
-    if (p->kind != MM_VECTOR && p->kind != MM_MATRIX)
-        return NULL;
-    mm_result arena;
-    mm_value v;
-    mm_error err;
-    mm_result_init(&arena, 1 << 22);
-    if (mm_param_default(p, &v, &arena, &err) != MM_OK || v.rows * v.cols > 1024) {
-        mm_result_release(&arena);
-        return NULL;
-    }
-    int sym = p->kind == MM_MATRIX && v.rows == v.cols;
-    for (int i = 0; sym && i < v.rows; i++)
-        for (int j = 0; j < i; j++)
-            sym &= v.data[i * v.cols + j] == v.data[j * v.cols + i];
-    double f[1024];
-    for (int k = 0; k < v.rows * v.cols; k++)
-        f[k] = 0.5 + urand();
-    size_t len = 0, jlen = 0;
-    char num[MM_DTOA_BUFSIZE];
-    if (p->kind == MM_MATRIX)
-        jlen += (size_t)snprintf(json + jlen, jsize - jlen, "[");
-    for (int i = 0; i < v.rows; i++) {
-        jlen += (size_t)snprintf(json + jlen, jsize - jlen, "%s[", i ? "," : "");
-        for (int j = 0; j < v.cols; j++) {
-            int kf = sym && j < i ? j * v.cols + i : i * v.cols + j;
-            mm_dtoa(fmin(fmax(v.data[i * v.cols + j] * f[kf], p->min), p->max), num);
-            len += (size_t)snprintf(buf + len, size - len, "%s%s", j ? "," : i ? ";" : "", num);
-            jlen += (size_t)snprintf(json + jlen, jsize - jlen, "%s%s", j ? "," : "", num);
-        }
-        jlen += (size_t)snprintf(json + jlen, jsize - jlen, "]");
-    }
-    if (p->kind == MM_MATRIX)
-        snprintf(json + jlen, jsize - jlen, "]");
-    mm_result_release(&arena);
-    return len < size - 1 && jlen < jsize - 2 ? buf : NULL;
+    return j < jsize - 2 ? buf : NULL;
 }
 
 /* Append text to a query, '+' written %2B (a '+' in a query is a space). */
