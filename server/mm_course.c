@@ -297,6 +297,8 @@ static int apply_override(ctx *x, const mm_exercise *ex, mm_param *p, const mm_p
     mm_error_clear(&perr);
     if (d)
         rc = mm_param_parse(p, t.p ? t.p : "", t.len, &v, &arena, &perr);
+    else if ((p->kind == MM_REAL || p->kind == MM_INT) && !(p->def >= p->min && p->def <= p->max))
+        rc = MM_ERANGE;
     else
         rc = mm_param_default(p, &v, &arena, &perr);
     if (rc != MM_OK) {
