@@ -1,6 +1,6 @@
 /* main.c — mechmat-server: flags, start-up, course reloads, graceful stop.
  *
- *   mechmat-server [--host 127.0.0.1] [--port 8080] [--threads N]
+ *   mechmat-server [--host 127.0.0.1] [--port 8080] [--threads N] [--io-threads 2]
  *                  [--course FILE] [--cache-mb 64] [--queue 1024]
  *                  [--max-connections 10000] [--root DIR] [--web-root DIR]
  *                  [--quiet] [--print-asset-version]
@@ -75,7 +75,7 @@ static void find_root(char *root, size_t size)
 
 static void usage(FILE *f)
 {
-    fprintf(f, "usage: mechmat-server [--host ADDR] [--port N] [--threads N] [--course FILE]\n"
+    fprintf(f, "usage: mechmat-server [--host ADDR] [--port N] [--threads N] [--io-threads N] [--course FILE]\n"
                "                      [--cache-mb N] [--queue N] [--max-connections N]\n"
                "                      [--root DIR] [--web-root DIR] [--quiet] [--print-asset-version]\n");
 }
@@ -139,6 +139,10 @@ int main(int argc, char **argv)
             i++;
         } else if (strcmp(a, "--max-connections") == 0) {
             if (!parse_int(a, v, 1, 100000, &o.max_connections))
+                return 2;
+            i++;
+        } else if (strcmp(a, "--io-threads") == 0) {
+            if (!parse_int(a, v, 1, 8, &o.io_threads))
                 return 2;
             i++;
         } else if (strcmp(a, "--queue") == 0) {

@@ -241,6 +241,14 @@ void mm_cache_set_gz(mm_cache *c, mm_entry *e, char *gz, size_t gz_len)
     pthread_mutex_unlock(&c->lock);
 }
 
+void mm_cache_get_gz(mm_cache *c, mm_entry *e, char **gz, size_t *gz_len)
+{
+    pthread_mutex_lock(&c->lock);
+    *gz = e->gz;
+    *gz_len = e->gz_len;
+    pthread_mutex_unlock(&c->lock);
+}
+
 void mm_cache_get_stats(mm_cache *c, mm_cache_stats *st)
 {
     pthread_mutex_lock(&c->lock);

@@ -81,6 +81,10 @@ void mm_cache_fill(mm_cache *c, mm_entry *e, int status, char *body, size_t len,
  * gz is taken over, or freed when the entry got one meanwhile. */
 void mm_cache_set_gz(mm_cache *c, mm_entry *e, char *gz, size_t gz_len);
 
+/* The gzip form of a ready entry, or NULL (read under the lock: another
+ * thread may be attaching one). */
+void mm_cache_get_gz(mm_cache *c, mm_entry *e, char **gz, size_t *gz_len);
+
 void mm_cache_unref(mm_entry *e);
 
 typedef struct mm_cache_stats {

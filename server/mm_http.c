@@ -97,8 +97,11 @@ typedef struct asset {             /* a web file as the asset version saw it */
     struct timespec mtime;
 } asset;
 
+#define MAX_IO 8
+
 struct mm_server {
-    struct MHD_Daemon *d;
+    struct MHD_Daemon *d[MAX_IO];  /* the event threads, one daemon each */
+    int n_io;
     _Atomic(site *) site;
     pthread_mutex_t site_lock;     /* serialises replacements */
     mm_cache *cache;
@@ -110,7 +113,8 @@ struct mm_server {
     int port;
     metrics m;
 
-    /* the event thread's own (no lock): static files and the asset version */
+    /* static files (files under static_lock) and the asset version */
+    pthread_mutex_t static_lock;
     static_file *files;
     size_t files_bytes;
     atomic_int files_stale;        /* set by a replacement: read them again */
@@ -477,9 +481,10 @@ static void static_drop_all(mm_server *s)
     s->files_bytes = 0;
 }
 
-/* The memory copy of the file at real (event thread only): read again when
- * it changed on disk.  NULL when it cannot be read or is too large to keep. */
-static static_file *static_get(mm_server *s, const char *real, const struct stat *st, int vendor)
+/* The memory copy of the file at real, referenced (static_unref it): read
+ * again when it changed on disk.  NULL when it cannot be read or is too
+ * large to keep.  static_lock held. */
+static static_file *static_get_locked(mm_server *s, const char *real, const struct stat *st, int vendor)
 {
     if (atomic_exchange(&s->files_stale, 0))
         static_drop_all(s);
@@ -488,8 +493,10 @@ static static_file *static_get(mm_server *s, const char *real, const struct stat
         if (strcmp(f->path, real) != 0)
             continue;
         if (f->dev == st->st_dev && f->ino == st->st_ino && f->size == st->st_size &&
-            f->mtime.tv_sec == st->st_mtim.tv_sec && f->mtime.tv_nsec == st->st_mtim.tv_nsec)
+            f->mtime.tv_sec == st->st_mtim.tv_sec && f->mtime.tv_nsec == st->st_mtim.tv_nsec) {
+            atomic_fetch_add_explicit(&f->refs, 1, memory_order_relaxed);
             return f;
+        }
         *pp = f->next;                       /* changed: read it again */
         s->files_bytes -= f->len + f->gz_len;
         static_unref(f);
@@ -534,6 +541,15 @@ static static_file *static_get(mm_server *s, const char *real, const struct stat
     f->next = s->files;
     s->files = f;
     s->files_bytes += f->len + f->gz_len;
+    atomic_fetch_add_explicit(&f->refs, 1, memory_order_relaxed);   /* the caller's */
+    return f;
+}
+
+static static_file *static_get(mm_server *s, const char *real, const struct stat *st, int vendor)
+{
+    pthread_mutex_lock(&s->static_lock);
+    static_file *f = static_get_locked(s, real, st, vendor);
+    pthread_mutex_unlock(&s->static_lock);
     return f;
 }
 
@@ -823,14 +839,18 @@ static void entry_unref_cb(void *cls) { mm_cache_unref(cls); }
 static enum MHD_Result send_entry(req *r, const char *method, const char *url, mm_entry *e, const char *how)
 {
     int gz = 0;
+    char *gz_body = NULL;
+    size_t gz_len = 0;
     if (r->want_gz && e->len >= GZ_MIN) {
-        if (!e->gz && e->status == 200) {    /* first asked compressed: make it once */
+        mm_cache_get_gz(r->s->cache, e, &gz_body, &gz_len);
+        if (!gz_body && e->status == 200) {  /* first asked compressed: made once */
             char *z;
             size_t zl;
             if (gzip_bytes(e->body, e->len, &z, &zl) == 0)
                 mm_cache_set_gz(r->s->cache, e, z, zl);
+            mm_cache_get_gz(r->s->cache, e, &gz_body, &gz_len);
         }
-        gz = e->gz != NULL;
+        gz = gz_body != NULL;
     }
     char etag[MM_ETAG_SIZE + 4], timing[96];
     size_t el = strlen(e->etag);
@@ -843,8 +863,8 @@ static enum MHD_Result send_entry(req *r, const char *method, const char *url, m
     else
         snprintf(timing, sizeof timing, "cache;desc=\"%s\", solve;dur=%.3f", how, (double)e->solve_us * 1e-3);
     int ok = e->status == 200 || mm_http_status(MM_ESINGULAR) == e->status;
-    answer a = {.status = e->status, .type = "application/json", .body = gz ? e->gz : e->body,
-                .len = gz ? e->gz_len : e->len, .free_fn = entry_unref_cb, .free_cls = e,
+    answer a = {.status = e->status, .type = "application/json", .body = gz ? gz_body : e->body,
+                .len = gz ? gz_len : e->len, .free_fn = entry_unref_cb, .free_cls = e,
                 .etag = ok ? etag : NULL, .cache_control = ok ? "no-cache" : "no-store", .gzip = gz,
                 .vary = 1, .timing = timing};
     return send_answer(r, method, url, &a, how);
@@ -1262,9 +1282,14 @@ static enum MHD_Result send_file(ctx *x, const char *root, const char *path, int
         return ret;
     }
     int gz = f->gz && mm_accepts_gzip(header(r, MHD_HTTP_HEADER_ACCEPT_ENCODING));
-    if (mm_etag_matches(header(r, MHD_HTTP_HEADER_IF_NONE_MATCH), f->etag))
-        return send_not_modified(r, x->method, x->full_url, gz ? f->gz_etag : f->etag, cc, f->gz != NULL);
-    atomic_fetch_add_explicit(&f->refs, 1, memory_order_relaxed);   /* until the response is gone */
+    if (mm_etag_matches(header(r, MHD_HTTP_HEADER_IF_NONE_MATCH), f->etag)) {
+        char etag[MM_ETAG_SIZE + 4];
+        snprintf(etag, sizeof etag, "%s", gz ? f->gz_etag : f->etag);
+        int vary = f->gz != NULL;
+        static_unref(f);
+        return send_not_modified(r, x->method, x->full_url, etag, cc, vary);
+    }
+    /* the reference goes with the response, dropped when it is gone */
     answer a = {.status = 200, .type = f->mime, .body = gz ? f->gz : f->body, .len = gz ? f->gz_len : f->len,
                 .free_fn = static_unref, .free_cls = f,
                 .etag = gz ? f->gz_etag : f->etag, .cache_control = cc, .gzip = gz, .vary = f->gz != NULL,
@@ -1530,6 +1555,7 @@ static void server_free(mm_server *s)
     pthread_mutex_destroy(&s->q_lock);
     pthread_cond_destroy(&s->q_cond);
     pthread_mutex_destroy(&s->site_lock);
+    pthread_mutex_destroy(&s->static_lock);
     free(s);
 }
 
@@ -1544,6 +1570,7 @@ mm_server *mm_server_start(const mm_server_opts *o, mm_api *api, mm_error *err)
     pthread_mutex_init(&s->q_lock, NULL);
     pthread_cond_init(&s->q_cond, NULL);
     pthread_mutex_init(&s->site_lock, NULL);
+    pthread_mutex_init(&s->static_lock, NULL);
     site *st = site_new(api);
     if (!st) {
         mm_api_free(api);
@@ -1611,34 +1638,48 @@ mm_server *mm_server_start(const mm_server_opts *o, mm_api *api, mm_error *err)
             return NULL;
         }
 
-    /* One event thread on epoll holds every connection (see mm_http.h);
-     * it never blocks on a solve.  Until issue 16 each connection had a
-     * thread of its own, because libmicrohttpd 0.9.75's pool of epoll
-     * threads (MHD_USE_EPOLL_INTERNAL_THREAD + MHD_OPTION_THREAD_POOL_SIZE)
-     * now and then stopped serving every connection at once under load
-     * (tests/load/stall_hunt.sh found it: about once in 150-200 s at 256
-     * connections).  A single epoll thread with suspend/resume has not
-     * stalled in the same hunt (README, "Hosting it for a class"). */
+    /* Event threads: one libmicrohttpd daemon each, one epoll thread per
+     * daemon, all listening on the same port with SO_REUSEPORT, so that the
+     * kernel spreads the connections (see mm_http.h); none of them ever
+     * blocks on a solve.  Until issue 16 each connection had a thread of
+     * its own, because libmicrohttpd 0.9.75's own pool of epoll threads
+     * (MHD_USE_EPOLL_INTERNAL_THREAD + MHD_OPTION_THREAD_POOL_SIZE, one
+     * listening socket shared by the pool) now and then stopped serving
+     * every connection at once under load (tests/load/stall_hunt.sh found
+     * it: about once in 150-200 s at 256 connections).  Independent
+     * daemons do not share that code: README, "Hosting it for a class",
+     * gives the hunt's figures for this arrangement. */
+    s->n_io = o->io_threads > 0 ? o->io_threads : (cores >= 2 ? 2 : 1);
+    if (s->n_io > MAX_IO)
+        s->n_io = MAX_IO;
     unsigned limit = (unsigned)s->max_connections + 64;
-    s->d = MHD_start_daemon(
-        MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_EPOLL | MHD_ALLOW_SUSPEND_RESUME | MHD_USE_ERROR_LOG,
-        (uint16_t)o->port, NULL, NULL, on_request, s,
-        MHD_OPTION_SOCK_ADDR, (struct sockaddr *)&addr,
-        MHD_OPTION_CONNECTION_LIMIT, limit,
-        MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)30,
-        MHD_OPTION_CONNECTION_MEMORY_LIMIT, (size_t)(64 * 1024),
-        MHD_OPTION_LISTEN_BACKLOG_SIZE, (unsigned)4096,
-        MHD_OPTION_NOTIFY_COMPLETED, on_completed, s,
-        MHD_OPTION_NOTIFY_CONNECTION, on_connection, s,
-        MHD_OPTION_UNESCAPE_CALLBACK, unescape, NULL,
-        MHD_OPTION_END);
-    if (!s->d) {
-        mm_error_set(err, MM_EINTERNAL, "port", "could not listen on %s:%d (in use?)", o->host, o->port);
-        mm_server_stop(s);
-        return NULL;
+    for (int i = 0; i < s->n_io; i++) {
+        if (i > 0)
+            addr.sin_port = htons((uint16_t)s->port);
+        s->d[i] = MHD_start_daemon(
+            MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_EPOLL | MHD_ALLOW_SUSPEND_RESUME | MHD_USE_ERROR_LOG,
+            (uint16_t)(i ? s->port : o->port), NULL, NULL, on_request, s,
+            MHD_OPTION_SOCK_ADDR, (struct sockaddr *)&addr,
+            MHD_OPTION_LISTENING_ADDRESS_REUSE, (unsigned)(s->n_io > 1),
+            MHD_OPTION_CONNECTION_LIMIT, limit,
+            MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)30,
+            MHD_OPTION_CONNECTION_MEMORY_LIMIT, (size_t)(64 * 1024),   /* queries to 48 KiB get our 413 */
+            MHD_OPTION_LISTEN_BACKLOG_SIZE, (unsigned)4096,
+            MHD_OPTION_NOTIFY_COMPLETED, on_completed, s,
+            MHD_OPTION_NOTIFY_CONNECTION, on_connection, s,
+            MHD_OPTION_UNESCAPE_CALLBACK, unescape, NULL,
+            MHD_OPTION_END);
+        if (!s->d[i]) {
+            mm_error_set(err, MM_EINTERNAL, "port", "could not listen on %s:%d (in use?)", o->host,
+                         i ? s->port : o->port);
+            mm_server_stop(s);
+            return NULL;
+        }
+        if (i == 0) {
+            const union MHD_DaemonInfo *info = MHD_get_daemon_info(s->d[0], MHD_DAEMON_INFO_BIND_PORT);
+            s->port = info ? info->port : o->port;
+        }
     }
-    const union MHD_DaemonInfo *info = MHD_get_daemon_info(s->d, MHD_DAEMON_INFO_BIND_PORT);
-    s->port = info ? info->port : o->port;
     return s;
 }
 
@@ -1648,8 +1689,8 @@ void mm_server_stop(mm_server *s)
 {
     if (!s)
         return;
-    if (s->d) {                        /* no new connections from here on */
-        MHD_socket fd = MHD_quiesce_daemon(s->d);
+    for (int i = 0; i < s->n_io; i++) { /* no new connections from here on */
+        MHD_socket fd = s->d[i] ? MHD_quiesce_daemon(s->d[i]) : MHD_INVALID_SOCKET;
         if (fd != MHD_INVALID_SOCKET)
             close(fd);
     }
@@ -1661,11 +1702,12 @@ void mm_server_stop(mm_server *s)
         pthread_join(s->workers[i], NULL);
     /* every suspended connection has been resumed; give the answers a
      * moment to leave (at most 2 s) */
-    for (int i = 0; s->d && i < 200 && atomic_load(&s->in_flight) > 0; i++) {
+    for (int i = 0; s->d[0] && i < 200 && atomic_load(&s->in_flight) > 0; i++) {
         struct timespec ts = {0, 10 * 1000 * 1000};
         nanosleep(&ts, NULL);
     }
-    if (s->d)
-        MHD_stop_daemon(s->d);
+    for (int i = 0; i < s->n_io; i++)
+        if (s->d[i])
+            MHD_stop_daemon(s->d[i]);
     server_free(s);
 }

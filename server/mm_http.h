@@ -1,8 +1,9 @@
 /* mm_http.h — the HTTP server: the routes of docs/API.md over libmicrohttpd.
  *
- * Threads.  One event thread (libmicrohttpd's internal thread, on epoll)
- * holds every connection, reads every request and sends every answer; it
- * never solves.  What it answers itself, at once: documents built at start
+ * Threads.  Event threads (--io-threads, 2 by default: each a
+ * libmicrohttpd daemon with its own epoll thread, all on one port with
+ * SO_REUSEPORT) hold every connection, read every request and send every
+ * answer; they never solve.  What it answers itself, at once: documents built at start
  * (health, catalog, metadata, OpenAPI), static files (from memory after
  * their first read), answers found in the response cache, 304s, errors.
  * A solve that is not in the cache suspends its connection and goes to a
@@ -27,6 +28,7 @@ typedef struct mm_server_opts {
     const char *host;       /* address to listen on, "127.0.0.1" */
     int port;               /* 0 picks a free port (see mm_server_port) */
     int threads;            /* solve workers; 0 = number of cores */
+    int io_threads;         /* event threads; 0 = 2 (1 on one core) */
     const char *web_root;   /* the web/ folder */
     const char *vendor_root;/* node_modules/, or NULL for none */
     int max_connections;    /* over this many open, a request gets 503 busy; 0 = 10000 */
