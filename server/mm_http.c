@@ -1369,6 +1369,8 @@ static enum MHD_Result h_metrics(ctx *x)
          (double)atomic_load(&s->m.solve_us_sum) * 1e-6, atomic_load(&s->m.solves));
     LINE("# HELP mechmat_connections Open connections.\n# TYPE mechmat_connections gauge\n"
          "mechmat_connections %d\n", atomic_load(&s->connections));
+    LINE("# HELP mechmat_requests_in_flight Requests begun and not yet answered (this one included).\n"
+         "# TYPE mechmat_requests_in_flight gauge\nmechmat_requests_in_flight %d\n", atomic_load(&s->in_flight));
     pthread_mutex_lock(&s->q_lock);
     int q = s->q_len;
     pthread_mutex_unlock(&s->q_lock);
