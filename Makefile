@@ -183,7 +183,8 @@ fuzz: deps
 	@$(MAKE) --no-print-directory BUILD=build/fuzz CC=clang CXX=clang++ FUZZ=1 fuzz-bins
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) tests/fuzz/run.sh
 
-loadtest: deps
+loadtest:
+	@scripts/deps.sh --test
 	@$(MAKE) --no-print-directory all $(BUILD)/load/loadtool $(BUILD)/bench/bare_mhd
 	@BUILD=$(BUILD) tests/load/run.sh
 	@BUILD=$(BUILD) tests/load/class_start.sh
@@ -215,8 +216,9 @@ install: all
 	@deploy/install.sh "$(DESTDIR)" "$(PREFIX)" "$(SERVER_BIN)"
 
 # nginx in front of two instances on free loopback ports; one killed under load
-failover: deps
-	@$(MAKE) --no-print-directory all
+failover:
+	@scripts/deps.sh --test
+	@$(MAKE) --no-print-directory all $(BUILD)/load/loadtool
 	@BUILD=$(BUILD) tests/load/failover.sh
 
 fuzz-long: deps

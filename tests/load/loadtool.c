@@ -28,7 +28,11 @@
  *                             Prints counts and latency percentiles of
  *                             requests and of whole pages; exit status 1
  *                             when a request failed or was not a 200. */
+#include <arpa/inet.h>
 #include <curl/curl.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -436,6 +440,18 @@ int main(int argc, char **argv)
         int rc = verify(atoi(argv[2]), argv[3], atof(argv[4]));
         curl_global_cleanup();
         return rc;
+    }
+    if (argc == 2 && strcmp(argv[1], "freeport") == 0) {    /* a port the OS says is free */
+        int fd = socket(AF_INET, SOCK_STREAM, 0);
+        struct sockaddr_in a = {.sin_family = AF_INET};
+        a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t len = sizeof a;
+        if (fd < 0 || bind(fd, (struct sockaddr *)&a, sizeof a) != 0 ||
+            getsockname(fd, (struct sockaddr *)&a, &len) != 0)
+            return 1;
+        printf("%d\n", ntohs(a.sin_port));
+        close(fd);
+        return 0;
     }
     if (argc == 6 && strcmp(argv[1], "class") == 0) {
         curl_global_init(CURL_GLOBAL_DEFAULT);

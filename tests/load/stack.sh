@@ -19,7 +19,7 @@ stack_install() {
 
 # a free port, chosen by the OS (bound, read, released)
 free_port() {
-  python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1]); s.close()'
+  "$BUILD/load/loadtool" freeport
 }
 
 stack_instance() {
