@@ -706,12 +706,21 @@ static void a_course_should_choose_order_and_narrow_limits(void **state)
     cJSON_Delete(cat);
     mm_reply_free(&r);
 
-    /* a good one: served from the next request on */
-    write_text(path, "{\"title\": \"Statics\", \"exercises\": [\"num-linear-system\"]}");
+    /* a good one, under a base path: served from the next request on */
+    write_text(path, "{\"title\": \"Statics\", \"base_path\": \"/statics\", \"exercises\": [\"num-linear-system\"]}");
     kill(f.pid, SIGHUP);
-    for (int i = 0; i < 1000 && metric(&f, "mechmat_course_reloads_total{result=\"ok\"}") < 1; i++)
+    for (int i = 0; i < 1000; i++) {     /* until the new course answers: polled, not a delay */
+        request(&f, NULL, "/statics/api/health", NULL, NULL, &r);
+        long st = r.status;
+        mm_reply_free(&r);
+        if (st == 200)
+            break;
         usleep(10000);
+    }
     request(&f, NULL, "/api/exercises", NULL, NULL, &r);
+    assert_int_equal(r.status, 404);     /* outside the base path */
+    mm_reply_free(&r);
+    request(&f, NULL, "/statics/api/exercises", NULL, NULL, &r);
     cat = cJSON_Parse(r.body);
     assert_int_equal(cJSON_GetArraySize(cat), 1);
     assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(cat, 0), "id")->valuestring, "num-linear-system");
