@@ -513,7 +513,10 @@ static void two_thousand_idle_connections_should_not_keep_a_new_client_waiting(v
         setrlimit(RLIMIT_NOFILE, &rl);
     }
     getrlimit(RLIMIT_NOFILE, &rl);
-    assert_true(rl.rlim_cur >= IDLE + 100);
+    if (rl.rlim_cur < IDLE + 100) {       /* a machine that allows no 2,000 open files */
+        print_message("   skipped: the open-file limit is %lu\n", (unsigned long)rl.rlim_cur);
+        skip();
+    }
     int *fds = malloc(IDLE * sizeof *fds);
     const char *get = "GET /api/health HTTP/1.1\r\nHost: x\r\n\r\n";
     char resp[4096];
