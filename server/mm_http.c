@@ -829,12 +829,12 @@ static enum MHD_Result send_doc(req *r, const char *method, const char *url, con
 {
     int gz = z->gz && mm_accepts_gzip(header(r, MHD_HTTP_HEADER_ACCEPT_ENCODING));
     if (mm_etag_matches(header(r, MHD_HTTP_HEADER_IF_NONE_MATCH), z->doc->etag))
-        return send_not_modified(r, method, url, gz ? z->gz_etag : z->doc->etag, "no-cache", 1);
+        return send_not_modified(r, method, url, gz ? z->gz_etag : z->doc->etag, "no-cache", z->gz != NULL);
     atomic_fetch_add_explicit(&r->site->refs, 1, memory_order_relaxed);
     answer a = {.status = 200, .type = "application/json", .body = gz ? z->gz : z->doc->text,
                 .len = gz ? z->gz_len : z->doc->len, .free_fn = site_unref_cb, .free_cls = r->site,
-                .etag = gz ? z->gz_etag : z->doc->etag, .cache_control = "no-cache", .gzip = gz, .vary = 1,
-                .timing = "cache;desc=\"document\""};
+                .etag = gz ? z->gz_etag : z->doc->etag, .cache_control = "no-cache", .gzip = gz,
+                .vary = z->gz != NULL, .timing = "cache;desc=\"document\""};
     return send_answer(r, method, url, &a, "doc");
 }
 
