@@ -92,6 +92,9 @@ typedef struct static_file {       /* a static file read into memory */
     char etag[MM_ETAG_SIZE], gz_etag[MM_ETAG_SIZE + 4];
     const char *mime;
     int vendor;
+    int current;                   /* as the asset version saw it (web files) */
+    char url[256];                 /* the last URL path that led here ("" if long) */
+    long long checked_us;          /* when that URL was last resolved to this file */
     atomic_int refs;               /* the list's and each response's */
     struct static_file *next;
 } static_file;
@@ -550,12 +553,40 @@ static static_file *static_get_locked(mm_server *s, const char *real, const stru
     return f;
 }
 
-static static_file *static_get(mm_server *s, const char *real, const struct stat *st, int vendor)
+static int asset_current(const mm_server *s, const char *real, const struct stat *st);
+
+#define RECHECK_US 1000000          /* a URL is resolved on disk again after 1 s */
+
+static static_file *static_get(mm_server *s, const char *url, const char *real, const struct stat *st, int vendor)
 {
     pthread_mutex_lock(&s->static_lock);
     static_file *f = static_get_locked(s, real, st, vendor);
+    if (f) {
+        f->current = vendor || asset_current(s, real, st);
+        snprintf(f->url, sizeof f->url, "%s", strlen(url) < sizeof f->url ? url : "");
+        f->checked_us = now_us();
+    }
     pthread_mutex_unlock(&s->static_lock);
     return f;
+}
+
+/* The file a URL led to less than RECHECK_US ago, referenced; NULL when
+ * it must be resolved again.  A class opening one page asks for the same
+ * few files hundreds of times a second: this spares each request the
+ * realpath (a system call per path segment) and two stats. */
+static static_file *static_recent(mm_server *s, const char *url, int vendor)
+{
+    static_file *found = NULL;
+    long long now = now_us();
+    pthread_mutex_lock(&s->static_lock);
+    if (!atomic_load(&s->files_stale))
+        for (static_file *f = s->files; f && !found; f = f->next)
+            if (f->vendor == vendor && f->url[0] && strcmp(f->url, url) == 0 && now - f->checked_us < RECHECK_US) {
+                atomic_fetch_add_explicit(&f->refs, 1, memory_order_relaxed);
+                found = f;
+            }
+    pthread_mutex_unlock(&s->static_lock);
+    return found;
 }
 
 /* ---- the asset version --------------------------------------------------------------- */
@@ -1279,12 +1310,15 @@ static enum MHD_Result send_file(ctx *x, const char *root, const char *path, int
     mm_server *s = r->s;
     char real[PATH_MAX];
     struct stat st;
-    if (!root[0] || mm_static_resolve(root, path, real, sizeof real) != MM_OK || stat(real, &st) != 0)
-        return send_error(r, x->method, x->full_url, MM_ENOTFOUND, "", "no such page", NULL);
     const char *v = MHD_lookup_connection_value(r->c, MHD_GET_ARGUMENT_KIND, "v");
-    int versioned = v && strcmp(v, s->asset_version) == 0 && (vendor || asset_current(s, real, &st));
+    static_file *f = static_recent(s, path, vendor);
+    if (!f) {
+        if (!root[0] || mm_static_resolve(root, path, real, sizeof real) != MM_OK || stat(real, &st) != 0)
+            return send_error(r, x->method, x->full_url, MM_ENOTFOUND, "", "no such page", NULL);
+        f = static_get(s, path, real, &st, vendor);
+    }
+    int versioned = v && strcmp(v, s->asset_version) == 0 && f && f->current;
     const char *cc = versioned ? YEAR_CACHE : "no-cache";
-    static_file *f = static_get(s, real, &st, vendor);
     if (!f) {                                /* too large to keep: from disk */
         int fd = open(real, O_RDONLY | O_CLOEXEC);
         if (fd < 0)
