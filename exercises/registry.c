@@ -27,6 +27,7 @@ extern const mm_exercise mm_ex_num_plot;
 /* ==== end of 3 ==== */
 
 /* ==== 4 Dynamics ==== */
+extern const mm_exercise mm_ex_dyn_pendulum;
 /* ==== end of 4 ==== */
 
 /* ==== 5 Vibrations, 5.2-5.9 ==== */
@@ -66,6 +67,7 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 3 ==== */
 
     /* ==== 4 Dynamics ==== */
+    &mm_ex_dyn_pendulum,
     /* ==== end of 4 ==== */
 
     /* ==== 5 Vibrations, 5.2-5.9 ==== */
