@@ -28,6 +28,7 @@ extern const mm_exercise mm_ex_num_plot;
 
 /* ==== 4 Dynamics ==== */
 extern const mm_exercise mm_ex_dyn_pendulum;
+extern const mm_exercise mm_ex_dyn_double_pendulum;
 extern const mm_exercise mm_ex_dyn_robot_2link;
 extern const mm_exercise mm_ex_dyn_slider_crank;
 /* ==== end of 4 ==== */
@@ -70,6 +71,7 @@ const mm_exercise *const mm_exercises[] = {
 
     /* ==== 4 Dynamics ==== */
     &mm_ex_dyn_pendulum,
+    &mm_ex_dyn_double_pendulum,
     &mm_ex_dyn_robot_2link,
     &mm_ex_dyn_slider_crank,
     /* ==== end of 4 ==== */

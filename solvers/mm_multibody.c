@@ -34,7 +34,7 @@ int mm_dpend_rhs_hamilton(double t, const double *y, double *dy, void *params)
     double D = s->m1 + m2 * sd * sd;
     /* H = (l2^2 m2 p1^2 + l1^2 M p2^2 - 2 m2 l1 l2 p1 p2 cos d) / (2 l1^2 l2^2 m2 D) + V */
     double C1 = p1 * p2 * sd / (l1 * l2 * D);
-    double C2 = (l2 * l2 * m2 * p1 * p1 + l1 * l1 * M * p2 * p2 - l1 * l2 * m2 * p1 * p2 * cd) *
+    double C2 = (l2 * l2 * m2 * p1 * p1 + l1 * l1 * M * p2 * p2 - 2 * l1 * l2 * m2 * p1 * p2 * cd) *
                 sin(2 * d) / (2 * l1 * l1 * l2 * l2 * D * D);
     dy[0] = (l2 * p1 - l1 * p2 * cd) / (l1 * l1 * l2 * D);
     dy[1] = (l1 * M * p2 - l2 * m2 * p1 * cd) / (l1 * l2 * l2 * m2 * D);
