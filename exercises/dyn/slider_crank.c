@@ -388,9 +388,32 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double phi_end = y[(size_t)(n - 1) * (size_t)ny];
     mm_res_scalar_err(res, O_REV, phi_end / (2 * M_PI),
                       (fabs(phi_end - yref[2 * (n - 1)]) + 1e-12 * fabs(phi_end)) / (2 * M_PI), MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_FMAX_A, fa_max, 1e-3 * fa_max, MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_FMAX_B, fb_max, 1e-3 * fb_max, MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_NMAX, n_max, 1e-3 * n_max + 1e-12, MM_ERR_ESTIMATE);
+    /* the joint forces of the reference run, for the error of their maxima */
+    double ra = 0, rb = 0, rn = 0;
+    int ia = 0, ib = 0, in_ = 0;
+    double *absn = mm_res_alloc(res, (size_t)n * sizeof *absn);
+    if (!absn)
+        return MM_ENOMEM;
+    for (int i = 0; i < n; i++) {
+        double q[MM_SC_NQ], qd[MM_SC_NQ], qdd[MM_SC_NQ], lam[MM_SC_NC];
+        mm_sc_assemble(&s, yref[2 * i], yref[2 * i + 1], q, qd);
+        if (mm_sc_accel(&s, q, qd, 0, 0, qdd, lam) != MM_OK)
+            return mm_error_set(err, MM_ESINGULAR, "l", "the constraints became dependent: the rod stood vertical");
+        ra = fmax(ra, hypot(lam[0], lam[1])), rb = fmax(rb, hypot(lam[2], lam[3])), rn = fmax(rn, fabs(lam[3]));
+        absn[i] = fabs(sn->y[i]);
+        if (sfa->y[i] > sfa->y[ia])
+            ia = i;
+        if (sfb->y[i] > sfb->y[ib])
+            ib = i;
+        if (absn[i] > absn[in_])
+            in_ = i;
+    }
+    mm_res_scalar_err(res, O_FMAX_A, fa_max, fabs(fa_max - ra) + extreme_error(sfa->y, n, ia) + 1e-12 * fa_max,
+                      MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_FMAX_B, fb_max, fabs(fb_max - rb) + extreme_error(sfb->y, n, ib) + 1e-12 * fb_max,
+                      MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_NMAX, n_max, fabs(n_max - rn) + extreme_error(absn, n, in_) + 1e-12 * fb_max,
+                      MM_ERR_ESTIMATE);
 
     double rad = 1 + fabs(y[(size_t)(n - 1) * (size_t)ny]);
     /* each step errs by about rtol of the state; the errors add up over the

@@ -29,9 +29,9 @@ for sgn = [-1 1]
     out.J_max = v;
   end
 end
-% the reduced equation J phi'' + J'(phi) phi'^2 / 2 = torque (dJ by a central difference),
-% integrated far more tightly than the server's rtol, so what differs is the server's error
-dJ = @(p) (J(p + 1e-5) - J(p - 1e-5)) / 2e-5;
+% the reduced equation J phi'' + J'(phi) phi'^2 / 2 = torque (dJ by a 4th-order central
+% difference), integrated far more tightly than the server's rtol
+dJ = @(p) (8 * (J(p + 1e-3) - J(p - 1e-3)) - (J(p + 2e-3) - J(p - 2e-3))) / 12e-3;
 f = @(t, y) [y(2); (torque - dJ(y(1)) * y(2)^2 / 2) / J(y(1))];
 [t, y] = ode45(f, linspace(0, t_end, points), [0; omega0], odeset('RelTol', 1e-12, 'AbsTol', 1e-12));
 out.omega_min = min(y(:, 2));
