@@ -358,7 +358,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method_stat(res, "symplectic_largest_energy_error", sy_drift);
 
     /* checks */
-    double steps = 1 + rate(&s, y0) * t_end;
+    double steps = 8 + rate(&s, y0) * t_end;     /* DOP853 takes a few steps even over a short run */
     mm_res_check_abs(res, "energy of the reference run (DOP853, rtol 1e-10): largest relative error",
                      ref_drift, 0, 0.8 * RTOL_REF * steps);
     mm_check_residual(res, "Lagrange's equations vs Hamilton's: dp/dt = d(M w)/dt at every plotted state "
