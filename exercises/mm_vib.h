@@ -89,6 +89,7 @@ typedef struct mm_vib_transient {
     double err_max;       /* max |q_nm - q_ex|: Newmark's error, exact to rounding */
     double trunc_max;     /* max |q_m - q_ex|: the truncation error, exact */
     double round;         /* the rounding of these (an estimate) */
+    double round_nm;      /* that of err_max, with the Newmark run's own rounding */
 } mm_vib_transient;
 
 int mm_vib_transient_run(mm_result *res, int n, const double *M, const double *K, const double *omega,

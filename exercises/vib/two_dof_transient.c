@@ -109,7 +109,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if ((rc = mm_vib_transient_run(res, 2, M, K, w, phi, c, m, x0, v0, F, W, h, t_end, (int)in[P_POINTS].x, &tr,
                                    err)))
         return rc;
-    mm_res_scalar_err(res, O_ERR, tr.err_max, tr.round, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_ERR, tr.err_max, tr.round_nm, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_TRUNC, tr.trunc_max, tr.round, MM_ERR_ESTIMATE);
     int ns = tr.ns;
     static const int sid[3][2] = {{O_X1, O_X2}, {O_X1E, O_X2E}, {O_X1M, O_X2M}};
