@@ -13,7 +13,7 @@ int mm_sdof_check(const mm_sdof *s, mm_error *err)
 {
     const struct { const char *name; double v; } f[] = {
         {"m", s->m}, {"c", s->c}, {"k", s->k}, {"F0", s->F0},
-        {"omega", s->omega}, {"x0", s->x0}, {"v0", s->v0},
+        {"omega", s->omega}, {"x0", s->x0}, {"v0", s->v0}, {"G0", s->G0},
     };
     for (unsigned i = 0; i < sizeof f / sizeof f[0]; i++)
         if (!isfinite(f[i].v))
@@ -38,8 +38,15 @@ void mm_sdof_props_get(const mm_sdof *s, mm_sdof_props *p)
                                               : MM_SDOF_OVER;
     p->omega_d = p->regime == MM_SDOF_UNDER ? p->omega_n * sqrt((1 - p->zeta) * (1 + p->zeta)) : 0.0;
 
-    double re = s->k - s->m * s->omega * s->omega;   /* dynamic stiffness k - m w^2 + i c w */
-    double im = s->c * s->omega;
+    /* dynamic stiffness k - m w^2 + i c w; m w^2 as the exact sum
+     * q + e2 + e1 w (two fma products), so that k - m w^2 near resonance
+     * keeps the digits the data have */
+    double w = s->omega, mw = s->m * w, e1 = fma(s->m, w, -mw);
+    double q = mw * w, e2 = fma(mw, w, -q);
+    double re = ((s->k - q) - e2) - e1 * w;
+    double im = s->c * w;
+    double F = hypot(s->F0, s->G0);
+    p->stiffness_re = re;
     /* no damping and |k - m w^2| within 1e-9 k: the beat period is then over
      * 1e9 natural periods, so no steady state is ever reached (and X would
      * be a meaningless 1e9 F0/k or more) */
@@ -50,7 +57,7 @@ void mm_sdof_props_get(const mm_sdof *s, mm_sdof_props *p)
         p->magnification = 0.0;
     } else {
         double mod = hypot(re, im);
-        p->X = s->F0 / mod;
+        p->X = F / mod;
         p->phase = atan2(im, re);                     /* in [0, pi] since im >= 0 */
         p->magnification = s->k / mod;
     }
@@ -111,32 +118,36 @@ double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
     double a = p->zeta * wn;                                   /* decay rate c / 2m */
     double lambda = p->regime == MM_SDOF_CRITICAL ? 0.0 : wn * wn * (1 - p->zeta) * (1 + p->zeta);
 
-    if (s->c == 0.0 && s->F0 != 0.0) {
-        /* undamped: x = x0 cos + v0 S + F0/m (cos w t - cos wn t)/(wn^2 - w^2),
-         * the last term as t sin(s t) sinc(d t) / (2 s)... see the header */
+    if (s->c == 0.0 && (s->F0 != 0.0 || s->G0 != 0.0)) {
+        /* undamped: x = x0 C + v0 S + F0/m g(t) + G0/m h(t), with
+         *   g = (cos w t - cos wn t)/(wn^2 - w^2) = t sin(sm t) sinc(d t) / (2 sm),
+         *   h = (sin w t - (w/wn) sin wn t)/(wn^2 - w^2)
+         *     = (sin(wn t)/wn - t cos(sm t) sinc(d t)) / (2 sm),
+         * sm = (wn + w)/2, d = (wn - w)/2; h' = w g. */
         double sm = 0.5 * (wn + w), d = 0.5 * (wn - w);
         double vh, xh = homogeneous(0.0, wn * wn, s->x0, s->v0, t, &vh);
-        double g = t * sin(sm * t) * sinc(d * t) / (2.0 * sm);  /* = (cos wt - cos wn t)/(wn^2 - w^2) */
-        /* g' = [wn sin wn t - w sin w t] / (wn^2 - w^2), written stably:
-         *    = [cos(sm t) sin(d t) (wn + w)/2 ... ] — use the product rule on
-         *    g = (t/(2 sm)) sin(sm t) sinc(d t) */
         double sd = sinc(d * t);
-        double dsinc = fabs(d * t) < 1e-4 ? -d * d * t / 3.0
-                                          : d * (cos(d * t) - sd) / (d * t);  /* d/dt sinc(d t) */
-        double gd = (sin(sm * t) * sd + t * sm * cos(sm * t) * sd + t * sin(sm * t) * dsinc) / (2.0 * sm);
-        if (v)
-            *v = vh + s->F0 / s->m * gd;
-        return xh + s->F0 / s->m * g;
+        double g = t * sin(sm * t) * sd / (2.0 * sm);
+        double h = (sin(wn * t) / wn - t * cos(sm * t) * sd) / (2.0 * sm);
+        if (v) {
+            /* g' by the product rule on (t/(2 sm)) sin(sm t) sinc(d t) */
+            double dsinc = fabs(d * t) < 1e-4 ? -d * d * t / 3.0
+                                              : d * (cos(d * t) - sd) / (d * t);  /* d/dt sinc(d t) */
+            double gd = (sin(sm * t) * sd + t * sm * cos(sm * t) * sd + t * sin(sm * t) * dsinc) / (2.0 * sm);
+            *v = vh + (s->F0 * gd + s->G0 * w * g) / s->m;
+        }
+        return xh + (s->F0 * g + s->G0 * h) / s->m;
     }
 
     /* damped (or free): steady state plus the homogeneous part that meets the
      * initial conditions */
     double xp0 = 0, vp0 = 0, xp = 0, vp = 0;
-    if (s->F0 != 0.0) {
-        xp0 = p->X * cos(-p->phase);
-        vp0 = -p->X * w * sin(-p->phase);
-        xp = p->X * cos(w * t - p->phase);
-        vp = -p->X * w * sin(w * t - p->phase);
+    if (s->F0 != 0.0 || s->G0 != 0.0) {
+        double lag = p->phase - atan2(-s->G0, s->F0);  /* x_p = X cos(w t - lag) */
+        xp0 = p->X * cos(-lag);
+        vp0 = -p->X * w * sin(-lag);
+        xp = p->X * cos(w * t - lag);
+        vp = -p->X * w * sin(w * t - lag);
     }
     double A = s->x0 - xp0;
     double B = (s->v0 - vp0) + a * A;                          /* from x_h'(0) = -a A + B */
@@ -144,4 +155,29 @@ double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
     if (v)
         *v = vh + vp;
     return xh + xp;
+}
+
+int mm_sdof_rhs(double t, const double *y, double *dydt, void *params)
+{
+    const mm_sdof *s = params;
+    double wt = s->omega * t;
+    double F = s->G0 != 0.0 ? s->F0 * cos(wt) + s->G0 * sin(wt) : s->F0 * cos(wt);
+    dydt[0] = y[1];
+    dydt[1] = (F - s->c * y[1] - s->k * y[0]) / s->m;
+    return 0;
+}
+
+double mm_sdof_energy(const mm_sdof *s, double x, double v)
+{
+    return 0.5 * s->m * v * v + 0.5 * s->k * x * x;
+}
+
+double mm_sdof_fastest_rate(const mm_sdof *s, const mm_sdof_props *p)
+{
+    double rate = p->omega_n;
+    if (s->F0 != 0.0 || s->G0 != 0.0)
+        rate = fmax(rate, s->omega);
+    if (p->zeta > 1)                                  /* fast overdamped mode */
+        rate = fmax(rate, p->omega_n * (p->zeta + sqrt((p->zeta - 1) * (p->zeta + 1))));
+    return rate;
 }
