@@ -271,12 +271,41 @@ int mm_ex_anim_frames(double t_end, double period, int npts, double *t_show)
 }
 
 /* x rounded to `decimals` digits after the point, as the double nearest
- * that short decimal (so that the answer prints it short). */
+ * that short decimal (so that the answer prints it short): an integer over
+ * an exact power of ten is correctly rounded. */
 static double round_decimals(double x, int decimals)
 {
+    if (decimals >= 0 && decimals <= 22) {
+        double p = 1;
+        for (int i = 0; i < decimals; i++)
+            p *= 10;
+        return nearbyint(x * p) / p;
+    }
     char buf[64];
     snprintf(buf, sizeof buf, "%.*f", decimals, x);
     return strtod(buf, NULL);
+}
+
+double mm_ex_nice_up(double x)
+{
+    if (!(x > 0) || !isfinite(x))
+        return x;
+    double e = pow(10, floor(log10(x)) - 1);          /* two significant digits */
+    return ceil(x / e * (1 - 1e-12)) * e;
+}
+
+void mm_ex_time_grid(double t_end, int n, double *t)
+{
+    mm_linspace(0, t_end, n, t);
+    double step = t_end / (n - 1);
+    for (int k = 0; k <= 15; k++) {                   /* the decimals of the step, if it has few */
+        double p = pow(10, k), m = step * p;
+        if (fabs(m - nearbyint(m)) <= 1e-9 * m) {
+            for (int i = 0; i < n; i++)
+                t[i] = round_decimals(t[i], k);
+            return;
+        }
+    }
 }
 
 void mm_ex_round_sig(double *y, int n, int digits)

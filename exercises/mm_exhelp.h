@@ -13,6 +13,15 @@
  * a + (b - a) * i / (n - 1) so that round grids print short. */
 void mm_linspace(double a, double b, int n, double *x);
 
+/* n equally spaced times from 0 to t_end (n >= 2) as mm_linspace, each the
+ * double nearest its short decimal when the step is a short decimal
+ * (t_end = 1.9, n = 501: 0.0038 i), so that a plot's times print short. */
+void mm_ex_time_grid(double t_end, int n, double *t);
+
+/* x > 0 rounded up to two significant digits (1.806 -> 1.9): a plot's end
+ * that makes a short grid.  Cannot fail. */
+double mm_ex_nice_up(double x);
+
 /* Largest |y[i]| over n values. */
 double mm_maxabs(const double *y, int n);
 
