@@ -42,9 +42,7 @@ static const mm_param params[] = {
 };
 
 enum { O_OMEGA_N, O_ZETA, O_R, O_T, O_X, O_PHASE, O_Z, O_FT, O_ISOLATES, O_X_MEAS, O_PHASE_MEAS,
-       O_RCROSS, O_MAXERR, O_XT, O_YT, O_ERR, O_TCURVE, O_TREF, O_ANIM };
-
-static const char *const zeta_keys[] = {"0.1", "0.5", NULL};
+       O_RCROSS, O_MAXERR, O_XT, O_YT, O_ERR, O_TCURVE, O_TREF1, O_TREF5, O_ANIM };
 
 static const mm_output outputs[] = {
     [O_OMEGA_N] = MM_SCALAR("omega_n", "natural frequency", "rad/s", .flags = MM_EXACT),
@@ -67,8 +65,10 @@ static const mm_output outputs[] = {
     [O_ERR] = MM_SERIES("error_dop853", "x by DOP853 minus the closed form", "m", "t", "s", .figure = "error"),
     [O_TCURVE] = MM_SERIES("T", "transmissibility X/Y of this system", "", "omega/omega_n", "",
                            .figure = "transmissibility"),
-    [O_TREF] = MM_SERIES("T_zeta_%s", "transmissibility, zeta = %s", "", "omega/omega_n", "",
-                         .keys = zeta_keys, .figure = "transmissibility", .role = "reference"),
+    [O_TREF1] = MM_SERIES("T_zeta_0_1", "transmissibility, zeta = 0.1", "", "omega/omega_n", "",
+                          .figure = "transmissibility", .role = "reference"),
+    [O_TREF5] = MM_SERIES("T_zeta_0_5", "transmissibility, zeta = 0.5", "", "omega/omega_n", "",
+                          .figure = "transmissibility", .role = "reference"),
     [O_ANIM] = MM_ANIMATION("the mass on its spring and damper over the moving support"),
 };
 
@@ -144,7 +144,7 @@ static int curves(double r, double zeta, mm_result *res)
     mm_ex_round_sig(st->y, nf, 6);                            /* a plot needs no more digits */
     static const double zref[2] = {0.1, 0.5};
     for (int k = 0; k < 2; k++) {
-        mm_series *sr = mm_res_series_i(res, O_TREF, k, NT);
+        mm_series *sr = mm_res_series(res, k ? O_TREF5 : O_TREF1, NT);
         if (!sr)
             return MM_ENOMEM;
         mm_linspace(0, r_max, NT, sr->x);

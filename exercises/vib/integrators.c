@@ -57,10 +57,11 @@ static const mm_param params[] = {
 enum { O_OMEGA_N, O_H_TAKEN, O_WN_H, O_H_STABLE, O_AMPLITUDE, O_T_SWEEP, O_ORDER, O_DRIFT_RK4, O_E_VERLET,
        O_E_NEWMARK, O_METHODS, O_X_EXACT, O_X_M, O_WORK, O_STEP, O_ENERGY };
 
-static const char *const mkeys[] = {"central-difference", "newmark-average-acceleration", "stormer-verlet",
+/* the keys of the series families: the method names as identifiers */
+static const char *const mkeys[] = {"central_difference", "newmark_average_acceleration", "stormer_verlet",
                                     "rk4", "dopri5", "dop853", NULL};
 static const char *const okeys[] = {"central_difference", "newmark", "verlet", "rk4", NULL};
-static const char *const skeys[] = {"central-difference", "newmark-average-acceleration", "stormer-verlet", "rk4",
+static const char *const skeys[] = {"central_difference", "newmark_average_acceleration", "stormer_verlet", "rk4",
                                     NULL};
 static const char *const ekeys[] = {"newmark", "verlet", "rk4", NULL};
 static const char *const cols[] = {"method", "order", "step", "steps", "evaluations", "rejected",
