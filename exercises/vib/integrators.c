@@ -463,9 +463,8 @@ static int table_row(const problem *pb, int m, const outcome *o, double zeta, mm
     double *row = tab->cell + 8 * m, wn = pb->p.omega_n;
     const char **txt = tab->text + 8 * m;
     txt[0] = mname[m];
-    row[1] = m == M_VERLET && zeta > 0 ? 1 : morder[m];        /* damped Verlet: first order */
-    if (m == M_VERLET && zeta > 0)
-        txt[1] = "1 (damped: the damping force sees the half-step velocity)";
+    row[1] = m == M_VERLET && zeta > 0 ? 1 : morder[m];        /* damped Verlet: first order, its damping
+                                                                  force sees the half-step velocity */
     row[2] = o->h;
     row[3] = (double)o->steps;
     row[4] = (double)o->evals;

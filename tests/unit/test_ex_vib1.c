@@ -48,6 +48,27 @@ static double scalar(const cJSON *doc, const char *name)
     return cJSON_GetObjectItem(named(doc, "scalars", name), "value")->valuedouble;
 }
 
+/* The "error" a scalar carries (0 when exact). */
+static double error_of(const cJSON *doc, const char *name)
+{
+    const cJSON *e = cJSON_GetObjectItem(named(doc, "scalars", name), "error");
+    return cJSON_IsNumber(e) ? e->valuedouble : 0;
+}
+
+static int is_exact(const cJSON *doc, const char *name)
+{
+    return cJSON_IsTrue(cJSON_GetObjectItem(named(doc, "scalars", name), "exact"));
+}
+
+static int warned(const cJSON *doc, const char *text)
+{
+    const cJSON *w;
+    cJSON_ArrayForEach(w, cJSON_GetObjectItem(doc, "warnings"))
+        if (strstr(w->valuestring, text))
+            return 1;
+    return 0;
+}
+
 static int has_scalar(const cJSON *doc, const char *name)
 {
     const cJSON *s;
@@ -418,13 +439,15 @@ static void frequency_response_peaks_should_match_the_formulas(void **state)
     cJSON *d = solve_ok("vib-frequency-response", "zeta=0.01,0.3,0.8&omega_n=2");
     check_rel(scalar(d, "peak_height"), 1 / (2 * 0.01 * sqrt(1 - 1e-4)), 1e-14, "peak height");
     check_rel(scalar(d, "peak_omega"), 2 * sqrt(1 - 2e-4), 1e-14, "peak frequency");
-    check_rel(scalar(d, "peak_omega_found"), 2 * sqrt(1 - 2e-4), 1e-8, "peak found");
+    check_abs(scalar(d, "peak_omega_found"), 2 * sqrt(1 - 2e-4), error_of(d, "peak_omega_found"),
+              "peak found, within its printed bound");
     double r1 = sqrt(1 - 2e-4 - 0.02 * sqrt(1 - 1e-4)), r2 = sqrt(1 - 2e-4 + 0.02 * sqrt(1 - 1e-4));
     check_rel(scalar(d, "bandwidth"), 2 * (r2 - r1), 1e-12, "exact half-power bandwidth");
     check_rel(scalar(d, "bandwidth"), scalar(d, "bandwidth_approx"), 2e-4, "2 zeta omega_n, close at small zeta");
-    /* zeta = 0.3 has a peak, zeta = 0.8 none */
+    /* zeta = 0.3 has a peak, zeta = 0.8 none: its peak is at r = 0 */
     assert_true(cell(d, "peaks", 1, "r_peak")->valuedouble > 0);
-    assert_true(cJSON_IsString(cell(d, "peaks", 2, "r_peak")));
+    check_abs(cell(d, "peaks", 2, "r_peak")->valuedouble, 0, 0, "zeta >= 1/sqrt(2): peak at r = 0");
+    assert_true(cJSON_IsString(cell(d, "peaks", 2, "bandwidth")));
     assert_true(!has_scalar(d, "no_such_scalar"));
     cJSON_Delete(d);
 }
@@ -453,6 +476,257 @@ static void transmissibility_should_be_one_at_root_two(void **state)
     expect_refused("vib-base-excitation", "c=0&omega=10", "omega");
 }
 
+
+/* ---- issue 10, #3: checks that failed on valid inputs; the plotted x(t) is
+ * the closed form, DOP853 beside it ---------------------------------------------- */
+
+/* The worst |x[i] - f(t[i])| of a series against a formula. */
+static double worst_against(const cJSON *d, const char *name, double (*f)(double, const double *),
+                            const double *prm, double *peak)
+{
+    double *t, *x, worst = 0;
+    int n = series(d, name, &t, &x);
+    *peak = 0;
+    for (int i = 0; i < n; i++) {
+        worst = fmax(worst, fabs(x[i] - f(t[i], prm)));
+        *peak = fmax(*peak, fabs(x[i]));
+    }
+    free(t);
+    free(x);
+    return worst;
+}
+
+/* free, underdamped, eq. (4) of vib-sdof-free: prm = m, k, c, x0, v0 */
+static double free_x(double t, const double *p)
+{
+    double wn = sqrt(p[1] / p[0]), z = p[2] / (2 * sqrt(p[1] * p[0])), wd = wn * sqrt(1 - z * z);
+    return exp(-z * wn * t) * (p[3] * cos(wd * t) + (p[4] + z * wn * p[3]) / wd * sin(wd * t));
+}
+
+/* forced from rest, damped: steady state X cos(wt - phase) plus the
+ * transient that starts it at rest: prm = m, k, c, F0, w */
+static double forced_x(double t, const double *p)
+{
+    double m = p[0], k = p[1], c = p[2], F0 = p[3], w = p[4];
+    double wn = sqrt(k / m), z = c / (2 * sqrt(k * m)), wd = wn * sqrt(1 - z * z);
+    double re = k - m * w * w, im = c * w, D2 = re * re + im * im;
+    double A = F0 * re / D2, B = F0 * im / D2;              /* x_p = A cos wt + B sin wt */
+    double C = -A, E = (-B * w + z * wn * C) / wd;
+    return A * cos(w * t) + B * sin(w * t) + exp(-z * wn * t) * (C * cos(wd * t) + E * sin(wd * t));
+}
+
+static void sdof_checks_should_pass_on_valid_inputs_and_plot_the_closed_form(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *id, *query;
+        double prm[5];
+        double (*f)(double, const double *);
+    } cases[] = {
+        {"vib-sdof-free", "c=0&t_end=1000&points=4001", {1, 100, 0, 0.01, 0}, free_x},
+        {"vib-sdof-free", "m=0.001&k=1e6&c=0&t_end=0.3&points=4001", {0.001, 1e6, 0, 0.01, 0}, free_x},
+        {"vib-sdof-free", "m=1000&k=100&c=2&x0=-10&v0=1000&t_end=10000&points=11", {1000, 100, 2, -10, 1000}, free_x},
+        {"vib-sdof-forced", "omega=10000&t_end=1", {1, 100, 2, 1, 10000}, forced_x},
+        {"vib-sdof-forced", "k=1e6&m=0.001&c=0&omega=0.001&t_end=0.3&points=4001", {0}, NULL},
+    };
+    for (unsigned k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        cJSON *d = solve_ok(cases[k].id, cases[k].query);
+        double radians = 0, peak;
+        if (cases[k].f) {
+            /* the textbook formula in double: the cosines carry eps of an
+             * argument up to w t_end = 1e4, so about 1e-12 of the motion */
+            double worst = worst_against(d, "x", cases[k].f, cases[k].prm, &peak);
+            radians = strstr(cases[k].query, "omega=10000") ? 1e4 : 1e4;
+            check_abs(worst, 0, 1e-15 * (16 + 4 * radians) * peak, cases[k].query);
+        }
+        /* DOP853's error is printed beside, small and bounded */
+        assert_true(error_of(d, "max_error_dop853") > 0);
+        cJSON_Delete(d);
+    }
+    /* energy_dissipated is E(0) - E(t_end) of the closed form; DOP853's
+     * integrated damper work beside it within its printed error */
+    cJSON *d = solve_ok("vib-sdof-free", "");
+    double prm[5] = {1, 100, 2, 0.01, 0}, h = 1e-6, x = free_x(5, prm);
+    double v = (free_x(5 + h, prm) - free_x(5 - h, prm)) / (2 * h);   /* to 1e-12 of v */
+    double lost = 0.5 * 100 * 0.01 * 0.01 - (0.5 * v * v + 0.5 * 100 * x * x);
+    check_rel(scalar(d, "energy_dissipated"), lost, 1e-9, "E(0) - E(5 s), central differences for v");
+    check_abs(scalar(d, "energy_dissipated_dop853"), scalar(d, "energy_dissipated"),
+              error_of(d, "energy_dissipated_dop853"), "integrated damper work within its error");
+    cJSON_Delete(d);
+}
+
+/* the resonance and base-excitation curves are the closed forms too */
+static double base_x(double t, const double *p)     /* m=1, k=100, c=2, Y=0.01, w=8, from rest */
+{
+    (void)p;
+    double m = 1, k = 100, c = 2, Y = 0.01, w = 8, wn = 10, z = 0.1, wd = wn * sqrt(1 - z * z);
+    double re = k - m * w * w, im = c * w, D2 = re * re + im * im;
+    /* F = k Y cos wt - c w Y sin wt = Re[(kY + i c w Y) e^{iwt}]; x_p = Re[(kY + i cwY)/(re + i im) e^{iwt}] */
+    double Fr = k * Y, Fi = c * w * Y, Ar = (Fr * re + Fi * im) / D2, Ai = (Fi * re - Fr * im) / D2;
+    double A = Ar, B = -Ai;                                  /* x_p = A cos wt + B sin wt */
+    double C = -A, E = (-B * w + z * wn * C) / wd;
+    return A * cos(w * t) + B * sin(w * t) + exp(-z * wn * t) * (C * cos(wd * t) + E * sin(wd * t));
+}
+
+static double tsin_x(double t, const double *p)     /* F0 t sin(wt)/(2 m w): m=2, k=50, F0=3 */
+{
+    (void)p;
+    return 3 * t * sin(5 * t) / (2 * 2 * 5);
+}
+
+static void resonance_and_base_curves_should_be_the_closed_forms(void **state)
+{
+    (void)state;
+    double peak, worst;
+    cJSON *d = solve_ok("vib-base-excitation", "points=1001");
+    worst = worst_against(d, "x", base_x, NULL, &peak);
+    check_abs(worst, 0, 1e-13 * peak, "base excitation: x(t) of eq. (2) in closed form");
+    cJSON_Delete(d);
+    d = solve_ok("vib-resonance", "m=2&k=50&c=0&F0=3&detuning=0&t_end=20&points=2001");
+    worst = worst_against(d, "x", tsin_x, NULL, &peak);
+    check_abs(worst, 0, 1e-14 * 100 * peak, "undamped resonance: F0 t sin(wt)/(2 m w) to rounding of w t");
+    cJSON_Delete(d);
+}
+
+/* ---- #4: vib-frequency-response at and beyond zeta = 1/sqrt(2) ------------------ */
+
+static void frequency_response_should_answer_at_zeta_one_over_root_two(void **state)
+{
+    (void)state;
+    static const char *const zs[] = {"0.70710678", "0.7071067811865475", "0.7071", "0.70710679", "1"};
+    for (unsigned k = 0; k < sizeof zs / sizeof zs[0]; k++) {
+        char q[64];
+        snprintf(q, sizeof q, "zeta=%s", zs[k]);
+        cJSON *d = solve_ok("vib-frequency-response", q);
+        /* golden section's find is printed with a bound that holds */
+        double found = scalar(d, "peak_omega_found"), exact = scalar(d, "peak_omega");
+        assert_true(error_of(d, "peak_omega_found") > 0);
+        check_abs(found, exact, error_of(d, "peak_omega_found"), "peak found within its bound");
+        if (atof(zs[k]) * atof(zs[k]) * 2 >= 1) {      /* no peak above r = 0: said so */
+            check_abs(scalar(d, "peak_r"), 0, 0, "peak at r = 0");
+            const cJSON *t = cJSON_GetObjectItem(named(d, "scalars", "peak_r"), "text");
+            assert_true(cJSON_IsString(t) && strstr(t->valuestring, "no resonance peak"));
+        }
+        cJSON_Delete(d);
+    }
+    /* zeta = 0.7071: the peak is at r = 0.00438 (to rounding), found within 5e-5 */
+    cJSON *d = solve_ok("vib-frequency-response", "zeta=0.7071&omega_n=1");
+    check_rel(scalar(d, "peak_r"), sqrt(1 - 2 * 0.7071 * 0.7071), 1e-12, "r_p = sqrt(1 - 2 zeta^2)");
+    assert_true(error_of(d, "peak_omega_found") < 1e-4);
+    cJSON_Delete(d);
+}
+
+/* ---- #7: vib-coulomb prints the exact piecewise solution -------------------------- */
+
+static void coulomb_should_print_the_exact_stop_with_the_events_beside_it(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-coulomb", "");
+    /* x0 - 10 d for the doubles 0.1, 9.81, 1, 100, in exact rational
+     * arithmetic (Python's fractions): -0.0018999999999999952 */
+    check_rel(scalar(d, "x_final"), -0.0018999999999999952, 1e-16, "x_final exact to the last digit");
+    check_rel(scalar(d, "stop_time"), M_PI / 2, 1e-16, "five half periods of pi/10");
+    assert_true(is_exact(d, "x_final") && is_exact(d, "stop_time"));
+    /* the event-driven integration beside them, within their printed errors */
+    check_abs(scalar(d, "x_final_events"), scalar(d, "x_final"), error_of(d, "x_final_events"), "x_final by events");
+    check_abs(scalar(d, "stop_time_events"), scalar(d, "stop_time"), error_of(d, "stop_time_events"),
+              "stop time by events");
+    assert_true(error_of(d, "x_final_events") < 1e-10);
+    cJSON_Delete(d);
+}
+
+/* ---- #11: digits lost to cancellation ------------------------------------------------ */
+
+static void near_resonance_numbers_should_keep_their_digits(void **state)
+{
+    (void)state;
+    /* vib-resonance: everything from the detuning d itself:
+     * k - m w^2 = -k d (2 + d), beat period 2 pi / (omega_n |d|) */
+    cJSON *d = solve_ok("vib-resonance", "detuning=1e-12");
+    check_rel(scalar(d, "beat_period"), 2 * M_PI / (10 * 1e-12), 1e-15, "beat period at d = 1e-12");
+    check_rel(scalar(d, "X"), 1 / (100 * 1e-12 * (2 + 1e-12)), 1e-15, "X = F0 / (k d (2 + d))");
+    cJSON_Delete(d);
+    d = solve_ok("vib-resonance", "detuning=1e-9");
+    check_rel(scalar(d, "X"), 4999999.9975, 1e-15, "X at d = 1e-9 (exact: 1/(2e-7 + 1e-16))");
+    cJSON_Delete(d);
+    /* vib-sdof-forced: k - m w^2 by exact products; no "inf s" transient */
+    d = solve_ok("vib-sdof-forced", "c=0&omega=10.00000005");
+    check_rel(scalar(d, "X"), 999999.98581390281, 1e-15, "X (exact rational arithmetic on the double omega)");
+    assert_false(warned(d, "inf"));
+    assert_true(warned(d, "never dies out"));
+    cJSON_Delete(d);
+    /* vib-base-excitation: the lag as one angle, not a difference of two:
+     * arg(k - m w^2 + i c w) - arg(k + i c w) at 50 digits (mpmath) */
+    d = solve_ok("vib-base-excitation", "omega=0.001");
+    check_rel(scalar(d, "phase"), 2.0000000192000003e-13, 1e-15, "phase at omega = 0.001");
+    cJSON_Delete(d);
+}
+
+/* ---- #12: the order of damped Verlet ------------------------------------------------- */
+
+static void verlet_order_should_be_one_with_damping_and_two_without(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-integrators", "periods=10");
+    check_abs(cell(d, "methods", 2, "order")->valuedouble, 1, 0, "damped Verlet: first order");
+    check_abs(scalar(d, "order_verlet"), 1, 0.05, "observed about 1.02");
+    cJSON_Delete(d);
+    d = solve_ok("vib-integrators", "periods=10&zeta=0");
+    check_abs(cell(d, "methods", 2, "order")->valuedouble, 2, 0, "undamped Verlet: second order");
+    check_abs(scalar(d, "order_verlet"), 2, error_of(d, "order_verlet") * 10 + 1e-4, "observed 2");
+    cJSON_Delete(d);
+}
+
+/* ---- limits and animations ---------------------------------------------------------------- */
+
+static void the_radian_cap_should_allow_twice_the_old_span(void **state)
+{
+    (void)state;
+    cJSON_Delete(solve_ok("vib-sdof-free", "c=0&t_end=2000&points=4001"));   /* 2e4 radians */
+    expect_refused("vib-sdof-free", "c=0&t_end=2001", "t_end");
+    cJSON_Delete(solve_ok("vib-resonance", "t_end=2000"));
+}
+
+static void oscillators_should_animate_their_motion(void **state)
+{
+    (void)state;
+    static const char *const ids[] = {"vib-sdof-free", "vib-sdof-forced", "vib-base-excitation", "vib-resonance",
+                                      "vib-coulomb"};
+    for (unsigned k = 0; k < sizeof ids / sizeof ids[0]; k++) {
+        cJSON *d = solve_ok(ids[k], "");
+        const cJSON *a = cJSON_GetObjectItem(d, "animation"), *shape;
+        assert_non_null(a);
+        int nf = cJSON_GetArraySize(cJSON_GetObjectItem(a, "t")), mass = 0, support = 0, floor_ = 0;
+        assert_true(nf >= 2 && nf <= 240);
+        cJSON_ArrayForEach(shape, cJSON_GetObjectItem(a, "shapes")) {
+            const char *nm = cJSON_GetObjectItem(shape, "name")->valuestring;
+            int frames = cJSON_GetArraySize(cJSON_GetObjectItem(shape, "x"));
+            mass |= strcmp(nm, "mass") == 0 && frames == nf;
+            support |= strcmp(nm, "support") == 0 && frames == nf;
+            floor_ |= strcmp(nm, "floor") == 0;
+        }
+        assert_true(mass);
+        assert_true(support == (strcmp(ids[k], "vib-base-excitation") == 0));   /* the moving base */
+        assert_true(floor_ == (strcmp(ids[k], "vib-coulomb") == 0));          /* the rough floor */
+        cJSON_Delete(d);
+    }
+    /* the block's frames follow the closed form: vib-sdof-free from x0 at rest,
+     * its left face at the rest length L = 5 max|x| plus x(t) */
+    cJSON *d = solve_ok("vib-sdof-free", "");
+    const cJSON *a = cJSON_GetObjectItem(d, "animation"), *shape, *mass = NULL;
+    cJSON_ArrayForEach(shape, cJSON_GetObjectItem(a, "shapes"))
+        if (strcmp(cJSON_GetObjectItem(shape, "name")->valuestring, "mass") == 0)
+            mass = shape;
+    double prm[5] = {1, 100, 2, 0.01, 0}, L = 5 * 0.01;
+    for (int f = 0; f < cJSON_GetArraySize(cJSON_GetObjectItem(a, "t")); f += 7) {
+        double t = cJSON_GetArrayItem(cJSON_GetObjectItem(a, "t"), f)->valuedouble;
+        double left = cJSON_GetArrayItem(cJSON_GetArrayItem(cJSON_GetObjectItem(mass, "x"), f), 0)->valuedouble;
+        /* drawn to 1e-3 of L's decade (1e-5 m) */
+        check_abs(left, L + free_x(t, prm), 1e-5, "the block's left face at L + x(t)");
+    }
+    cJSON_Delete(d);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -471,6 +745,14 @@ int main(void)
         cmocka_unit_test(integrators_should_report_the_step_taken_and_label_instability),
         cmocka_unit_test(frequency_response_peaks_should_match_the_formulas),
         cmocka_unit_test(transmissibility_should_be_one_at_root_two),
+        cmocka_unit_test(sdof_checks_should_pass_on_valid_inputs_and_plot_the_closed_form),
+        cmocka_unit_test(resonance_and_base_curves_should_be_the_closed_forms),
+        cmocka_unit_test(frequency_response_should_answer_at_zeta_one_over_root_two),
+        cmocka_unit_test(coulomb_should_print_the_exact_stop_with_the_events_beside_it),
+        cmocka_unit_test(near_resonance_numbers_should_keep_their_digits),
+        cmocka_unit_test(verlet_order_should_be_one_with_damping_and_two_without),
+        cmocka_unit_test(the_radian_cap_should_allow_twice_the_old_span),
+        cmocka_unit_test(oscillators_should_animate_their_motion),
     };
     return cmocka_run_group_tests_name("ex_vib1", tests, NULL, NULL);
 }
