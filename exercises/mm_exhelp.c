@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "mm_fourier.h"
+#include "mm_newmark.h"
 #include "mm_ode.h"
 #include "mm_scene.h"
 
@@ -452,4 +453,106 @@ double mm_check_order(mm_result *res, const char *name, int n, const double *h,
     double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
     mm_res_check_abs(res, name, slope, expected, tol);
     return slope;
+}
+
+int mm_ex_observed_order(const double *h, const double *e, int n, double lo, double hi, double *order,
+                         double *spread)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, lx[4], ly[4];
+    int k = 0;
+    for (int i = n - 1; i >= 0 && k < 4; i--) {
+        if (!(e[i] <= hi && e[i] >= lo))
+            continue;
+        lx[k] = log(h[i]), ly[k] = log(e[i]);
+        sx += lx[k], sy += ly[k], sxx += lx[k] * lx[k], sxy += lx[k] * ly[k];
+        k++;
+    }
+    if (k < 3)
+        return k;
+    *order = (k * sxy - sx * sy) / (k * sxx - sx * sx);
+    *spread = 0;
+    for (int j = 1; j < k; j++)
+        *spread = fmax(*spread, fabs((ly[j] - ly[j - 1]) / (lx[j] - lx[j - 1]) - *order));
+    return k;
+}
+
+static int force_cos(double t, const double *q, const double *qd, double *F, void *ctx)
+{
+    (void)q;
+    (void)qd;
+    const mm_sdof *s = ctx;
+    F[0] = s->F0 * cos(s->omega * t);
+    return 0;
+}
+
+int mm_ex_sdof_method(const mm_sdof *s, int m, double h, double rtol, double atol, double t_end, long stride,
+                      int cap, double *t, double *x, double *v, mm_ex_run *o, mm_result *res, mm_error *err)
+{
+    int rc;
+    long N = m <= MM_EX_RK4 ? (long)mm_ode_fixed_steps(t_end, h) : 0, max_steps = (long)(cap - 1) * stride;
+    *o = (mm_ex_run){.h = m <= MM_EX_RK4 ? t_end / (double)N : 0};
+    if (m <= MM_EX_VERLET) {
+        double M = s->m, C = s->c, K = s->k, q0 = s->x0, v0 = s->v0;
+        mm_newmark_problem prob = {.n = 1, .M = &M, .C = &C, .K = &K, .force = s->F0 ? force_cos : NULL,
+                                   .force_kind = MM_NEWMARK_FORCE_TIME, .params = (void *)s, .q0 = &q0,
+                                   .qd0 = &v0, .t0 = 0, .t_end = t_end};
+        mm_newmark_options opt;
+        mm_newmark_options_init(&opt);
+        opt.method = m == MM_EX_CENTRAL ? MM_NEWMARK_CENTRAL : m == MM_EX_AVERAGE ? MM_NEWMARK_AVERAGE
+                                                                                  : MM_NEWMARK_VERLET;
+        opt.h = h;
+        opt.stride = stride;
+        opt.max_steps = max_steps;
+        mm_newmark_result r = {.t = t, .q = x, .qd = v, .max_rows = cap};
+        rc = mm_newmark_check(&prob, &opt, err);
+        mm_newmark_work *w = rc == MM_OK ? mm_newmark_work_alloc(1) : NULL;
+        if (rc == MM_OK)
+            rc = w ? mm_newmark_solve(&prob, &opt, w, &r, err) : MM_ENOMEM;
+        mm_newmark_work_free(w);
+        o->steps = r.steps;
+        o->evals = r.force_evals ? r.force_evals : r.steps + 1;   /* F = 0: the force is still "evaluated" */
+        o->rows = r.rows;
+    } else {
+        double y0[2] = {s->x0, s->v0}, *ys = mm_res_alloc(res, 2 * (size_t)cap * sizeof *ys);
+        if (!ys)
+            return MM_ENOMEM;
+        mm_ode_problem prob = {.n = 2, .f = mm_sdof_rhs, .params = (void *)s, .t0 = 0, .t_end = t_end, .y0 = y0};
+        mm_ode_options opt;
+        mm_ode_options_init(&opt);
+        opt.method = m == MM_EX_RK4 ? MM_ODE_RK4 : m == MM_EX_DOPRI5 ? MM_ODE_DOPRI5 : MM_ODE_DOP853;
+        opt.h = m == MM_EX_RK4 ? h : 0;
+        opt.rtol = rtol;
+        opt.atol = atol;
+        opt.max_steps = max_steps;
+        mm_ode_result r = {0};
+        if (stride > 1) {                              /* the state at step multiples: grid output */
+            o->rows = (int)(N / stride + 1 + (N % stride != 0));
+            for (int i = 0; i < o->rows; i++)
+                t[i] = (double)(i * stride < N ? i * stride : N) * o->h;
+            r.t_out = t, r.nout = (size_t)o->rows, r.y_out = ys;
+        } else {
+            r.t_steps = t, r.y_steps = ys, r.steps_cap = (size_t)cap;
+        }
+        rc = mm_ode_check(&prob, &opt, &r, err);
+        mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
+        if (rc == MM_OK)
+            rc = w ? mm_ode_solve(&prob, &opt, w, &r, err) : MM_ENOMEM;
+        mm_ode_work_free(w);
+        o->steps = r.n_accepted;
+        o->evals = r.n_eval;
+        o->rejected = r.n_rejected;
+        if (m != MM_EX_RK4)
+            o->h = r.n_accepted ? r.t_reached / r.n_accepted : 0;
+        if (stride <= 1)
+            o->rows = (int)r.n_stored;
+        for (int i = 0; i < o->rows; i++) {
+            x[i] = ys[2 * i];
+            if (v)
+                v[i] = ys[2 * i + 1];
+        }
+        if (m != MM_EX_RK4 && rc == MM_ENOCONV)
+            rc = MM_ENONFINITE;                        /* out of steps: reported like a blow-up */
+    }
+    o->failed = rc == MM_ENONFINITE;
+    return o->failed ? MM_OK : rc;
 }

@@ -165,4 +165,45 @@ int mm_check_residual(mm_result *res, const char *name, double residual, double 
 double mm_check_order(mm_result *res, const char *name, int n, const double *h,
                       const double *e, double expected, double tol);
 
+/* ---- one oscillator by the textbook's time integrators ------------------------------ */
+
+enum mm_ex_method {
+    MM_EX_CENTRAL,      /* central difference (mm_newmark), damping implicit */
+    MM_EX_AVERAGE,      /* Newmark average acceleration (mm_newmark) */
+    MM_EX_VERLET,       /* Stormer-Verlet (mm_newmark) */
+    MM_EX_RK4,          /* classical Runge-Kutta (mm_ode) */
+    MM_EX_DOPRI5,       /* Dormand-Prince 5(4), adaptive (mm_ode) */
+    MM_EX_DOP853,       /* Dormand-Prince 8(5,3), adaptive (mm_ode) */
+    MM_EX_METHODS
+};
+
+typedef struct mm_ex_run {
+    int rows;           /* rows written into t, x, v */
+    long steps, evals, rejected;
+    double h;           /* the step taken (fixed: t_end / ceil(t_end / h)); mean step if adaptive */
+    int failed;         /* 1: the numbers overflowed (past a stability limit), or an
+                           adaptive run needed more than its steps */
+} mm_ex_run;
+
+/* The 1-DOF oscillator s (m x'' + c x' + k x = F0 cos wt) over [0, t_end]
+ * by method m: the fixed-step ones with step h, the adaptive ones at rtol
+ * and atol.  The state at every stride-th step (and the last) goes into t,
+ * x and v (v may be NULL), at most cap rows; stride > 1 only for the
+ * fixed-step methods.  At most (cap - 1) stride steps are taken.  Returns
+ * MM_OK (also when the run failed: o->failed says so), or an error of the
+ * solvers with err filled. */
+int mm_ex_sdof_method(const mm_sdof *s, int m, double h, double rtol, double atol, double t_end, long stride,
+                      int cap, double *t, double *x, double *v, mm_ex_run *o, mm_result *res, mm_error *err);
+
+/* The observed order of convergence of errors e against steps h (n
+ * points, h decreasing): the least-squares slope of log e against log h
+ * over the (up to) four finest points whose error lies in [lo, hi] (above
+ * hi the leading error term does not rule yet, below lo round-off does).
+ * *spread receives the largest difference of a local slope (between
+ * neighbours) from the fit: how far the points are from one straight line,
+ * the error of the slope.  Returns the number of points used (the slope is
+ * written only when it is 3 or more). */
+int mm_ex_observed_order(const double *h, const double *e, int n, double lo, double hi, double *order,
+                         double *spread);
+
 #endif
