@@ -2,12 +2,9 @@
  *
  *     m x'' + k x = -mu m g sign(x'),   x(0) = x0,  x'(0) = v0          (1)
  *
- * The friction force has a constant size and always opposes the motion, so
- * between two velocity zeros the mass swings on a harmonic arc about a
- * shifted centre, loses 2 mu m g / k of amplitude per half cycle (a straight
- * envelope, not an exponential one) and stops for good at the first
- * velocity zero where the spring can no longer beat static friction,
- * |k x| <= mu m g.
+ * Between two velocity zeros the mass swings on a harmonic arc about a
+ * shifted centre, losing 2 mu m g / k of amplitude per half cycle, and it
+ * stops for good where the spring can no longer beat static friction.
  * Goal: see the linear decay and the final stop away from x = 0, and learn
  * to integrate a discontinuous right-hand side honestly: integrate each
  * smooth piece (friction sign frozen), stop at the velocity zero as an
@@ -84,8 +81,6 @@ static const mm_output outputs[] = {
  * (eq. 6 with the knife edge given to sticking), in the closed form and in
  * the numerical solution alike: their positions differ by ~1e-10. */
 #define STICK_MARGIN 1e-9
-
-/* ---- the piecewise closed form ------------------------------------------------- */
 
 typedef struct model {
     double m, k, mu, g, x0, v0;
@@ -204,25 +199,21 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* ---- the integration with events ------------------------------------------ */
-
-/* Eq. (2) on one arc, friction direction frozen: y = (x, v). */
+/* Eq. (2) on one arc, friction direction frozen: y = (x, v); sg is the
+ * direction of the motion, f = sg mu g the friction acceleration. */
 typedef struct arc_ctx {
-    double w2, f;    /* omega_n^2 and the friction acceleration sg mu g */
-    double sg;       /* the direction of the motion on the arc */
+    double w2, f, sg;
 } arc_ctx;
 
 static int arc_rhs(double t, const double *y, double *dy, void *ctx)
 {
     (void)t;
-    const arc_ctx *a = ctx;
     dy[0] = y[1];
-    dy[1] = -a->w2 * y[0] - a->f;
+    dy[1] = -((const arc_ctx *)ctx)->w2 * y[0] - ((const arc_ctx *)ctx)->f;
     return 0;
 }
 
-/* The event: sg v falls through 0, the mass comes to rest. */
-static int arc_event(double t, const double *y, double *g, void *ctx)
+static int arc_event(double t, const double *y, double *g, void *ctx)   /* sg v falls through 0: at rest */
 {
     (void)t;
     *g = ((const arc_ctx *)ctx)->sg * y[1];
@@ -243,11 +234,9 @@ static int simulate(const model *s, double rtol, int np, const double *tg, sim *
                     mm_error *err)
 {
     double *yg = mm_res_alloc(res, 2 * (size_t)np * sizeof *yg);
-    mm_ode_work *w = mm_ode_work_alloc(2);
-    if (!yg || !w) {
-        mm_ode_work_free(w);
+    mm_ode_work *w = yg ? mm_ode_work_alloc(2) : NULL;
+    if (!w)
         return MM_ENOMEM;
-    }
     double t = 0, y[2] = {s->x0, s->v0};
     double sg = s->v0 != 0 ? (s->v0 > 0 ? 1 : -1) : (s->x0 > 0 ? -1 : 1);
     int g = 0, rc = MM_OK, moving = s->v0 != 0 || !sticks(s, s->x0);   /* eq. (6) */
@@ -280,8 +269,7 @@ static int simulate(const model *s, double rtol, int np, const double *tg, sim *
         t = r.t_event;
         y[0] = yend[0];
         y[1] = 0;                                                    /* the event: at rest */
-        o->t[o->n] = t;
-        o->x[o->n++] = y[0];
+        o->t[o->n] = t, o->x[o->n++] = y[0];
         moving = !sticks(s, y[0]);                                   /* eq. (6): stick, or turn back */
         sg = y[0] > 0 ? -1 : 1;
     }
@@ -292,8 +280,6 @@ static int simulate(const model *s, double rtol, int np, const double *tg, sim *
         o->xg[i] = i < g ? yg[2 * i] : y[0];                         /* at rest for good */
     return rc;
 }
-
-/* ---- checks and pictures ---------------------------------------------------- */
 
 /* E(0) - E(stop) - mu m g (path slid) of the rests of a run: 0 for the
  * exact motion, eq. (7). */
@@ -395,14 +381,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         sv->x[i] = se->x[i] = sx->x[i];
         sx->y[i] = exact_x(&s, te, xe, sge, ne, sx->x[i], &sv->y[i]);
     }
-    amp->x[0] = 0;
-    amp->y[0] = fabs(s.x0);
+    amp->x[0] = 0, amp->y[0] = fabs(s.x0);
     for (int j = 0; j < ne; j++) {
         tab->cell[3 * j] = te[j];
         tab->cell[3 * j + 1] = xe[j];
         tab->cell[3 * j + 2] = fabs(s.k * xe[j]) / fric;
-        amp->x[j + 1] = te[j];
-        amp->y[j + 1] = fabs(xe[j]);
+        amp->x[j + 1] = te[j], amp->y[j + 1] = fabs(xe[j]);
     }
 
     /* the same integrated arc by arc with events, and again at rtol / 100 */
@@ -424,16 +408,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_ex_round_sig(se->y, np, 3);                                    /* an error needs no more digits */
     mm_res_method(res, "exact piecewise solution; dop853 per sliding arc, stopped at the velocity zero "
                        "(mm_ode event location), beside it", 0);
-    mm_res_method_stat(res, "rtol", 1e-10);
-    mm_res_method_stat(res, "steps", (double)a.steps);
-    mm_res_method_stat(res, "evaluations", (double)a.evals);
-    mm_res_method_stat(res, "events", a.n);
-    mm_res_method_stat(res, "event_evaluations", (double)a.event_evals);
-    mm_res_method_stat(res, "error_estimate", est);
-
+    static const char *const stat[] = {"rtol", "steps", "evaluations", "events", "event_evaluations",
+                                       "error_estimate"};
+    double val[] = {1e-10, (double)a.steps, (double)a.evals, a.n, (double)a.event_evals, est};
+    for (int i = 0; i < 6; i++)
+        mm_res_method_stat(res, stat[i], val[i]);
     checks(&s, &a, &f, te, xe, ne, size, res);
-    /* between the rests x carries the arcs' phase error: the curve within
-     * ten times its estimated error */
     mm_res_check_abs(res, "x(t): integrated with events vs the exact solution (worst plotted point), within "
                           "10 times the error estimated at rtol/100", worst, 0, 10 * est + rnd * size);
     mm_ex_warn_aliasing(res, np, t_plot, ne ? s.w : 0, "raise points");

@@ -351,10 +351,8 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
     double s = fmax(size, 1e-300), e_time = 0, e_freq = 0;
     for (size_t j = 0; j < n; j++)
         e_time += (wx[j] / s) * (wx[j] / s);
-    for (size_t k = 0; k < nb; k++) {
-        double a = amp[k] / s;
-        e_freq += (k == 0 || 2 * k == n) ? a * a : 0.5 * a * a;
-    }
+    for (size_t k = 0; k < nb; k++)
+        e_freq += (k == 0 || 2 * k == n ? 1 : 0.5) * (amp[k] / s) * (amp[k] / s);
     e_freq *= (double)n * gain * gain;
     mm_res_check_rel(res, "Parseval: sum of squared (windowed) samples vs spectrum energy, eq. (4)", e_freq,
                      e_time, 8 * DBL_EPSILON * log2((double)n) + 1e-300);
@@ -383,9 +381,7 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
                     100 * leak, win == MM_WINDOW_RECT ? "; try window=hann" : "");
     if ((rc = curves(e, n, nb, fs, t, x, freq, amp, res)) != MM_OK)
         return rc;
-    mm_res_method(res, win == MM_WINDOW_HANN ? "FFT (FFTW, real input), Hann window" : "FFT (FFTW, real input)",
-                  1 / fs);
-    mm_res_method_stat(res, "samples", (double)n);
+    mm_res_method(res, win == MM_WINDOW_HANN ? "FFT (FFTW, real input), Hann window" : "FFT (FFTW, real input)", 1 / fs);
     mm_res_method_stat(res, "bins", (double)nb);
     return MM_OK;
 }
