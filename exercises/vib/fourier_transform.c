@@ -241,7 +241,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- the band check: complex error, phase included ---- */
     double X0 = exact_c(pulse, tau, A, 0);
     double f_band = fmin(fs / 4, 10 / tau);
-    double worst = 0, worst_ratio = 0, tol_at_worst = 0;
+    double worst = 0, worst_ratio = 0, tol_at_worst = 0, max_err = 0;
     long nband = 0;
     for (long k = 0; k < nb && freq[k] <= f_band; k++, nband++) {
         double xc = exact_c(pulse, tau, A, freq[k]);
@@ -253,6 +253,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
          * round f t_c and f t0, each to eps |f t| cycles) */
         double tol = error_bound(pulse, tau, A, fs, freq[k], w_eff) + 64 * DBL_EPSILON * log2((double)n) * X0 +
                      8 * M_PI * DBL_EPSILON * freq[k] * (fabs(tc) + fabs(t0) + dt) * X0;
+        max_err = fmax(max_err, e);
         if (e / tol > worst_ratio) {
             worst_ratio = e / tol;
             tol_at_worst = tol;
@@ -353,7 +354,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     mm_res_scalar(res, O_DF, fs / (double)n);
     mm_res_scalar(res, O_WINDOW, (double)n / fs);
-    mm_res_scalar_err(res, O_MAXERR, worst / X0, 64 * DBL_EPSILON * log2((double)n), MM_ERR_BOUND);
+    mm_res_scalar_err(res, O_MAXERR, max_err / X0, 64 * DBL_EPSILON * log2((double)n), MM_ERR_BOUND);
     mm_res_scalar(res, O_BAND, f_band);
 
     /* ---- checks ---- */
