@@ -248,7 +248,6 @@ const mm_exercise mm_ex_vib_base_excitation = {
     .summary = "A mass on a spring and damper whose support moves as Y cos(omega t): transmissibility and isolation.",
     .tags = "vibration, 1 DOF, base excitation, transmissibility, isolation",
     .theory = "exercises/vib/base_excitation.md",
-    .script = "exercises/vib/base_excitation.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

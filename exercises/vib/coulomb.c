@@ -436,7 +436,6 @@ const mm_exercise mm_ex_vib_coulomb = {
     .summary = "A mass on a spring sliding on a rough floor: straight-line decay and a stop away from zero.",
     .tags = "vibration, 1 DOF, dry friction, Coulomb, events, nonsmooth",
     .theory = "exercises/vib/coulomb.md",
-    .script = "exercises/vib/coulomb.m",
     .outputs = outputs,
     .n_outputs = MM_COUNT(outputs),
     .params = params,

@@ -436,7 +436,6 @@ const mm_exercise mm_ex_vib_dft = {
                "the Hann window, and aliasing above fs/2.",
     .tags = "DFT, FFT, spectrum, sampling, aliasing, leakage, window",
     .theory = "exercises/vib/dft.md",
-    .script = "exercises/vib/dft.m",
     .outputs = outputs,
     .n_outputs = MM_COUNT(outputs),
     .params = params,

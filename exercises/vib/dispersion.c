@@ -362,7 +362,6 @@ const mm_exercise mm_ex_vib_dispersion = {
                "beam the packet spreads, in a bar it keeps its shape.",
     .tags = "waves, dispersion, phase velocity, group velocity, wave packet, beam, bar",
     .theory = "exercises/vib/dispersion.md",
-    .script = "exercises/vib/dispersion.m",
     .outputs = outputs,
     .n_outputs = MM_COUNT(outputs),
     .params = params,

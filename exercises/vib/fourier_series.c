@@ -349,7 +349,6 @@ const mm_exercise mm_ex_vib_fourier_series = {
                "the 9 % overshoot at a jump.",
     .tags = "Fourier series, harmonics, FFT, Gibbs phenomenon, periodic motion",
     .theory = "exercises/vib/fourier_series.md",
-    .script = "exercises/vib/fourier_series.m",
     .outputs = outputs,
     .n_outputs = MM_COUNT(outputs),
     .params = params,

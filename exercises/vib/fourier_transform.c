@@ -430,7 +430,6 @@ const mm_exercise mm_ex_vib_fourier_transform = {
                "forms; shorter pulse, wider spectrum.",
     .tags = "Fourier transform, Fourier integral, pulse, spectrum, FFT, sampling",
     .theory = "exercises/vib/fourier_transform.md",
-    .script = "exercises/vib/fourier_transform.m",
     .outputs = outputs,
     .n_outputs = MM_COUNT(outputs),
     .params = params,

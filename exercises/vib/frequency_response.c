@@ -339,7 +339,6 @@ const mm_exercise mm_ex_vib_frequency_response = {
     .summary = "Magnification and phase lag against the forcing frequency for several damping ratios; peak and bandwidth.",
     .tags = "vibration, 1 DOF, frequency response, resonance peak, bandwidth, phase",
     .theory = "exercises/vib/frequency_response.md",
-    .script = "exercises/vib/frequency_response.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -378,7 +378,6 @@ const mm_exercise mm_ex_vib_harmonics = {
                "Lissajous figure of one against the other.",
     .tags = "harmonic motion, beats, envelope, periodic motion, Lissajous",
     .theory = "exercises/vib/harmonics.md",
-    .script = "exercises/vib/harmonics.m",
     .outputs = outputs,
     .n_outputs = MM_COUNT(outputs),
     .params = params,

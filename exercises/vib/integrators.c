@@ -438,7 +438,6 @@ const mm_exercise mm_ex_vib_integrators = {
     .summary = "One oscillator by central difference, Newmark, Verlet, RK4, DOPRI5 and DOP853: errors, costs, orders, energy.",
     .tags = "vibration, numerical methods, time integration, Newmark, Runge-Kutta, work-precision, energy",
     .theory = "exercises/vib/integrators.md",
-    .script = "exercises/vib/integrators.m",
     .outputs = outputs,
     .n_outputs = MM_COUNT(outputs),
     .params = params,

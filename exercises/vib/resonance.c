@@ -319,7 +319,6 @@ const mm_exercise mm_ex_vib_resonance = {
     .summary = "Drive a mass-spring system at its natural frequency from rest: linear growth, damped build-up, beats.",
     .tags = "vibration, 1 DOF, forced, resonance, beats, envelope",
     .theory = "exercises/vib/resonance.md",
-    .script = "exercises/vib/resonance.m",
     .outputs = outputs,
     .n_outputs = MM_COUNT(outputs),
     .params = params,

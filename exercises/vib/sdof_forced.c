@@ -178,7 +178,6 @@ const mm_exercise mm_ex_vib_sdof_forced = {
     .summary = "A mass on a spring and damper driven by F0 cos(omega t): transient, steady amplitude and phase lag.",
     .tags = "vibration, 1 DOF, forced, damping, steady state",
     .theory = "exercises/vib/sdof_forced.md",
-    .script = "exercises/vib/sdof_forced.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -184,7 +184,6 @@ const mm_exercise mm_ex_vib_sdof_free = {
     .summary = "A released mass on a spring and damper: under-, critically and overdamped motion.",
     .tags = "vibration, 1 DOF, free, damping",
     .theory = "exercises/vib/sdof_free.md",
-    .script = "exercises/vib/sdof_free.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,
