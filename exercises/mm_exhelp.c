@@ -196,6 +196,7 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
     *worst = mm_check_curve(res, "x(t): DOP853 vs the closed form (worst plotted point), within 10 times "
                             "its error estimated by a run at rtol/100", n, xi, x,
                             peak > 0 ? tol / peak : 0);
+    mm_res_method_stat(res, "max_error", *worst);
     return MM_OK;
 }
 

@@ -59,8 +59,7 @@ static const mm_param params[] = {
                   .help = "rect: the samples as they are; hann: tapered to zero at both ends, less leakage"},
 };
 
-enum { O_DF, O_NYQ, O_DUR, O_PEAK_F, O_PEAK_A, O_LEAK, O_GAIN, O_ALIAS_UP, O_ABOVE, O_PEAKS, O_AMP, O_SAMPLES,
-       O_SIGNAL };
+enum { O_DF, O_NYQ, O_DUR, O_PEAK_F, O_PEAK_A, O_LEAK, O_GAIN, O_PEAKS, O_AMP, O_SAMPLES, O_SIGNAL };
 
 static const char *const peak_cols[] = {"f", "amplitude", NULL};
 static const char *const peak_units[] = {"Hz", "", NULL};
@@ -76,9 +75,6 @@ static const mm_output outputs[] = {
                          "share of the power more than 2 bins from every peak (local maximum above 1e-3 of the largest)",
                          ""),
     [O_GAIN] = MM_SCALAR("coherent_gain", "window coherent gain (divided out)", "", .flags = MM_EXACT),
-    [O_ALIAS_UP] = MM_SCALAR("alias_check_up_to", "highest frequency the aliasing test can see (R fs / 2)", "Hz",
-                             .flags = MM_EXACT),
-    [O_ABOVE] = MM_SCALAR("above_nyquist", "share of the power above fs/2 (from the finer sampling)", ""),
     [O_PEAKS] = MM_TABLE("peaks", "the largest peaks: local maxima at bin frequencies", peak_cols, peak_units),
     [O_AMP] = MM_SERIES("amplitude", "single-sided amplitude", "", "f", "Hz", .figure = "spectrum", .mark = "bars"),
     [O_SAMPLES] = MM_SERIES("samples", "samples x_j", "", "t", "s", .figure = "signal", .mark = "dots"),
@@ -191,7 +187,7 @@ static int aliasing(const mm_value *in, mm_expr *e, size_t n, double fs, double 
     double *af = mm_res_alloc(res, mb * sizeof *af);
     if (!tf || !xf || !af)
         return MM_ENOMEM;
-    mm_res_scalar(res, O_ALIAS_UP, R * fs / 2);
+    mm_res_method_stat(res, "alias_check_up_to", R * fs / 2);
     mm_res_method_stat(res, "alias_oversampling", R);
     if (sample(e, m, 1 / (fs * R), tf, xf, &bad) != MM_OK) {
         mm_res_warn(res, "aliasing not tested: the signal is not finite at t = %g s, between the samples", tf[bad]);
@@ -216,7 +212,7 @@ static int aliasing(const mm_value *in, mm_expr *e, size_t n, double fs, double 
         }
     }
     double above = p_all > 0 ? p_above / p_all : 0;
-    mm_res_scalar_err(res, O_ABOVE, above, 8 * DBL_EPSILON * (double)mb, MM_ERR_BOUND);
+    mm_res_method_stat(res, "above_nyquist", above);
     if (hi > ALIAS_LEVEL * ftop) {
         double f = (double)khi * fs / (double)n, fa = fabs(f - fs * nearbyint(f / fs));
         mm_res_warn(res, "aliasing: the signal has content above fs/2 = %g Hz (largest near %g Hz, "

@@ -43,8 +43,8 @@ static const mm_param params[] = {
                      "1e-6 to 1e6 (it only scales)"},
 };
 
-enum { O_OVERSHOOT, O_FRACTION, O_TMAX, O_GIBBS, O_SAMPLES, O_OMEGA, O_OVER_REFINED, O_TMAX_REFINED,
-       O_OVER_FFT, O_COEFFS, O_WAVE, O_SUM, O_WAVE_ZOOM, O_SUM_ZOOM };
+enum { O_OVERSHOOT, O_FRACTION, O_TMAX, O_GIBBS, O_SAMPLES, O_OMEGA, O_COEFFS, O_WAVE, O_SUM, O_WAVE_ZOOM,
+       O_SUM_ZOOM };
 
 static const char *const coef_cols[] = {"k", "a_k", "b_k", "a_k_fft", "b_k_fft", "fft_error", "fft_error_bound",
                                         NULL};
@@ -59,9 +59,6 @@ static const mm_output outputs[] = {
                           .flags = MM_EXACT),
     [O_SAMPLES] = MM_SCALAR("samples", "samples per period N of the FFT", "", .flags = MM_EXACT),
     [O_OMEGA] = MM_SCALAR("omega", "fundamental angular frequency 2 pi / T", "rad/s", .flags = MM_EXACT),
-    [O_OVER_REFINED] = MM_SCALAR("overshoot_refined", "max S_K - A refined numerically (scan, golden section)", ""),
-    [O_TMAX_REFINED] = MM_SCALAR("t_max_refined", "time of the maximum refined numerically", "s"),
-    [O_OVER_FFT] = MM_SCALAR("overshoot_fft", "max S_K - A of the series with the FFT's coefficients", ""),
     [O_COEFFS] = MM_TABLE("coefficients", "coefficients: exact (6)-(8), and by FFT (5) with their error",
                           coef_cols, coef_units),
     [O_WAVE] = MM_SERIES("wave", "the wave f(t)", "", "t", "s", .figure = "period", .role = "reference"),
@@ -287,12 +284,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_GIBBS, G);
     mm_res_scalar(res, O_SAMPLES, (double)N);
     mm_res_scalar(res, O_OMEGA, 2 * M_PI / T);
-    mm_ex_scalar_beside(res, O_OVER_REFINED, s_max - A, s_ref - A, tol_round);
-    mm_ex_scalar_beside(res, O_OVER_FFT, s_fft - A, s_ref - A, tol_round);
     /* the square's S_K is symmetric about T/4: its maximum sits at T/(4n)
      * and at T/2 - T/(4n); the refined one is compared with the nearer */
     double t_near = wave == W_SQUARE && fabs(t_max - (T / 2 - t_ref)) < fabs(t_max - t_ref) ? T / 2 - t_ref : t_ref;
-    mm_ex_scalar_beside(res, O_TMAX_REFINED, t_max, t_near, 4 * DBL_EPSILON * T);
 
     /* ---- checks ---- */
     mm_res_check_abs(res, "coefficients: FFT of a sampled period vs the closed forms (6)-(8), worst |error|, "

@@ -39,6 +39,7 @@ end
 out.gibbs_constant = integral(@(x) sin(x)./x, 0, pi)/pi - 0.5;
 out.samples = N;
 out.omega = w;
-out.overshoot_refined = max(S(linspace(-T/2, T/2, 64*(K + 1)))) - A;
+% beside: the maximum found by a scan, and that of the FFT's series
+overshoot_scan = max(S(linspace(-T/2, T/2, 64*(K + 1)))) - A;
 Sf = @(t) a_fft*cos(w*k'*t) + b_fft*sin(w*k'*t);
-out.overshoot_fft = max(Sf(linspace(-T/2, T/2, 64*(K + 1)))) - A;
+overshoot_fft = max(Sf(linspace(-T/2, T/2, 64*(K + 1)))) - A;

@@ -54,8 +54,8 @@ static const mm_param params[] = {
                      "at most 65536 (the direct sums that locate the zero cost N each)"},
 };
 
-enum { O_AREA, O_AREA_FFT, O_HALF_F, O_HALF_FT, O_HALF_FOUND, O_ZERO, O_ZERO_T, O_ZERO_FOUND, O_DF, O_WINDOW,
-       O_MAXERR, O_BAND, O_MAG, O_MAG_EXACT, O_PULSE };
+enum { O_AREA, O_AREA_FFT, O_HALF_F, O_HALF_FT, O_ZERO, O_ZERO_T, O_DF, O_WINDOW, O_MAXERR, O_BAND, O_MAG,
+       O_MAG_EXACT, O_PULSE };
 
 static const mm_output outputs[] = {
     [O_AREA] = MM_SCALAR("area", "pulse area X(0) = int x dt, eqs. (3)-(6)", "s", .flags = MM_ANSWER | MM_EXACT),
@@ -64,13 +64,9 @@ static const mm_output outputs[] = {
                            .flags = MM_ANSWER | MM_EXACT),
     [O_HALF_FT] = MM_SCALAR("half_amplitude_times_duration", "that frequency times the duration", "",
                             .flags = MM_EXACT),
-    [O_HALF_FOUND] = MM_SCALAR("half_amplitude_frequency_found",
-                               "half-amplitude frequency of the samples, found by Brent's method", "Hz"),
     [O_ZERO] = MM_SCALAR("first_zero", "first zero of the spectrum, eqs. (3), (4), (6)", "Hz",
                          .flags = MM_ANSWER | MM_EXACT),
     [O_ZERO_T] = MM_SCALAR("first_zero_times_duration", "first zero times the duration", "", .flags = MM_EXACT),
-    [O_ZERO_FOUND] = MM_SCALAR("first_zero_found", "first zero of the samples' spectrum, found by Brent's method",
-                               "Hz"),
     [O_DF] = MM_SCALAR("df", "frequency step fs/N", "Hz", .flags = MM_EXACT),
     [O_WINDOW] = MM_SCALAR("window", "window length N/fs", "s", .flags = MM_EXACT),
     [O_MAXERR] = MM_SCALAR("max_error_band", "largest |FFT - exact| below the band edge, relative to X(0)", ""),
@@ -346,11 +342,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (pulse == PU_GAUSS) {
         mm_res_scalar(res, O_HALF_F, f_ref);
         mm_res_scalar(res, O_HALF_FT, f_ref * tau);
-        mm_ex_scalar_beside(res, O_HALF_FOUND, fz, f_ref, 4 * DBL_EPSILON * f_ref);
     } else {
         mm_res_scalar(res, O_ZERO, f_ref);
         mm_res_scalar(res, O_ZERO_T, zero_times_tau[pulse]);
-        mm_ex_scalar_beside(res, O_ZERO_FOUND, fz, f_ref, 4 * DBL_EPSILON * f_ref);
     }
     mm_res_scalar(res, O_DF, fs / (double)n);
     mm_res_scalar(res, O_WINDOW, (double)n / fs);

@@ -50,8 +50,8 @@ static const mm_param params[] = {
                   .help = "samples of each plotted curve (a plot shows no more)"},
 };
 
-enum { O_BEAT, O_BEAT_F, O_CARRIER, O_EMAX, O_EMIN, O_PERIODIC, O_PERIOD, O_PEAK_MAX, O_PEAK_MIN, O_BEAT_MEAS,
-       O_X, O_ENV, O_ENV_LO, O_X1, O_X2, O_LISSAJOUS };
+enum { O_BEAT, O_BEAT_F, O_CARRIER, O_EMAX, O_EMIN, O_PERIODIC, O_PERIOD, O_PEAK_MAX, O_PEAK_MIN, O_X, O_ENV,
+       O_ENV_LO, O_X1, O_X2, O_LISSAJOUS };
 
 static const mm_output outputs[] = {
     [O_BEAT] = MM_SCALAR("beat_period", "beat period 2 pi / |omega1 - omega2|", "s", .flags = MM_ANSWER | MM_EXACT),
@@ -64,7 +64,6 @@ static const mm_output outputs[] = {
     [O_PERIOD] = MM_SCALAR("period", "period of the sum, eq. (6)", "s", .flags = MM_ANSWER | MM_EXACT),
     [O_PEAK_MAX] = MM_SCALAR("peak_max", "highest carrier peak (measured)", "m"),
     [O_PEAK_MIN] = MM_SCALAR("peak_min", "lowest carrier peak (measured)", "m"),
-    [O_BEAT_MEAS] = MM_SCALAR("beat_period_measured", "beat period measured between envelope minima", "s"),
     [O_X] = MM_SERIES("x", "x1 + x2", "m", "t", "s", .figure = "sum"),
     [O_ENV] = MM_SERIES("envelope", "envelope +E(t)", "m", "t", "s", .figure = "sum", .role = "reference"),
     [O_ENV_LO] = MM_SERIES("envelope_lower", "envelope -E(t)", "m", "t", "s", .figure = "sum", .role = "reference"),
@@ -281,7 +280,8 @@ static int beats(const harm *h, double t_end, const double *tp, const double *pp
          * better (a ratio of whole numbers repeats the peaks exactly): the
          * measurement is shown beside the formula with its actual error */
         double Tm = (tmin[nm - 1] - tmin[0]) / (nm - 1);
-        mm_ex_scalar_beside(res, O_BEAT_MEAS, Tm, Tb, 4 * DBL_EPSILON * Tb);
+        mm_res_method_stat(res, "beat_period_measured", Tm);
+        mm_res_method_stat(res, "beat_period_measured_error", fabs(Tm - Tb));
     } else if (t_end >= 2.5 * Tb) {
         mm_res_warn(res, "the envelope minima could not be told apart (%d found): the beat period is not measured",
                     nm);

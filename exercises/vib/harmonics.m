@@ -16,19 +16,22 @@ end
 t = linspace(0, t_end, points);
 x = A1*cos(omega1*t + phi1) + A2*cos(omega2*t + phi2);
 E = abs(A1 + A2*exp(1i*((omega2 - omega1)*t + phi2 - phi1)));  % envelope, eq. (4)
-% carrier peaks: zeros of x' between 8 points a period of the faster one, by fzero
+% carrier peaks: zeros of x' between 8 points a period of the faster one,
+% refined by bisection (all brackets at once)
 dx = @(t) -A1*omega1*sin(omega1*t + phi1) - A2*omega2*sin(omega2*t + phi2);
 ts = linspace(0, t_end, ceil(8*t_end*max(omega1, omega2)/(2*pi)) + 9);
-peaks = [];
-for i = 1:numel(ts) - 1
-  if dx(ts(i))*dx(ts(i + 1)) < 0
-    tp = fzero(dx, [ts(i) ts(i + 1)]);
-    if -A1*omega1^2*cos(omega1*tp + phi1) - A2*omega2^2*cos(omega2*tp + phi2) < 0
-      peaks(end + 1) = A1*cos(omega1*tp + phi1) + A2*cos(omega2*tp + phi2);
-    end
-  end
+d = dx(ts);
+i = find(d(1:end - 1).*d(2:end) < 0);
+a = ts(i); b = ts(i + 1); fa = d(i);
+for it = 1:60
+  mid = (a + b)/2; fm = dx(mid);
+  left = fa.*fm <= 0;
+  b(left) = mid(left); a(~left) = mid(~left); fa(~left) = fm(~left);
 end
-if ~isempty(peaks)
+tp = (a + b)/2;
+tp = tp(-A1*omega1^2*cos(omega1*tp + phi1) - A2*omega2^2*cos(omega2*tp + phi2) < 0);   % maxima of x
+if ~isempty(tp)
+  peaks = A1*cos(omega1*tp + phi1) + A2*cos(omega2*tp + phi2);
   out.peak_max = max(peaks);
   out.peak_min = min(peaks);
 end
