@@ -302,7 +302,7 @@ void mm_ex_time_grid(double t_end, int n, double *t)
     double step = t_end / (n - 1);
     for (int k = 0; k <= 15; k++) {                   /* the decimals of the step, if it has few */
         double p = pow(10, k), m = step * p;
-        if (fabs(m - nearbyint(m)) <= 1e-9 * m) {
+        if (fabs(m - nearbyint(m)) <= 8 * DBL_EPSILON * m) {      /* a whole number to rounding */
             for (int i = 0; i < n; i++)
                 t[i] = round_decimals(t[i], k);
             return;
