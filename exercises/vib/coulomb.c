@@ -356,9 +356,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_BAND, s.d);
     mm_res_scalar(res, O_DECAY, 4 * s.d);
     mm_res_scalar(res, O_STOP, stop);
-    mm_res_scalar(res, O_XF, xf);
+    /* from rest the rests are |x0| - 2 j d, exact but for one rounding; a
+     * moving start goes through x1 = c + R, rounded to a few eps of |x1|,
+     * which a long decay to a small x_final makes a large part of it */
+    double xf_err = s.v0 != 0 && ne ? 8 * DBL_EPSILON * (fabs(xe[0]) + s.d) : 0;
+    if (xf_err > 0) {
+        mm_res_scalar_err(res, O_XF, xf, xf_err, MM_ERR_BOUND);
+        mm_res_scalar_err(res, O_SPRING_F, fabs(s.k * xf), s.k * xf_err, MM_ERR_BOUND);
+    } else {
+        mm_res_scalar(res, O_XF, xf);
+        mm_res_scalar(res, O_SPRING_F, fabs(s.k * xf));
+    }
     mm_res_scalar(res, O_HALF, ne);
-    mm_res_scalar(res, O_SPRING_F, fabs(s.k * xf));
     mm_res_scalar(res, O_FRIC, fric);
 
     /* the plot: to a little past the stop, or one period when it never moves */

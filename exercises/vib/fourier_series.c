@@ -277,9 +277,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         tol_max += alias_bound(wave, A, k, N);
     tol_max = 1.5 * tol_max + tol_round;
     double G = si_pi() / M_PI - 0.5;
-    mm_res_scalar(res, O_OVERSHOOT, s_ref - A);
+    /* S_K at its known place is a K-term sum: exact but for its rounding,
+     * which matters when the overshoot is a small part of A (the triangle) */
+    mm_res_scalar_err(res, O_OVERSHOOT, s_ref - A, tol_round, MM_ERR_BOUND);
     if (jump > 0)
-        mm_res_scalar(res, O_FRACTION, (s_ref - A) / jump);
+        mm_res_scalar_err(res, O_FRACTION, (s_ref - A) / jump, tol_round / jump, MM_ERR_BOUND);
     mm_res_scalar(res, O_TMAX, t_ref);
     mm_res_scalar(res, O_GIBBS, G);
     mm_res_scalar(res, O_SAMPLES, (double)N);

@@ -132,6 +132,7 @@ typedef struct peak {
     double r_found, H_found, r_bound;   /* golden section and the bound of its error */
     int has_lower;         /* the lower half-power point exists */
     double r1, r2;         /* half-power points, eq. (5) */
+    double bw;             /* r2 - r1 = (r2^2 - r1^2)/(r2 + r1), no cancellation at small zeta */
     double r1_found, r2_found;
 } peak;
 
@@ -160,6 +161,7 @@ static int analyse(double z, peak *pk, long *evals, mm_error *err)
     pk->r2 = sqrt(u + s);
     pk->has_lower = u1 > 0;
     pk->r1 = pk->has_lower ? sqrt(u1) : 0;
+    pk->bw = 2 * s / (pk->r2 + pk->r1);
 
     half_ctx h = {.z = z, .level = pk->H_found / M_SQRT2};   /* half power of the peak found */
     double f_lo, f_p, f_hi, fx, width;
@@ -194,7 +196,7 @@ static int peak_table(const mm_value *zv, const peak *pk, double wn, mm_result *
         if (!pk[k].has_peak)
             txt[6] = "none: |H| never rises above 1";
         else if (pk[k].has_lower)
-            row[6] = wn * (pk[k].r2 - pk[k].r1);
+            row[6] = wn * pk[k].bw;
         else
             txt[6] = "none: below half power only above the peak";
     }
@@ -272,7 +274,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_scalar(res, O_PEAK_OMEGA, wn * p0->r_p);
         mm_res_scalar(res, O_PEAK_H, p0->H_p);
         if (p0->has_lower)
-            mm_res_scalar(res, O_BW, wn * (p0->r2 - p0->r1));
+            mm_res_scalar(res, O_BW, wn * p0->bw);
     } else {
         const char *why = "no resonance peak: zeta >= 1/sqrt(2), |H| is largest at r = 0 and only falls";
         mm_res_scalar_text(res, O_PEAK_R, 0, why);

@@ -10,7 +10,7 @@ if 2*z^2 < 1                               % a peak above r = 0, eq. (3)
   out.peak_height = 1/(2*z*sqrt(1 - z^2));
   r12 = sqrt(1 - 2*z^2 + [-1 1]*2*z*sqrt(1 - z^2));   % half-power points, eq. (5)
   if isreal(r12(1)) && r12(1) > 0
-    out.bandwidth = omega_n*(r12(2) - r12(1));
+    out.bandwidth = omega_n*4*z*sqrt(1 - z^2)/(r12(2) + r12(1));  % r2 - r1 without cancellation
   end
 else                                       % zeta >= 1/sqrt(2): |H| only falls from r = 0
   out.peak_r = 0;
