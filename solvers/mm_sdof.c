@@ -78,10 +78,15 @@ static double sinhc(double x)
     return sinh(x) / x;
 }
 
-/* e^(-a t) [A C(t) + B S(t)] and its derivative, lambda = omega_n^2 (1 - zeta^2). */
-static double homogeneous(double a, double lambda, double A, double B, double t, double *v)
+/* The motion with x(0) = A, x'(0) = dv of x'' + 2 a x' + wn2 x = 0, and its
+ * velocity, lambda = wn2 - a^2 = omega_n^2 (1 - zeta^2):
+ *   x = e^(-a t) [A (C + a S) + dv S],  v = e^(-a t) [dv (C - a S) - wn2 A S],
+ * C = cos(sqrt(lambda) t), S = sin(sqrt(lambda) t)/sqrt(lambda) (cosh, sinh
+ * when lambda < 0; 1, t when 0).  In this form a^2 + lambda = wn2 never
+ * appears as a difference (it loses 2 log10(2 zeta) digits when overdamped). */
+static double homogeneous(double a, double lambda, double wn2, double A, double dv, double t, double *v)
 {
-    double C, S, Cd, Sd;   /* C, S and their time derivatives: C' = -lambda S, S' = C */
+    double C, S;
     if (lambda > 0) {
         double w = sqrt(lambda);
         C = cos(w * t);
@@ -89,14 +94,16 @@ static double homogeneous(double a, double lambda, double A, double B, double t,
     } else if (lambda < 0) {
         double mu = sqrt(-lambda);
         if (mu * t > 1.0) {
-            /* overdamped, far from critical: e^(-a t) cosh and sinh as two
-             * decaying exponentials, so that cosh(mu t) cannot overflow;
-             * a - mu = (a^2 - mu^2)/(a + mu) without cancellation */
-            double slow = exp(-(a * a + lambda) / (a + mu) * t), fast = exp(-(a + mu) * t);
-            double eC = 0.5 * (slow + fast), eS = 0.5 * (slow - fast) / mu;  /* e^(-at) C, e^(-at) S */
+            /* overdamped, far from critical: the two decaying modes
+             *   x = c1 e^(-r1 t) + c2 e^(-r2 t),  r2 = a + mu,  r1 = a - mu = wn2 / r2,
+             *   c1 = (r2 A + dv) / (2 mu),  c2 = -(r1 A + dv) / (2 mu),
+             * so that neither a - mu cancels nor e^(-at) cosh, sinh overflow */
+            double r2 = a + mu, r1 = wn2 / r2;
+            double c1 = (r2 * A + dv) / (2 * mu), c2 = -(r1 * A + dv) / (2 * mu);
+            double slow = c1 * exp(-r1 * t), fast = c2 * exp(-r2 * t);
             if (v)
-                *v = A * (-lambda * eS - a * eC) + B * (eC - a * eS);
-            return A * eC + B * eS;
+                *v = -r1 * slow - r2 * fast;
+            return slow + fast;
         }
         C = cosh(mu * t);
         S = t * sinhc(mu * t);
@@ -104,12 +111,10 @@ static double homogeneous(double a, double lambda, double A, double B, double t,
         C = 1.0;
         S = t;
     }
-    Cd = -lambda * S;
-    Sd = C;
     double e = exp(-a * t);
     if (v)
-        *v = e * (A * Cd + B * Sd - a * (A * C + B * S));
-    return e * (A * C + B * S);
+        *v = e * (dv * (C - a * S) - wn2 * A * S);
+    return e * (A * (C + a * S) + dv * S);
 }
 
 double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
@@ -125,7 +130,7 @@ double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
          *     = (sin(wn t)/wn - t cos(sm t) sinc(d t)) / (2 sm),
          * sm = (wn + w)/2, d = (wn - w)/2; h' = w g. */
         double sm = 0.5 * (wn + w), d = 0.5 * (wn - w);
-        double vh, xh = homogeneous(0.0, wn * wn, s->x0, s->v0, t, &vh);
+        double vh, xh = homogeneous(0.0, wn * wn, wn * wn, s->x0, s->v0, t, &vh);
         double sd = sinc(d * t);
         double g = t * sin(sm * t) * sd / (2.0 * sm);
         double h = (sin(wn * t) / wn - t * cos(sm * t) * sd) / (2.0 * sm);
@@ -149,9 +154,7 @@ double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
         xp = p->X * cos(w * t - lag);
         vp = -p->X * w * sin(w * t - lag);
     }
-    double A = s->x0 - xp0;
-    double B = (s->v0 - vp0) + a * A;                          /* from x_h'(0) = -a A + B */
-    double vh, xh = homogeneous(a, lambda, A, B, t, &vh);
+    double vh, xh = homogeneous(a, lambda, wn * wn, s->x0 - xp0, s->v0 - vp0, t, &vh);
     if (v)
         *v = vh + vp;
     return xh + xp;

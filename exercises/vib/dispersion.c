@@ -198,8 +198,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     wave w = model(in);
     const double t = w.t, lambda = in[P_LAMBDA].x, h = in[P_H].x;
-    /* a bar's phase velocity is c itself (not c k0 / k0, which rounds) */
-    const double w0 = omega_of(&w, w.k0), cp = w.medium == M_BAR ? w.c : w0 / w.k0, cg = group_of(&w, w.k0);
+    /* c_p = omega/k0 is c (bar) or a k0 (beam) itself; omega(k0)/k0 would round */
+    const double w0 = omega_of(&w, w.k0), cp = w.medium == M_BAR ? w.c : w.a * w.k0, cg = group_of(&w, w.k0);
     double xl, xr;
     domain(&w, &xl, &xr);
     const double L = xr - xl;

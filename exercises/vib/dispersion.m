@@ -2,11 +2,11 @@
 c = sqrt(E/rho); a = h*sqrt(E/(12*rho));
 k0 = 2*pi/wavelength; sigma = cycles*wavelength;
 if strcmp(medium, 'bar')
-  omega = @(k) c*k; cg = c; beta = 0;
+  omega = @(k) c*k; cg = c; cp = c; beta = 0;   % non-dispersive: c_p = c_g = c
 else
-  omega = @(k) a*k.^2; cg = 2*a*k0; beta = 2*a*t/sigma^2;
+  omega = @(k) a*k.^2; cg = 2*a*k0; cp = a*k0; beta = 2*a*t/sigma^2;
 end
-w0 = omega(k0); cp = w0/k0;
+w0 = omega(k0);
 sigma_t = sigma*sqrt(1 + beta^2);          % eq. (8)
 out.k0 = k0;
 out.omega0 = w0;
