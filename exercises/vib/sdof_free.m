@@ -19,7 +19,8 @@ elseif zeta < 1                           % underdamped
   out.log_decrement = 2*pi*zeta/sqrt(1 - zeta^2);
 else                                      % overdamped: two real roots, eq. (3)
   regime = 2; omega_d = 0;
-  s1 = -a + omega_n*sqrt(zeta^2 - 1); s2 = -a - omega_n*sqrt(zeta^2 - 1);
+  s2 = -(a + omega_n*sqrt((zeta - 1)*(zeta + 1)));
+  s1 = omega_n^2/s2;                      % s1 s2 = omega_n^2: -a + omega_n sqrt(zeta^2 - 1) would cancel
   C1 = (v0 - s2*x0)/(s1 - s2); C2 = x0 - C1;
   x = @(t) C1*exp(s1*t) + C2*exp(s2*t);
   v = @(t) C1*s1*exp(s1*t) + C2*s2*exp(s2*t);
