@@ -121,8 +121,10 @@ static int first_arc(const model *s, double *sg, double *tau, double *x1)
     }
     *sg = s->v0 > 0 ? 1 : -1;
     double c = -*sg * s->d, R = hypot(s->x0 - c, s->v0 / s->w);
-    double th = atan2(s->v0 / s->w, s->x0 - c);    /* x - c = R cos(w t - th) */
-    *tau = (*sg > 0 ? th : th + M_PI) / s->w;
+    /* x - c = (x0 - c) cos wt + v0/w sin wt stops where tan wt = v0 / (w (x0 - c)),
+     * first in (0, pi): the angle straight from atan2 (th + pi for v0 < 0
+     * would cancel when the arc is short) */
+    *tau = atan2(*sg * s->v0 / s->w, *sg * (s->x0 - c)) / s->w;
     *x1 = c + *sg * R;
     return 1;
 }

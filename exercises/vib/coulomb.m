@@ -16,12 +16,9 @@ else
   if v0 ~= 0                                % the first arc from a moving start
     s = sign(v0); cs = -s*d;
     R = hypot(x0 - cs, v0/omega_n);
-    th = atan2(v0/omega_n, x0 - cs);
-    if s > 0
-      t1 = th/omega_n;
-    else
-      t1 = (th + pi)/omega_n;
-    end
+    % the velocity first vanishes where tan(omega_n t) = v0/(omega_n (x0 - cs)),
+    % omega_n t in (0, pi)
+    t1 = atan2(s*v0/omega_n, s*(x0 - cs))/omega_n;
     x1 = cs + s*R; base = abs(x1); side = sign(x1); lost = 0;
   else                                      % from rest: the first arc is a half period
     t1 = pi/omega_n; base = abs(x0); side = -sign(x0); lost = 1;

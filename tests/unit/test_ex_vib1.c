@@ -302,6 +302,12 @@ static void coulomb_knife_edge_should_count_as_a_stop(void **state)
     d = solve_ok("vib-coulomb", "x0=0&v0=1");
     assert_true(scalar(d, "half_cycles") >= 2);
     cJSON_Delete(d);
+    /* a short first arc moving left (v0 < 0): stop_time = (atan2 + pi)/w_n
+     * cancelled to 2.3e-14; mpmath at 40 digits: 0.021119119333822773917 s */
+    d = solve_ok("vib-coulomb", "m=73.886549389761&k=0.12214804332253584&mu=1.733648035127852"
+                                "&g=9.514769309138005&x0=0.6766213569662685&v0=-0.34834185018648967");
+    check_rel(scalar(d, "stop_time"), 0.021119119333822773917, 4e-16, "a short arc's stop time");
+    cJSON_Delete(d);
 }
 
 /* ---- num-newmark ----------------------------------------------------------------------- */
