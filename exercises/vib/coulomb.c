@@ -92,8 +92,7 @@ static model model_of(const mm_value *in)
     model s = {.m = in[P_M].x, .k = in[P_K].x, .mu = in[P_MU].x, .g = in[P_G].x,
                .x0 = in[P_X0].x, .v0 = in[P_V0].x};
     s.w = sqrt(s.k / s.m);
-    /* d = mu m g / k in double-double: exact products by fma, one
-     * corrected division */
+    /* d = mu m g / k in double-double: exact products by fma, one corrected division */
     double p = s.mu * s.m, p_lo = fma(s.mu, s.m, -p);
     double q = p * s.g, q_lo = fma(p, s.g, -q) + p_lo * s.g;
     s.d = q / s.k;
