@@ -156,7 +156,7 @@ static double sdof_worst(double m, double c, double k, double F0, double w, doub
     mm_mdof_motion mo = {&x0, &v0, &F0, w};
     mm_error err;
     assert_int_equal(mm_mdof_exact(&s, &mo, h, nt, ks, q, v, &err), MM_OK);
-    mm_sdof sd = {m, c, k, F0, w, x0, v0};
+    mm_sdof sd = {m, c, k, F0, w, x0, v0, 0};
     mm_sdof_props p;
     mm_sdof_props_get(&sd, &p);
     for (int i = 0; i < nt; i++) {
