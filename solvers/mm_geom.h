@@ -172,6 +172,35 @@ int mm_geom_line_line(mm_v2 p1, mm_v2 u1, mm_v2 p2, mm_v2 u2, mm_v2 *x);
  * measure a curve's radius of curvature from three close points. */
 int mm_geom_circumcircle(mm_v2 a, mm_v2 b, mm_v2 c, mm_v2 *centre, double *radius);
 
+/* ---- a parametric curve: derivatives and curvature ---------------------------------- */
+
+/* The k components of a curve at t into out (k <= MM_GEOM_CURVE_MAX).
+ * Return 0, or an MM_E* code to stop. */
+typedef int (*mm_geom_curve_fn)(double t, double *out, void *params);
+
+#define MM_GEOM_CURVE_MAX 3
+#define MM_GEOM_RIDDERS_LEVELS 10   /* steps h0, h0/1.4, ..., 20 evaluations besides f(t) */
+
+/* First and second derivatives of the k components of f at t, by
+ * Ridders' extrapolation of central differences (W. H. Press et al.,
+ * Numerical Recipes, 3rd ed., section 5.7, dfridr): the differences
+ *     D1(h) = (f(t+h) - f(t-h)) / (2h),  D2(h) = (f(t+h) - 2 f(t) + f(t-h)) / h^2,
+ * both even in h, are taken at h0, h0/1.4, h0/1.4^2, ... and extrapolated
+ * to h = 0 in a Neville table; the entry whose difference from its
+ * neighbours is smallest is returned, and that difference is its error
+ * estimate e1 (e2): an ESTIMATE, usually pessimistic by a factor 1-100,
+ * that includes the rounding the table met.  h0 should be a step over
+ * which the curve changes appreciably (a tenth of its time scale).  d2 and
+ * e2 may be NULL.  Fails with MM_ENONFINITE ("t") when f is not finite at a
+ * point it needed, or f's own code. */
+int mm_geom_curve_derivs(mm_geom_curve_fn f, void *params, int k, double t, double h0, double *d1,
+                         double *e1, double *d2, double *e2, mm_error *err);
+
+/* Curvature of a plane curve from its first and second derivatives:
+ * kappa = (v x a) / |v|^3, signed (positive turning left).  Returns 0 when
+ * v = 0 (a cusp: no curvature).  Cannot fail. */
+double mm_geom_curvature(mm_v2 v, mm_v2 a);
+
 /* ---- polygons --------------------------------------------------------------------- */
 
 typedef struct mm_geom_polygon_props {

@@ -267,6 +267,52 @@ static void three_points_should_give_the_radius_of_curvature(void **state)
     }
 }
 
+/* ---- curves ------------------------------------------------------------------------------------ */
+
+static int helix(double t, double *out, void *params)
+{
+    (void)params;
+    out[0] = 2 * cos(t), out[1] = sin(3 * t), out[2] = exp(0.5 * t);
+    return 0;
+}
+
+static int bad_curve(double t, double *out, void *params)
+{
+    (void)params;
+    out[0] = 1 / (t - 1), out[1] = out[2] = 0;
+    return t > 0.9 && t < 1.1 ? 0 : 0;
+}
+
+static void ridders_should_give_derivatives_with_honest_error_estimates(void **state)
+{
+    (void)state;
+    for (double t = -2; t <= 2; t += 0.25) {
+        double d1[3], e1[3], d2[3], e2[3];
+        assert_int_equal(mm_geom_curve_derivs(helix, NULL, 3, t, 0.1, d1, e1, d2, e2, NULL), MM_OK);
+        double x1[3] = {-2 * sin(t), 3 * cos(3 * t), 0.5 * exp(0.5 * t)};
+        double x2[3] = {-2 * cos(t), -9 * sin(3 * t), 0.25 * exp(0.5 * t)};
+        for (int c = 0; c < 3; c++) {
+            double big1 = fabs(x1[c]) + 3, big2 = fabs(x2[c]) + 9;
+            /* first derivative to ~1e-13 of its size, second to ~1e-10 (the
+             * second difference loses twice the digits to rounding) */
+            check_abs(d1[c], x1[c], 1e-12 * big1, "first derivative by Ridders");
+            check_abs(d2[c], x2[c], 1e-9 * big2, "second derivative by Ridders");
+            /* the estimates cover the error made (they are estimates: allow
+             * the rounding of the comparison itself) */
+            assert_true(fabs(d1[c] - x1[c]) <= e1[c] + 4 * EPS * big1);
+            assert_true(fabs(d2[c] - x2[c]) <= e2[c] + 4 * EPS * big2);
+            assert_true(e1[c] < 1e-11 * big1);
+        }
+    }
+    double d1[3], e1[3];
+    mm_error err;
+    assert_int_equal(mm_geom_curve_derivs(bad_curve, NULL, 3, 1, 0.1, d1, e1, NULL, NULL, &err), MM_ENONFINITE);
+    assert_string_equal(err.param, "t");
+    /* the curvature of a circle of radius 2 run at any speed is 1/2 */
+    check_rel(mm_geom_curvature((mm_v2){0, 3}, (mm_v2){-4.5, 0}), 0.5, 4 * EPS, "circle r = 2, |v| = 3");
+    check_abs(mm_geom_curvature((mm_v2){0, 0}, (mm_v2){1, 0}), 0, 0, "a cusp has none");
+}
+
 /* ---- polygons --------------------------------------------------------------------------------- */
 
 static void the_l_section_should_have_its_closed_form_properties(void **state)
@@ -316,6 +362,7 @@ int main(void)
         cmocka_unit_test(a_line_should_cut_a_circle_at_the_stable_roots),
         cmocka_unit_test(lines_should_meet_unless_parallel),
         cmocka_unit_test(three_points_should_give_the_radius_of_curvature),
+        cmocka_unit_test(ridders_should_give_derivatives_with_honest_error_estimates),
         cmocka_unit_test(the_l_section_should_have_its_closed_form_properties),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
