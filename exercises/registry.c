@@ -21,6 +21,7 @@ extern const mm_exercise mm_ex_num_plot;
 /* ==== end of 1 ==== */
 
 /* ==== 2 Kinematics ==== */
+extern const mm_exercise mm_ex_kin_slider_crank;
 /* ==== end of 2 ==== */
 
 /* ==== 3 Statics ==== */
@@ -60,6 +61,7 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 1 ==== */
 
     /* ==== 2 Kinematics ==== */
+    &mm_ex_kin_slider_crank,
     /* ==== end of 2 ==== */
 
     /* ==== 3 Statics ==== */

@@ -262,7 +262,10 @@ int mm_mech_position(const mm_mech_problem *p, const mm_mech_options *o, mm_mech
             q[i] -= cut * w->d[i];                       /* q <- q - Phi_q^-1 Phi */
         info->iterations = it;
         info->step = s;
-        if (s <= o->xtol) {
+        /* near a toggle the rounding of Phi moves q by about eps / rcond:
+         * no step can be smaller, so that is the tolerance there */
+        double floor_ = 8 * DBL_EPSILON * (wnorm(p, o, q) + 1) / fmax(info->rcond, DBL_EPSILON);
+        if (s <= fmax(o->xtol, floor_)) {
             double r = s / prev;                         /* geometric tail of the steps */
             info->err_est = (r < 1 ? s * r / (1 - r) : s) +
                             DBL_EPSILON * (wnorm(p, o, q) + 1) / fmax(info->rcond, DBL_EPSILON);
@@ -354,6 +357,7 @@ typedef struct sweep_ctx {
     mm_mech_sweep *s;
     mm_error *err;
     double tau;                      /* the smallest step in t */
+    double range;                    /* |t_last - t_first| */
 } sweep_ctx;
 
 /* Newton at t from the predictor qp into q; 1 if it converged (0 if not),
@@ -407,8 +411,13 @@ static int locate(sweep_ctx *c, int kind, double ta, const double *qa, double ga
     memcpy(A, qa, (size_t)n * sizeof *A);
     memcpy(B, qb, (size_t)n * sizeof *B);
     mm_mech_info info;
-    for (int it = 0; it < 200 && fabs(tb - ta) > c->tau; it++) {
-        double tm = 0.5 * (ta + tb);
+    /* det near a change point: the positions there carry eps / |t - t*|
+     * of rounding, so det's sign is reliable only down to about sqrt(eps):
+     * bisect to 1e-5 of the range, then a parabola through three values */
+    double stop = kind == 0 ? fmax(c->tau, 1e-5 * c->range) : c->tau, tm = 0, gm = 0;
+    int have_m = 0;
+    for (int it = 0; it < 200 && fabs(tb - ta) > stop; it++) {
+        tm = 0.5 * (ta + tb);
         for (int i = 0; i < n; i++)
             P[i] = 0.5 * (A[i] + B[i]);
         int ok = corrector(c, tm, P, M, &info);
@@ -433,6 +442,29 @@ static int locate(sweep_ctx *c, int kind, double ta, const double *qa, double ga
     }
     double f = ta == tb || ga == gb ? 0.5 : ga / (ga - gb);   /* the secant's zero */
     *tz = ta + f * (tb - ta);
+    if (kind == 0 && tb != ta) {                               /* the parabola's zero */
+        tm = 0.5 * (ta + tb);
+        for (int i = 0; i < n; i++)
+            P[i] = 0.5 * (A[i] + B[i]);
+        if (corrector(c, tm, P, M, &info) == 1) {
+            gm = det_at(c, tm, M);
+            have_m = 1;
+        }
+        if (have_m) {
+            /* g(u) on u in [-1, 1]: ga at -1, gm at 0, gb at 1 */
+            double q2 = 0.5 * (ga + gb) - gm, q1 = 0.5 * (gb - ga), q0 = gm, u;
+            double disc = q1 * q1 - 4 * q2 * q0;
+            if (q2 == 0 || disc < 0)
+                u = -q0 / q1;
+            else {
+                double r = -0.5 * (q1 + copysign(sqrt(disc), q1));   /* stable roots */
+                double u1 = r / q2, u2 = q0 / r;
+                u = fabs(u1) <= fabs(u2) ? u1 : u2;
+            }
+            if (fabs(u) <= 1)
+                *tz = tm + u * 0.5 * (tb - ta);
+        }
+    }
     if (qz && c->s->watch >= 0)
         *qz = A[c->s->watch] + f * (B[c->s->watch] - A[c->s->watch]);
     return MM_OK;
@@ -467,7 +499,7 @@ int mm_mech_sweep_solve(const mm_mech_problem *p, const mm_mech_options *o, mm_m
         if (!((s->t[f] - s->t[f - 1]) * dir > 0))
             return mm_error_set(err, MM_ERANGE, "t", "the sweep's values must be strictly monotonic");
     double range = fabs(s->t[s->nt - 1] - s->t[0]);
-    sweep_ctx c = {p, o, w, s, err, s->tol_t > 0 ? s->tol_t : 1e-11 * range};
+    sweep_ctx c = {p, o, w, s, err, s->tol_t > 0 ? s->tol_t : 1e-11 * range, range};
     s->solved = 0, s->t_limit = s->t[0], s->n_sing = s->n_turn = 0;
     s->steps = s->newton = s->singular_frames = 0;
     s->err_est = 0;

@@ -61,7 +61,8 @@ typedef struct mm_mech_problem {
 
 typedef struct mm_mech_options {
     double length;          /* a size of the mechanism [m], > 0: scales lengths in norms */
-    double xtol;            /* Newton stops when |dq|_w <= xtol (default 1e-12) */
+    double xtol;            /* Newton stops when |dq|_w <= xtol (default 1e-12), or below
+                               the rounding floor 8 eps (|q|_w + 1) / rcond near a toggle */
     int max_iter;           /* Newton iterations at most (default 60: linear convergence at a toggle) */
     double max_step;        /* a Newton step is cut to |dq|_w <= max_step (default 0.5) */
     double sing_rcond;      /* a square Jacobian with rcond below this is singular (default 1e-13) */

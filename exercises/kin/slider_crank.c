@@ -1,0 +1,603 @@
+/* slider_crank.c — kin-slider-crank: the crank OA turns at constant omega,
+ * the rod AB carries the slider B along the line y = e.
+ *
+ *     r cos phi + l cos theta3 - x = 0,   r sin phi + l sin theta3 - e = 0      (1)
+ *
+ * Goal: position, velocity and acceleration of the slider over a turn of
+ * the crank; the dead centres (crank and rod in line, the slider at rest)
+ * and the stroke; with an offset, the quick return; and with a rod too
+ * short for the offset, the toggles where the rod stands square to the
+ * slide and the crank cannot turn further.
+ * Method: eq. (1) by Newton-Raphson (mm_mech) from frame to frame, the
+ * velocities and accelerations by linear solves with its Jacobian (eqs.
+ * 4-5 of the theory).  Checks: the closed form (eqs. 2-3), central
+ * differences of the positions (error against the step, order 2), the dead
+ * centres and toggles of the closed form against those the sweep located.
+ * Reference: R. L. Norton, Design of Machinery, 5th ed., McGraw-Hill 2012,
+ * sections 4.13 and 7.6; J. E. Shigley, J. J. Uicker, Theory of Machines
+ * and Mechanisms, ch. 3.
+ * API.md: crank pivot at the origin, slider on y = +e, x measured from the
+ * pivot along that line; the slider right of the crank pin (x > r cos phi).
+ */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "mm_geom.h"
+#include "mm_kin.h"
+#include "mm_mech.h"
+
+enum { P_R, P_L, P_E, P_OMEGA, P_PHI, P_POINTS };
+
+static const mm_param params[] = {
+    [P_R] = {"r", "crank length", "m", MM_REAL, 0.1, 1e-3, 10, .help = "O to the crank pin A"},
+    [P_L] = {"l", "rod length", "m", MM_REAL, 0.4, 1e-3, 10,
+             .help = "A to the slider pin B; with l < r + |e| the crank cannot turn a full revolution"},
+    [P_E] = {"e", "offset", "m", MM_REAL, 0, -10, 10,
+             .help = "height of the slider's line above the crank pivot; non-zero gives a quick return"},
+    [P_OMEGA] = {"omega", "crank speed", "rad/s", MM_REAL, 100, -1e4, 1e4,
+                 .help = "constant angular velocity of the crank, counter-clockwise positive"},
+    [P_PHI] = {"phi", "crank angle", "rad", MM_REAL, 0.5, -100, 100,
+               .help = "the crank's angle from the x axis at the instant asked"},
+    [P_POINTS] = {"points", "plot points", "", MM_INT, 121, 13, 721,
+                  .help = "crank angles of the plots over the turn (or over the range the crank can reach)"},
+};
+
+enum {
+    O_X, O_V, O_A, O_TH3, O_OM3, O_AL3, O_STROKE, O_XMAX, O_XMIN, O_PHI_OUT, O_PHI_IN, O_RATIO,
+    O_TOG1, O_TOG2, O_ITER, O_NEWTON,
+    O_SX, O_SV, O_SA, O_STH3, O_SMID, O_FDV, O_FDA, O_ANIM
+};
+
+static const char *const newton_cols[] = {"iteration", "residual", "step", NULL};
+static const char *const newton_units[] = {"", "m", "", NULL};
+
+static const mm_output outputs[] = {
+    [O_X] = MM_SCALAR("x", "slider position", "m", .flags = MM_ANSWER | MM_EXACT),
+    [O_V] = MM_SCALAR("v", "slider velocity", "m/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_A] = MM_SCALAR("a", "slider acceleration", "m/s^2", .flags = MM_ANSWER | MM_EXACT),
+    [O_TH3] = MM_SCALAR("theta3", "rod angle", "rad", .flags = MM_ANSWER | MM_EXACT),
+    [O_OM3] = MM_SCALAR("omega3", "rod angular velocity", "rad/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_AL3] = MM_SCALAR("alpha3", "rod angular acceleration", "rad/s^2", .flags = MM_ANSWER | MM_EXACT),
+    [O_STROKE] = MM_SCALAR("stroke", "stroke x_max - x_min", "m", .flags = MM_ANSWER | MM_EXACT),
+    [O_XMAX] = MM_SCALAR("x_max", "outer dead centre position", "m", .flags = MM_EXACT),
+    [O_XMIN] = MM_SCALAR("x_min", "inner dead centre position", "m", .flags = MM_EXACT),
+    [O_PHI_OUT] = MM_SCALAR("phi_outer", "crank angle at the outer dead centre", "rad", .flags = MM_EXACT),
+    [O_PHI_IN] = MM_SCALAR("phi_inner", "crank angle at the inner dead centre", "rad", .flags = MM_EXACT),
+    [O_RATIO] = MM_SCALAR("time_ratio", "time ratio, slow stroke / quick stroke", "",
+                          .flags = MM_ANSWER | MM_EXACT),
+    [O_TOG1] = MM_SCALAR("phi_toggle1", "crank angle of the first toggle (rod square to the slide)", "rad",
+                         .flags = MM_EXACT),
+    [O_TOG2] = MM_SCALAR("phi_toggle2", "crank angle of the second toggle", "rad", .flags = MM_EXACT),
+    [O_ITER] = MM_SCALAR("newton_iterations", "Newton iterations at phi", "", .flags = MM_EXACT),
+    [O_NEWTON] = MM_TABLE("newton", "Newton's iterates at phi from the level rod: |Phi| and the weighted step",
+                          newton_cols, newton_units),
+    [O_SX] = MM_SERIES("x", "slider position", "m", "crank angle", "rad", .figure = "slider position"),
+    [O_SV] = MM_SERIES("v", "slider velocity", "m/s", "crank angle", "rad", .figure = "slider velocity"),
+    [O_SA] = MM_SERIES("a", "slider acceleration", "m/s^2", "crank angle", "rad", .figure = "slider acceleration"),
+    [O_STH3] = MM_SERIES("theta3", "rod angle", "rad", "crank angle", "rad", .figure = "rod angle"),
+    [O_SMID] = MM_SERIES("rod_midpoint", "path of the rod's midpoint", "m", "x", "m", .aspect = "equal",
+                         .figure = "rod midpoint"),
+    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of x vs dx/dphi", "m", "step h",
+                        "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference of x vs d2x/dphi2", "m", "step h",
+                        "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_ANIM] = MM_ANIMATION("the crank, the rod and the slider over the cycle, with the slider's velocity and acceleration"),
+};
+
+typedef struct sc {
+    double r, l, e;
+} sc;
+
+/* ---- the closed form, eqs. (2)-(3): side = +1 (slider right of A) or -1 ---- */
+
+typedef struct sc_pos {
+    double x, x1, x2;         /* x and its derivatives by phi */
+    double t, t1, t2;         /* theta3 and its derivatives by phi */
+    double R;                 /* l cos theta3: the rod's run along the slide */
+} sc_pos;
+
+static double sc_disc(const sc *m, double phi)
+{
+    double s = m->e - m->r * sin(phi);
+    return (m->l - s) * (m->l + s);        /* l^2 - s^2 as a product: keeps its digits at a toggle */
+}
+
+static sc_pos sc_closed(const sc *m, double phi, int side)
+{
+    double s = m->e - m->r * sin(phi), s1 = -m->r * cos(phi), s2 = m->r * sin(phi);
+    double D = sc_disc(m, phi), tiny = 2 * DBL_EPSILON * m->l * m->l;
+    double R = D > tiny ? side * sqrt(D) : 0;         /* within rounding of a toggle: at it */
+    sc_pos p = {.R = R};
+    p.x = m->r * cos(phi) + R;
+    p.t = atan2(s, R);
+    if (R != 0) {
+        double R1 = -s * s1 / R, R2 = -(s1 * s1 + s * s2) / R - s * s * s1 * s1 / (R * R * R);
+        p.x1 = -m->r * sin(phi) + R1;
+        p.x2 = -m->r * cos(phi) + R2;
+        p.t1 = s1 / R;
+        p.t2 = (s2 + s * p.t1 * p.t1) / R;
+    }
+    return p;
+}
+
+/* ---- the constraint equations (1) for mm_mech: q = (theta3, x), t = phi ---- */
+
+static int phi_fn(const double *q, double t, double *F, void *ctx)
+{
+    const sc *m = ctx;
+    F[0] = m->r * cos(t) + m->l * cos(q[0]) - q[1];
+    F[1] = m->r * sin(t) + m->l * sin(q[0]) - m->e;
+    return 0;
+}
+
+static int jac_fn(const double *q, double t, double *J, void *ctx)
+{
+    (void)t;
+    const sc *m = ctx;
+    J[0] = -m->l * sin(q[0]), J[1] = -1;
+    J[2] = m->l * cos(q[0]), J[3] = 0;
+    return 0;
+}
+
+static int nu_fn(const double *q, double t, double *nu, void *ctx)   /* eq. (4): -Phi_phi */
+{
+    (void)q;
+    const sc *m = ctx;
+    nu[0] = m->r * sin(t), nu[1] = -m->r * cos(t);
+    return 0;
+}
+
+static int gamma_fn(const double *q, const double *qd, double t, double *g, void *ctx)   /* eq. (5) */
+{
+    const sc *m = ctx;
+    g[0] = m->r * cos(t) + m->l * cos(q[0]) * qd[0] * qd[0];
+    g[1] = m->r * sin(t) + m->l * sin(q[0]) * qd[0] * qd[0];
+    return 0;
+}
+
+static const unsigned char is_length[2] = {0, 1};
+
+/* ---- the range the crank can reach -------------------------------------------------- */
+
+/* The crank can be at phi when |e - r sin phi| <= l, i.e. when
+ * (e - l)/r <= sin phi <= (e + l)/r.  Over a turn: all of it (|e| + r <= l),
+ * or arcs between toggles where sin phi = (e -+ l)/r.  The arc holding
+ * phi0 into [lo, hi] (hi - lo < 2 pi), returns 1; 0 when the whole turn is
+ * reachable; -1 when phi0 is not reachable. */
+static int reach(const sc *m, double phi0, double *lo, double *hi)
+{
+    double tiny = 2 * DBL_EPSILON * m->l * m->l;
+    if (fabs(m->e) + m->r <= m->l)
+        return 0;
+    if (sc_disc(m, phi0) < -tiny)
+        return -1;
+    double up = (m->e + m->l) / m->r, dn = (m->e - m->l) / m->r;
+    double base[4], c[32] = {0};
+    int nb = 0, nc = 0;
+    if (up < 1)
+        base[nb++] = asin(up), base[nb++] = M_PI - asin(up);
+    if (dn > -1)
+        base[nb++] = asin(dn), base[nb++] = -M_PI - asin(dn);
+    for (int i = 0; i < nb; i++)           /* every toggle within two turns of phi0, sorted */
+        for (int k = -3; k <= 3; k++) {
+            double v = phi0 + remainder(base[i] - phi0, 2 * M_PI) + 2 * M_PI * k;
+            int j = nc++;
+            while (j > 0 && c[j - 1] > v)
+                c[j] = c[j - 1], j--;
+            c[j] = v;
+        }
+    int k = 0;
+    while (k + 2 < nc && c[k + 1] <= phi0)
+        k++;
+    /* phi0 on the rounding edge of a gap: take the arc on its reachable side */
+    if (sc_disc(m, 0.5 * (c[k] + c[k + 1])) < 0)
+        k += phi0 - c[k] < c[k + 1] - phi0 ? -1 : 1;
+    *lo = c[k], *hi = c[k + 1];
+    return 1;
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    sc m = {in[P_R].x, in[P_L].x, in[P_E].x};
+    double lo, hi;
+    if (fabs(m.e) > m.l + m.r)
+        return mm_error_set(err, MM_ERANGE, "e",
+                            "the slide is out of the rod's reach at every crank angle: |e| must be at most "
+                            "l + r = %g m; got %g m", m.l + m.r, m.e);
+    if (reach(&m, in[P_PHI].x, &lo, &hi) < 0) {
+        double up = (m.e + m.l) / m.r, dn = (m.e - m.l) / m.r;
+        return mm_error_set(err, MM_ERANGE, "phi",
+                            "the linkage cannot close at phi = %g rad: the rod (l = %g m) cannot reach the "
+                            "slide there; it closes only where %g <= sin(phi) <= %g", in[P_PHI].x, m.l,
+                            fmax(dn, -1), fmin(up, 1));
+    }
+    return MM_OK;
+}
+
+/* ---- finite differences of the Newton positions --------------------------------------------- */
+
+typedef struct fd_ctx {
+    const mm_mech_problem *p;
+    const mm_mech_options *o;
+    mm_mech_work *w;
+    const double *phi, *q;        /* the samples and their solved positions */
+} fd_ctx;
+
+static int fd_pos(int i, double h, double *q, void *ctx, mm_error *err)
+{
+    fd_ctx *c = ctx;
+    memcpy(q, c->q + 2 * i, 2 * sizeof *q);
+    return mm_mech_position(c->p, c->o, c->w, c->phi[i] + h, q, NULL, err);
+}
+
+/* ---- Newton at phi, iterate by iterate ---------------------------------------------- */
+
+/* From the level rod, q = (0, r cos phi + l), as a learner would guess: each
+ * iterate's |Phi| and step into the table "newton".  When that guess leads
+ * to the other assembly (slider left of A) or nowhere, start again from the
+ * assembly built by intersecting the rod's circle with the slide. */
+static int newton_at(const sc *m, const mm_mech_problem *prob, mm_mech_options *opt, mm_mech_work *w,
+                     double phi, double *q, mm_mech_info *info, mm_result *res, mm_error *err)
+{
+    enum { KMAX = 12 };
+    double rows[KMAX][2], guess[2] = {0, m->r * cos(phi) + m->l};
+    int rc = MM_OK, k = 0;
+    for (int attempt = 0; attempt < 2; attempt++) {
+        if (attempt == 1) {                        /* the geometric assembly */
+            double tt[2];
+            if (mm_geom_line_circle((mm_v2){0, m->e}, (mm_v2){1, 0}, mm_v2_polar(m->r, phi), m->l, tt, NULL))
+                guess[1] = tt[1];
+            guess[0] = atan2(m->e - m->r * sin(phi), guess[1] - m->r * cos(phi));
+        }
+        double prev[2] = {guess[0], guess[1]};
+        const int max_iter = opt->max_iter;
+        for (k = 1; k <= KMAX; k++) {
+            memcpy(q, guess, sizeof guess);
+            opt->max_iter = k;
+            rc = mm_mech_position(prob, opt, w, phi, q, info, NULL);
+            double F[2];
+            phi_fn(q, phi, F, (void *)m);
+            rows[k - 1][0] = fmax(fabs(F[0]), fabs(F[1]));
+            rows[k - 1][1] = fmax(fabs(q[0] - prev[0]), fabs(q[1] - prev[1]) / m->l);
+            memcpy(prev, q, sizeof prev);
+            if (rc == MM_OK)
+                break;
+        }
+        opt->max_iter = max_iter;
+        if (rc == MM_OK && q[1] >= m->r * cos(phi) - 1e-9 * m->l)
+            break;
+        rc = MM_ENOCONV;
+    }
+    if (rc != MM_OK)
+        return mm_error_set(err, MM_ENOCONV, "phi", "Newton could not assemble the linkage at phi = %g rad", phi);
+    mm_table *t = mm_res_table(res, O_NEWTON, k);
+    if (!t)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int i = 0; i < k; i++) {
+        t->cell[3 * i] = i + 1;
+        t->cell[3 * i + 1] = rows[i][0];
+        t->cell[3 * i + 2] = rows[i][1];
+    }
+    return MM_OK;
+}
+
+/* ---- the answer ------------------------------------------------------------------------------ */
+
+/* the error of a closed-form value that divides by R^k: rounding grows
+ * like (l/|R|)^k; exact (MM_EXACT) while that stays below 1e3 */
+static void put(mm_result *res, int o, double v, double scale, double kappa, int k)
+{
+    double amp = pow(kappa, k);
+    mm_scalar *s = mm_res_scalar(res, o, v);
+    if (amp > 1e3) {
+        s->exact = 0;
+        s->error = 8 * DBL_EPSILON * scale * amp;
+        s->error_kind = MM_ERR_ESTIMATE;
+    }
+}
+
+static int animate(const sc *m, double omega, int partial, double lo, double hi, const mm_mech_problem *prob,
+                   const mm_mech_options *opt, mm_mech_work *w, mm_result *res, mm_error *err)
+{
+    /* full turn: 72 frames; partial: out on the right-hand assembly and back
+     * on the other one through the toggles, 36 frames each way */
+    enum { NF = 72 };
+    double phis[NF], q[2 * NF], qd[2 * NF], qdd[2 * NF];
+    int half = NF / 2;
+    for (int side = 0; side < (partial ? 2 : 1); side++) {
+        int nf = partial ? half : NF, off = side * half;
+        double t[NF];
+        double a0 = lo + 1e-9 * (hi - lo), a1 = hi - 1e-9 * (hi - lo);    /* off the double roots */
+        for (int f = 0; f < nf; f++)
+            t[f] = partial ? (side ? a1 - (a1 - a0) * f / (nf - 1) : a0 + (a1 - a0) * f / (nf - 1))
+                           : 2 * M_PI * f / NF;
+        sc_pos g = sc_closed(m, t[0], side ? -1 : 1);     /* the assembly to start from */
+        double *qq = q + 2 * off;
+        qq[0] = g.t, qq[1] = g.x;
+        mm_mech_sweep s = {.nt = nf, .t = t, .q = qq, .qd = qd + 2 * off, .qdd = qdd + 2 * off, .watch = -1};
+        int rc = mm_mech_sweep_solve(prob, opt, w, &s, err);
+        if (rc != MM_OK)
+            return rc;
+        for (int f = s.solved; f < nf; f++) {              /* rounding at a toggle end: hold the last */
+            memcpy(qq + 2 * f, qq + 2 * (s.solved - 1), 2 * sizeof *qq);
+            memset(qd + 2 * (off + f), 0, 2 * sizeof *qd);
+            memset(qdd + 2 * (off + f), 0, 2 * sizeof *qdd);
+        }
+        memcpy(phis + off, t, (size_t)nf * sizeof *t);
+    }
+    double xmax = -INFINITY, xmin = INFINITY, vmax = 0, amax = 0;
+    for (int f = 0; f < NF; f++) {
+        xmax = fmax(xmax, q[2 * f + 1]), xmin = fmin(xmin, q[2 * f + 1]);
+        vmax = fmax(vmax, fabs(omega * qd[2 * f + 1]));
+        amax = fmax(amax, fabs(omega * omega * qdd[2 * f + 1]));
+    }
+    mm_kin_draw d;
+    mm_anim *a = mm_kin_draw_start(&d, res, NF, "crank angle travelled", "rad", xmax + m->r + fabs(m->e));
+    mm_shape *slide = a ? mm_kin_shape(&d, "slide", MM_SHAPE_LINE, 0, 2) : NULL;
+    mm_shape *piv = mm_kin_pivot(&d, "O", 0, 0);
+    mm_shape *crank = mm_kin_shape(&d, "crank", MM_SHAPE_LINE, 1, 2);
+    mm_shape *rod = mm_kin_shape(&d, "rod", MM_SHAPE_LINE, 1, 2);
+    mm_shape *block = mm_kin_shape(&d, "slider", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *mid = mm_kin_shape(&d, "rod midpoint path", MM_SHAPE_PATH, 0, NF + 1);
+    mm_shape *va = mm_kin_arrow_shape(&d, "v", "m/s", vmax);
+    mm_shape *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
+    if (!slide || !piv || !crank || !rod || !block || !mid || !va || !aa)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    slide->style = "ground";
+    double bw = 0.3 * fmin(m->r, m->l) + 0.05 * (xmax - xmin);
+    mm_kin_pt(slide, 0, 0, fmin(xmin, 0) - bw, m->e);
+    mm_kin_pt(slide, 0, 1, xmax + bw, m->e);
+    double travelled = 0;
+    for (int f = 0; f < NF; f++) {
+        if (f)
+            travelled += fabs(phis[f] - phis[f - 1]);
+        a->t[f] = travelled;
+        double Ax = m->r * cos(phis[f]), Ay = m->r * sin(phis[f]), x = q[2 * f + 1];
+        mm_kin_pt(crank, f, 0, 0, 0);
+        mm_kin_pt(crank, f, 1, Ax, Ay);
+        mm_kin_pt(rod, f, 0, Ax, Ay);
+        mm_kin_pt(rod, f, 1, x, m->e);
+        mm_kin_block(block, f, x, m->e, bw, 0.6 * bw, 0);
+        mm_kin_pt(mid, 0, f, 0.5 * (Ax + x), 0.5 * (Ay + m->e));
+        mm_kin_arrow(va, f, x, m->e + 0.3 * bw, omega * qd[2 * f + 1], 0);
+        mm_kin_arrow(aa, f, x, m->e - 0.3 * bw, omega * omega * qdd[2 * f + 1], 0);
+    }
+    mm_kin_pt(mid, 0, NF, mid->x[0], mid->y[0]);          /* close the path */
+    return mm_kin_draw_finish(&d);
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    sc m = {in[P_R].x, in[P_L].x, in[P_E].x};
+    const double omega = in[P_OMEGA].x, phi = in[P_PHI].x;
+    const int n = (int)in[P_POINTS].x;
+    mm_mech_problem prob = {.n = 2, .m = 2, .phi = phi_fn, .jac = jac_fn, .nu = nu_fn, .gamma = gamma_fn,
+                            .is_length = is_length, .params = &m};
+    mm_mech_options opt;
+    mm_mech_options_init(&opt);
+    opt.length = m.l;
+    mm_mech_work *w = mm_mech_work_alloc(2, 2);
+    if (!w)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    int rc = MM_OK;
+    const double scale = m.r + m.l + fabs(m.e), tiny = 2 * DBL_EPSILON * m.l * m.l;
+
+    /* ---- at phi: the closed form printed, Newton and the Jacobian solves checked ---- */
+    sc_pos c = sc_closed(&m, phi, 1);
+    double D = sc_disc(&m, phi), kappa = m.l / fmax(fabs(c.R), DBL_MIN);
+    int at_toggle = D <= tiny;
+    if (at_toggle) {
+        /* the discriminant is zero within its rounding tiny: the true one lies
+         * in [-tiny, tiny], so x and theta3 are known to sqrt(2 tiny) */
+        mm_res_scalar_err(res, O_X, c.x, sqrt(2 * tiny), MM_ERR_BOUND);
+        mm_res_scalar_err(res, O_TH3, c.t, sqrt(2 * tiny) / m.l, MM_ERR_BOUND);
+    } else {
+        put(res, O_X, c.x, scale, kappa, 1);
+        put(res, O_TH3, c.t, 1, kappa, 1);
+    }
+    double q[2], qd[2], qdd[2];
+    mm_mech_info info;
+    if ((rc = newton_at(&m, &prob, &opt, w, phi, q, &info, res, err)) != MM_OK)
+        goto out;
+    mm_res_scalar(res, O_ITER, info.iterations);
+    double tol_x = 16 * DBL_EPSILON * scale * kappa + info.err_est * m.l;
+    mm_res_check_abs(res, "x at phi: Newton on eq. (1) vs closed form (2)", q[1], c.x, tol_x);
+    mm_res_check_abs(res, "theta3 at phi: Newton vs closed form (2)", mm_kin_near(q[0], c.t), c.t,
+                     tol_x / m.l);
+    if (at_toggle) {
+        mm_res_warn(res, "phi = %g rad is a toggle: the rod stands square to the slide, the crank cannot be "
+                         "driven through it at constant speed, and v, a, omega3, alpha3 are unbounded there "
+                         "(left out)", phi);
+    } else {
+        put(res, O_V, omega * c.x1, fabs(omega) * scale, kappa, 3);
+        put(res, O_A, omega * omega * c.x2, omega * omega * scale, kappa, 5);
+        put(res, O_OM3, omega * c.t1, fabs(omega), kappa, 3);
+        put(res, O_AL3, omega * omega * c.t2, omega * omega, kappa, 5);
+        if ((rc = mm_mech_velocity(&prob, &opt, w, phi, q, qd, &info, err)) != MM_OK ||
+            (rc = mm_mech_acceleration(&prob, &opt, w, phi, q, qd, qdd, &info, err)) != MM_OK)
+            goto out;
+        double k3 = kappa * kappa * kappa;
+        mm_res_check_abs(res, "v at phi: Jacobian solve (4) vs closed form (3)", omega * qd[1], omega * c.x1,
+                         64 * DBL_EPSILON * fabs(omega) * scale * k3);
+        mm_res_check_abs(res, "a at phi: Jacobian solve (5) vs closed form (3)", omega * omega * qdd[1],
+                         omega * omega * c.x2, 256 * DBL_EPSILON * omega * omega * scale * k3 * kappa * kappa);
+    }
+
+    /* ---- the cycle: a full turn, or the arc the crank can reach ---- */
+    double lo = 0, hi = 2 * M_PI;
+    int partial = reach(&m, phi, &lo, &hi) == 1;
+    mm_series *sx = mm_res_series(res, O_SX, n), *sv = mm_res_series(res, O_SV, n);
+    mm_series *sa = mm_res_series(res, O_SA, n), *st = mm_res_series(res, O_STH3, n);
+    mm_series *sm = mm_res_series(res, O_SMID, n);
+    double *Q = mm_res_alloc(res, 2 * (size_t)n * sizeof *Q), *QD = mm_res_alloc(res, 2 * (size_t)n * sizeof *QD);
+    double *QDD = mm_res_alloc(res, 2 * (size_t)n * sizeof *QDD);
+    if (!sx || !sv || !sa || !st || !sm || !Q || !QD || !QDD) {
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        goto out;
+    }
+    /* a partial range is plotted inset from its toggles by 1e-3 of the arc:
+     * at the toggle itself v and a are unbounded */
+    double inset = partial ? 1e-3 * (hi - lo) : 0;
+    mm_kin_grid(lo + inset, hi - inset, n, sx->x);
+    c = sc_closed(&m, sx->x[0], 1);
+    Q[0] = c.t, Q[1] = c.x;
+    mm_mech_sweep s = {.nt = n, .t = sx->x, .q = Q, .qd = QD, .qdd = QDD, .watch = 1};
+    if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &s, err)) != MM_OK)
+        goto out;
+    if (s.solved < n) {
+        rc = mm_error_set(err, MM_ENOCONV, "phi", "the sweep lost the linkage at phi = %g rad", s.t_limit);
+        goto out;
+    }
+    /* the sweep kept its branch: every frame on the closed form, within the
+     * rounding of the largest term plus the rounding of the position
+     * (residual eps (r + |e| + l) over the Jacobian's l cos theta3 = R)
+     * carried through d/dR of eqs. (3); the frame nearest its bound */
+    double rx = -1, rv = -1, ra = -1, cx[3] = {0}, cv[3] = {0}, ca[3] = {0};
+    for (int i = 0; i < n; i++) {
+        double ph = sx->x[i];
+        c = sc_closed(&m, ph, 1);
+        sv->x[i] = sa->x[i] = st->x[i] = ph;
+        sx->y[i] = Q[2 * i + 1];
+        sv->y[i] = omega * QD[2 * i + 1];
+        sa->y[i] = omega * omega * QDD[2 * i + 1];
+        st->y[i] = Q[2 * i];
+        sm->x[i] = 0.5 * (m.r * cos(ph) + Q[2 * i + 1]);
+        sm->y[i] = 0.5 * (m.r * sin(ph) + m.e);
+        double sg = m.e - m.r * sin(ph), s1 = -m.r * cos(ph), s2 = m.r * sin(ph), R = fabs(c.R);
+        double dR = 4 * DBL_EPSILON * scale * m.l / R + s.err_est * m.l;         /* position error */
+        double tx = 16 * DBL_EPSILON * scale + dR;
+        double tv = 16 * DBL_EPSILON * (m.r + fabs(sg * s1) / R) + dR * fabs(sg * s1) / (R * R);
+        double Ta = m.r + (s1 * s1 + fabs(sg * s2)) / R + sg * sg * s1 * s1 / (R * R * R);
+        double ta = 16 * DBL_EPSILON * Ta + dR * ((s1 * s1 + fabs(sg * s2)) / (R * R) + 3 * sg * sg * s1 * s1 / (R * R * R * R));
+        double ex = fabs(Q[2 * i + 1] - c.x), ev = fabs(QD[2 * i + 1] - c.x1), ea = fabs(QDD[2 * i + 1] - c.x2);
+        if (ex / tx > rx)
+            rx = ex / tx, cx[0] = Q[2 * i + 1], cx[1] = c.x, cx[2] = tx;
+        if (ev / tv > rv)
+            rv = ev / tv, cv[0] = QD[2 * i + 1], cv[1] = c.x1, cv[2] = tv;
+        if (ea / ta > ra)
+            ra = ea / ta, ca[0] = QDD[2 * i + 1], ca[1] = c.x2, ca[2] = ta;
+    }
+    mm_res_check_abs(res, "sweep: x vs closed form (2), the frame nearest its bound (the branch kept)", cx[0],
+                     cx[1], cx[2]);
+    mm_res_check_abs(res, "sweep: dx/dphi vs closed form (3), the frame nearest its bound", cv[0], cv[1], cv[2]);
+    mm_res_check_abs(res, "sweep: d2x/dphi2 vs closed form (3), the frame nearest its bound", ca[0], ca[1], ca[2]);
+
+    /* the positions differenced: one sample in four, kept 4 h0 clear of
+     * the toggles of a partial range (the steps must not leave it) */
+    {
+        double h0 = partial ? fmin(0.05, 0.02 * (hi - lo)) : 0.05;
+        double *ph = mm_res_alloc(res, (size_t)n * sizeof *ph), *qs = mm_res_alloc(res, 2 * (size_t)n * sizeof *qs);
+        double *d1 = mm_res_alloc(res, 2 * (size_t)n * sizeof *d1), *d2 = mm_res_alloc(res, 2 * (size_t)n * sizeof *d2);
+        if (!ph || !qs || !d1 || !d2) {
+            rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
+            goto out;
+        }
+        int ns = 0;
+        for (int i = 0; i < n; i += 4) {
+            if (partial && (sx->x[i] < lo + 4 * h0 || sx->x[i] > hi - 4 * h0))
+                continue;
+            ph[ns] = sx->x[i];
+            memcpy(qs + 2 * ns, Q + 2 * i, 2 * sizeof *qs);
+            memcpy(d1 + 2 * ns, QD + 2 * i, 2 * sizeof *d1);
+            memcpy(d2 + 2 * ns, QDD + 2 * i, 2 * sizeof *d2);
+            ns++;
+        }
+        fd_ctx fc = {&prob, &opt, w, ph, qs};
+        const double wt[2] = {1, 1 / m.l};
+        mm_kin_fd fd;
+        if ((rc = mm_kin_fd_study(res, O_FDV, "dq/dphi", fd_pos, &fc, 2, wt, ns, d1, 1, h0, 24,
+                                  s.err_est * m.l, &fd, err)) != MM_OK ||
+            (rc = mm_kin_fd_study(res, O_FDA, "d2q/dphi2", fd_pos, &fc, 2, wt, ns, d2, 2, h0, 18,
+                                  s.err_est * m.l, &fd, err)) != MM_OK)
+            goto out;
+    }
+
+    if (!partial) {
+        /* dead centres: crank and rod in line, eq. (6) */
+        double po = asin(m.e / (m.l + m.r)), pi_ = M_PI + asin(m.e / (m.l - m.r));
+        double xo = sqrt((m.l + m.r - m.e) * (m.l + m.r + m.e)), xi = sqrt((m.l - m.r - m.e) * (m.l - m.r + m.e));
+        mm_res_scalar(res, O_STROKE, xo - xi);
+        mm_res_scalar(res, O_XMAX, xo);
+        mm_res_scalar(res, O_XMIN, xi);
+        mm_res_scalar(res, O_PHI_OUT, po);
+        mm_res_scalar(res, O_PHI_IN, pi_);
+        double beta = asin(m.e / (m.l - m.r)) - asin(m.e / (m.l + m.r));   /* eq. (7) */
+        mm_res_scalar(res, O_RATIO, (M_PI + fabs(beta)) / (M_PI - fabs(beta)));
+        /* where x turns back, located by a sweep that starts between them */
+        enum { NT = 25 };
+        double t[NT], qq[2 * NT], vv[2 * NT];
+        for (int i = 0; i < NT; i++)
+            t[i] = po + 0.25 + 2 * M_PI * i / (NT - 1);
+        c = sc_closed(&m, t[0], 1);
+        qq[0] = c.t, qq[1] = c.x;
+        mm_mech_sweep dc = {.nt = NT, .t = t, .q = qq, .qd = vv, .watch = 1};
+        if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &dc, err)) != MM_OK)
+            goto out;
+        mm_res_check_abs(res, "dead centres: turning points of x found by the sweep over a turn", dc.n_turn, 2, 0);
+        for (int k = 0; k < dc.n_turn && k < 2; k++) {
+            int outer = dc.q_turn[k] > 0.5 * (xo + xi);
+            double want = outer ? po : pi_;
+            double got = want + remainder(dc.t_turn[k] - want, 2 * M_PI);
+            /* bisection to 1e-11 of the turn, then the secant of v: rounding of phi */
+            mm_res_check_abs(res, outer ? "outer dead centre: located by the sweep (v = 0) vs eq. (6)"
+                                        : "inner dead centre: located by the sweep (v = 0) vs eq. (6)",
+                             got, want, 64 * DBL_EPSILON * (1 + fabs(want)));
+        }
+    } else {
+        mm_res_scalar(res, O_TOG1, lo);
+        mm_res_scalar(res, O_TOG2, hi);
+        mm_res_warn(res, "the rod is too short for the offset: the crank cannot turn a full revolution; it "
+                         "reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide) and "
+                         "cannot close from %.4g to %.4g rad", lo, hi, hi, lo + 2 * M_PI);
+        /* the sweep run past each end stops where the closed form says */
+        for (int end = 0; end < 2; end++) {
+            enum { NT = 9 };
+            double t[NT], qq[2 * NT];
+            double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + 0.05 : lo - 0.05;
+            for (int i = 0; i < NT; i++)
+                t[i] = from + (to - from) * i / (NT - 1);
+            c = sc_closed(&m, t[0], 1);
+            qq[0] = c.t, qq[1] = c.x;
+            mm_mech_sweep e = {.nt = NT, .t = t, .q = qq, .watch = -1, .tol_t = 1e-13};
+            if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &e, err)) != MM_OK)
+                goto out;
+            mm_res_check_abs(res, end ? "second toggle: where the sweep stops closing vs sin(phi) = (e - l)/r or (e + l)/r"
+                                      : "first toggle: where the sweep stops closing vs sin(phi) = (e - l)/r or (e + l)/r",
+                             e.t_limit, end ? hi : lo, 1e-9);
+        }
+    }
+    mm_res_method(res, "Newton-Raphson on the loop closure, Jacobian solves for velocity and acceleration", 0);
+    mm_res_method_stat(res, "sweep_steps", s.steps);
+    mm_res_method_stat(res, "newton_iterations", s.newton);
+    mm_res_method_stat(res, "error_estimate", s.err_est);
+    rc = animate(&m, omega, partial, lo, hi, &prob, &opt, w, res, err);
+out:
+    mm_mech_work_free(w);
+    return rc;
+}
+
+static const char *const references[] = {
+    "R. L. Norton, Design of Machinery, 5th ed., McGraw-Hill 2012, sections 4.13, 6.7 and 7.6",
+    "E. J. Haug, Computer Aided Kinematics and Dynamics of Mechanical Systems, Allyn and Bacon 1989, ch. 3",
+    NULL,
+};
+
+const mm_exercise mm_ex_kin_slider_crank = {
+    .id = "kin-slider-crank",
+    .chapter = 2,
+    .section = "2.4.4",
+    .title = "Slider-crank mechanism",
+    .summary = "Position, velocity and acceleration of the slider over a turn: dead centres, stroke, "
+               "offset and quick return, toggles of a short rod.",
+    .tags = "kinematics, mechanism, slider-crank, loop closure, Newton-Raphson, dead centre",
+    .theory = "exercises/kin/slider_crank.md",
+    .script = "exercises/kin/slider_crank.m",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};
