@@ -100,7 +100,7 @@ int mm_kin_draw_finish(mm_kin_draw *d)
 /* ---- a finite-difference study --------------------------------------------------------- */
 
 int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos, void *ctx, int k,
-                    const double *w, int n, const double *d, int deriv, double h0, int nh, double q_err,
+                    const double *w, int n, const double *d, int deriv, double h0, int nh, double d_err,
                     mm_kin_fd *fd, mm_error *err)
 {
     enum { KMAX = 16 };
@@ -111,28 +111,28 @@ int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos
     double *R = mm_res_alloc(res, (size_t)nh * (size_t)n * (size_t)k * sizeof *R);   /* rounding bounds */
     if (!D || !R || k > KMAX)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    double q0[KMAX], qp[KMAX], qm[KMAX], big = 0;
+    double q0[KMAX], qp[KMAX], qm[KMAX], big = 0, e0 = 0, ep, em;
     for (int i = 0; i < n; i++) {
-        int rc = deriv == 2 ? pos(i, 0, q0, ctx, err) : MM_OK;
+        int rc = deriv == 2 ? pos(i, 0, q0, &e0, ctx, err) : MM_OK;
         if (rc != MM_OK)
             return rc;
         for (int m = 0; m < nh; m++) {
             double h = ldexp(h0, -m);
-            if ((rc = pos(i, h, qp, ctx, err)) != MM_OK || (rc = pos(i, -h, qm, ctx, err)) != MM_OK)
+            if ((rc = pos(i, h, qp, &ep, ctx, err)) != MM_OK || (rc = pos(i, -h, qm, &em, ctx, err)) != MM_OK)
                 return rc;
             for (int j = 0; j < k; j++) {
                 double wj = w ? w[j] : 1, *Dm = D + ((size_t)m * (size_t)n + (size_t)i) * (size_t)k + (size_t)j;
                 double *Rm = R + (Dm - D);
                 double sum = fabs(qp[j]) + fabs(qm[j]) + (deriv == 2 ? 2 * fabs(q0[j]) : 0);
-                /* each position carries q_err plus half an ulp; a few ulps for the
-                 * subtraction and division */
-                double perr = 4 * (DBL_EPSILON * sum + (deriv == 2 ? 4 : 2) * q_err / wj);
+                /* half an ulp in each position, a few for the subtraction and
+                 * division, and each position's own error (weighted) */
+                double perr = 4 * DBL_EPSILON * sum * wj + ep + em + (deriv == 2 ? 2 * e0 : 0);
                 if (deriv == 1) {
                     *Dm = wj * (qp[j] - qm[j]) / (2 * h);
-                    *Rm = wj * perr / (2 * h);
+                    *Rm = perr / (2 * h);
                 } else {
                     *Dm = wj * (qp[j] - 2 * q0[j] + qm[j]) / (h * h);
-                    *Rm = wj * perr / (h * h);
+                    *Rm = perr / (h * h);
                 }
             }
         }
@@ -180,7 +180,7 @@ int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos
         double bm = 0;
         for (size_t c = 0; c < nk; c++) {
             size_t i0 = (size_t)m * nk + c, i1 = i0 + nk;
-            bm = fmax(bm, 2 * fabs(D[i0] - D[i1]) + 3 * (R[i0] + R[i1]));
+            bm = fmax(bm, 2 * fabs(D[i0] - D[i1]) + 3 * (R[i0] + R[i1]) + d_err);
         }
         if (bm < best)
             best = bm, mb = m;
@@ -190,7 +190,7 @@ int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos
     for (size_t c = 0; c < nk; c++) {
         size_t i0 = (size_t)mb * nk + c, i1 = i0 + nk;
         double wj = w ? w[c % (size_t)k] : 1;
-        double b = 2 * fabs(D[i0] - D[i1]) + 3 * (R[i0] + R[i1]);
+        double b = 2 * fabs(D[i0] - D[i1]) + 3 * (R[i0] + R[i1]) + d_err;
         double e = fabs(D[i0] - wj * d[c]);
         double r = e / (b + 1e-300);
         if (r > ratio) {

@@ -66,9 +66,10 @@ int mm_kin_draw_finish(mm_kin_draw *d);
 
 #define MM_KIN_FD_MAX 32
 
-/* q(t_i + h): the k coordinates of sample i displaced by h in t, into q.
- * Return MM_OK or an MM_E* code (err filled). */
-typedef int (*mm_kin_pos_fn)(int i, double h, double *q, void *ctx, mm_error *err);
+/* q(t_i + h): the k coordinates of sample i displaced by h in t, into q,
+ * and a bound of their error in the weighted norm (Newton's err_est, 0 for
+ * a closed form) into *qerr.  Return MM_OK or an MM_E* code (err filled). */
+typedef int (*mm_kin_pos_fn)(int i, double h, double *q, double *qerr, void *ctx, mm_error *err);
 
 typedef struct mm_kin_fd {
     int nh;
@@ -87,8 +88,9 @@ typedef struct mm_kin_fd {
  * - 2 q(t) + q(t-h))/h^2) of the k coordinates at the n samples, against
  * the analytic derivatives d (n x k), for nh steps h0, h0/2, ...; each
  * coordinate weighted by w[j] (1/length for lengths, 1 for angles; NULL:
- * all 1).  q_err is the error of one position (Newton's estimate, or 0
- * for a closed form), added to the rounding bound.  Fills fd; then checks
+ * all 1).  The positions' own error bounds (from pos) enter the rounding
+ * bound; d_err bounds the error of the analytic derivatives themselves
+ * (weighted; 0 for a closed form) and is added to the value check's.  Fills fd; then checks
  * on res:
  *   - the observed order (2) over the steps where the error is above 100x
  *     its rounding bound, when there are at least 3 of them, within 0.15;
@@ -101,7 +103,7 @@ typedef struct mm_kin_fd {
  * derivative's size).  what names the derivative in the checks ("dx/dphi").
  * Returns MM_OK or pos's code. */
 int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos, void *ctx, int k,
-                    const double *w, int n, const double *d, int deriv, double h0, int nh, double q_err,
+                    const double *w, int n, const double *d, int deriv, double h0, int nh, double d_err,
                     mm_kin_fd *fd, mm_error *err);
 
 /* ---- small things ------------------------------------------------------------------------- */

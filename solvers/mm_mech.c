@@ -169,11 +169,14 @@ static void lu_solve(const mm_mech_work *w, double *x)
     }
 }
 
-/* 1 / (|A|_1 |A^-1|_1), from the inverse (tiny systems only) */
-static double lu_rcond(mm_mech_work *w, const double *A)
+/* 1 / (|A|_1 |A^-1|_1), from the inverse (tiny systems only); the
+ * weighted infinity norm max_i w_i sum_j |A^-1_ij| into *inv, so that
+ * |A^-1 b|_w <= *inv |b|_inf */
+static double lu_rcond(const mm_mech_problem *p, const mm_mech_options *o, mm_mech_work *w, const double *A,
+                       double *inv)
 {
     int n = w->n;
-    double na = 0, ni = 0;
+    double na = 0, ni = 0, rows[MM_MECH_TINY] = {0};
     for (int j = 0; j < n; j++) {
         double *col = w->inv + (size_t)j * (size_t)n;   /* column j of A^-1, stored as a row */
         for (int i = 0; i < n; i++)
@@ -183,12 +186,38 @@ static double lu_rcond(mm_mech_work *w, const double *A)
         for (int i = 0; i < n; i++) {
             sa += fabs(A[i * n + j]);
             si += fabs(col[i]);
+            rows[i] += fabs(col[i]);
         }
         na = fmax(na, sa);
         ni = fmax(ni, si);
     }
+    *inv = 0;
+    for (int i = 0; i < n; i++)
+        *inv = fmax(*inv, rows[i] / (p->is_length && p->is_length[i] ? o->length : 1));
     double r = 1 / (na * ni);
     return isfinite(r) ? r : 0;
+}
+
+/* |A|_1 of the m x n row-major A */
+static double norm1(const double *A, int m, int n)
+{
+    double best = 0;
+    for (int j = 0; j < n; j++) {
+        double s = 0;
+        for (int i = 0; i < m; i++)
+            s += fabs(A[i * n + j]);
+        best = fmax(best, s);
+    }
+    return best;
+}
+
+/* the largest weight of the norm: converts an unweighted bound to |.|_w */
+static double wmax(const mm_mech_problem *p, const mm_mech_options *o)
+{
+    for (int i = 0; p->is_length && i < p->n; i++)
+        if (p->is_length[i] && o->length < 1)
+            return 1 / o->length;
+    return 1;
 }
 
 /* Solve Phi_q x = rhs (m values) into x (n values), Phi_q in w->J.  With
@@ -204,7 +233,7 @@ static int jsolve(const mm_mech_problem *p, const mm_mech_options *o, mm_mech_wo
         double det;
         int ok = lu_factor(w, w->J, &det);
         info->det = det;
-        info->rcond = ok ? lu_rcond(w, w->J) : 0;
+        info->rcond = ok ? lu_rcond(p, o, w, w->J, &info->inv_norm) : 0;
         if (ok && info->rcond >= o->sing_rcond) {
             memcpy(x, rhs, (size_t)n * sizeof *x);
             lu_solve(w, x);
@@ -214,6 +243,7 @@ static int jsolve(const mm_mech_problem *p, const mm_mech_options *o, mm_mech_wo
         mm_linalg_solve_info li;
         int rc = mm_linalg_solve(n, 1, w->J, rhs, x, &li, err);
         info->rcond = li.rcond;
+        info->inv_norm = n * wmax(p, o) / fmax(li.rcond * norm1(w->J, m, n), DBL_MIN);
         if (rc == MM_OK && li.rcond >= o->sing_rcond)
             return MM_OK;
         if (rc != MM_OK && rc != MM_ESINGULAR)
@@ -227,6 +257,7 @@ static int jsolve(const mm_mech_problem *p, const mm_mech_options *o, mm_mech_wo
         return rc;
     info->rank = rank;
     info->rcond = sv[0] > 0 ? sv[n - 1] / sv[0] : 0;
+    info->inv_norm = wmax(p, o) * sqrt((double)m) / fmax(sv[n - 1], DBL_MIN);
     if (!lstsq && (rank < n || info->rcond < o->sing_rcond))
         return mm_error_set(err, MM_ESINGULAR, "q",
                             "the constraint Jacobian is singular here (rank %d of %d): a toggle or "
@@ -266,15 +297,16 @@ int mm_mech_position(const mm_mech_problem *p, const mm_mech_options *o, mm_mech
          * no step can be smaller, so that is the tolerance there */
         double floor_ = 8 * DBL_EPSILON * (wnorm(p, o, q) + 1) / fmax(info->rcond, DBL_EPSILON);
         if (s <= fmax(o->xtol, floor_)) {
-            double r = s / prev;                         /* geometric tail of the steps */
-            info->err_est = (r < 1 ? s * r / (1 - r) : s) +
-                            DBL_EPSILON * (wnorm(p, o, q) + 1) / fmax(info->rcond, DBL_EPSILON);
             if ((rc = p->phi(q, t, w->F, p->params)) != 0)
                 return callback_failed(rc, "constraint equations", err);
             double res = 0;
             for (int i = 0; i < m; i++)
                 res = fmax(res, fabs(w->F[i]));
             info->residual = res;
+            /* the geometric tail of the steps, and what Phi's rounding allows */
+            double r = s / prev, scale = o->phi_scale > 0 ? o->phi_scale : o->length;
+            info->err_est = (r < 1 ? s * r / (1 - r) : s) +
+                            (res + 4 * DBL_EPSILON * scale) * fmin(info->inv_norm, 1 / DBL_MIN);
             return all_finite(q, n) ? MM_OK
                                     : mm_error_set(err, MM_ENONFINITE, "q", "the position is not finite");
         }
@@ -400,9 +432,10 @@ static double watch_at(sweep_ctx *c, double t, const double *q)
 
 /* Bisect [ta, tb] (solutions qa, qb) for the sign change of det (kind 0)
  * or of q'_watch (kind 1); the place into *tz, q_watch there into *qz.
- * Each midpoint is corrected from the interpolation of its neighbours and
- * kept only if it stays near it (where branches cross, Newton could land
- * on the other one); when it does not, the secant of g ends the search. */
+ * Each midpoint is corrected from the interpolation of its neighbours; for
+ * det it is kept only if it stays near it (where branches cross, Newton
+ * could land on the other one); when it does not, the secant of g ends the
+ * search.  A turning point is no singular point: no such guard there. */
 static int locate(sweep_ctx *c, int kind, double ta, const double *qa, double ga, double tb,
                   const double *qb, double gb, double *tz, double *qz)
 {
@@ -423,7 +456,7 @@ static int locate(sweep_ctx *c, int kind, double ta, const double *qa, double ga
         int ok = corrector(c, tm, P, M, &info);
         if (ok < 0)
             return -ok;
-        if (!ok || wdist(c->p, c->o, M, P) > 0.3 * wdist(c->p, c->o, A, B) + 1e3 * c->o->xtol)
+        if (!ok || (kind == 0 && wdist(c->p, c->o, M, P) > 0.3 * wdist(c->p, c->o, A, B) + 1e3 * c->o->xtol))
             break;
         double g = kind == 0 ? det_at(c, tm, M) : watch_at(c, tm, M);
         if (g == 0) {

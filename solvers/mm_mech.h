@@ -66,17 +66,22 @@ typedef struct mm_mech_options {
     int max_iter;           /* Newton iterations at most (default 60: linear convergence at a toggle) */
     double max_step;        /* a Newton step is cut to |dq|_w <= max_step (default 0.5) */
     double sing_rcond;      /* a square Jacobian with rcond below this is singular (default 1e-13) */
+    double phi_scale;       /* the size of the largest term summed in Phi (the sum of the
+                               link lengths, say): Phi is known to a few eps of it, which
+                               bounds how well q can be known; 0: length */
 } mm_mech_options;
 
 typedef struct mm_mech_info {
     int iterations;         /* Newton iterations taken */
     double residual;        /* |Phi|_inf at the solution, in the units of Phi */
     double step;            /* |dq|_w of the last Newton step */
-    double err_est;         /* estimate of |q - q_exact|_w: the quadratic tail of the
-                               last step, s_k^3 / s_{k-1}^2, plus the rounding
-                               (1/rcond) eps (|q|_w + 1) */
+    double err_est;         /* estimate of |q - q_exact|_w: the geometric tail of the
+                               last steps, s_k r / (1 - r) with r = s_k / s_{k-1}, plus
+                               the rounding: (|Phi| + 4 eps phi_scale) |Phi_q^-1| */
     double rcond;           /* 1/cond_1(Phi_q) (square), sigma_min/sigma_max (other) */
     double det;             /* det Phi_q when square and n <= MM_MECH_TINY, else 0 */
+    double inv_norm;        /* |Phi_q^-1| from |Phi|_inf to |.|_w: exact for n <= MM_MECH_TINY,
+                               n / (rcond |Phi_q|_1) or sqrt(m) / sigma_min otherwise */
     int rank;               /* numerical rank of Phi_q (square: n unless singular) */
 } mm_mech_info;
 

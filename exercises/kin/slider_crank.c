@@ -224,11 +224,14 @@ typedef struct fd_ctx {
     const double *phi, *q;        /* the samples and their solved positions */
 } fd_ctx;
 
-static int fd_pos(int i, double h, double *q, void *ctx, mm_error *err)
+static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     fd_ctx *c = ctx;
+    mm_mech_info info;
     memcpy(q, c->q + 2 * i, 2 * sizeof *q);
-    return mm_mech_position(c->p, c->o, c->w, c->phi[i] + h, q, NULL, err);
+    int rc = mm_mech_position(c->p, c->o, c->w, c->phi[i] + h, q, &info, err);
+    *qerr = info.err_est;
+    return rc;
 }
 
 /* ---- Newton at phi, iterate by iterate ---------------------------------------------- */
@@ -377,6 +380,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_mech_options opt;
     mm_mech_options_init(&opt);
     opt.length = m.l;
+    opt.phi_scale = m.r + m.l + fabs(m.e);
     mm_mech_work *w = mm_mech_work_alloc(2, 2);
     if (!w)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
@@ -506,10 +510,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         fd_ctx fc = {&prob, &opt, w, ph, qs};
         const double wt[2] = {1, 1 / m.l};
         mm_kin_fd fd;
-        if ((rc = mm_kin_fd_study(res, O_FDV, "dq/dphi", fd_pos, &fc, 2, wt, ns, d1, 1, h0, 24,
-                                  s.err_est * m.l, &fd, err)) != MM_OK ||
-            (rc = mm_kin_fd_study(res, O_FDA, "d2q/dphi2", fd_pos, &fc, 2, wt, ns, d2, 2, h0, 18,
-                                  s.err_est * m.l, &fd, err)) != MM_OK)
+        if ((rc = mm_kin_fd_study(res, O_FDV, "dq/dphi", fd_pos, &fc, 2, wt, ns, d1, 1, h0, 24, 0, &fd, err)) !=
+                MM_OK ||
+            (rc = mm_kin_fd_study(res, O_FDA, "d2q/dphi2", fd_pos, &fc, 2, wt, ns, d2, 2, h0, 18, 0, &fd, err)) != MM_OK)
             goto out;
     }
 
