@@ -21,6 +21,7 @@ extern const mm_exercise mm_ex_num_plot;
 /* ==== end of 1 ==== */
 
 /* ==== 2 Kinematics ==== */
+extern const mm_exercise mm_ex_kin_rotation_plane;
 extern const mm_exercise mm_ex_kin_slider_crank;
 extern const mm_exercise mm_ex_kin_four_bar;
 /* ==== end of 2 ==== */
@@ -62,6 +63,7 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 1 ==== */
 
     /* ==== 2 Kinematics ==== */
+    &mm_ex_kin_rotation_plane,
     &mm_ex_kin_slider_crank,
     &mm_ex_kin_four_bar,
     /* ==== end of 2 ==== */
