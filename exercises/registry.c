@@ -22,6 +22,7 @@ extern const mm_exercise mm_ex_num_plot;
 
 /* ==== 2 Kinematics ==== */
 extern const mm_exercise mm_ex_kin_rotation_plane;
+extern const mm_exercise mm_ex_kin_rigid_rotation;
 extern const mm_exercise mm_ex_kin_slider_crank;
 extern const mm_exercise mm_ex_kin_four_bar;
 /* ==== end of 2 ==== */
@@ -64,6 +65,7 @@ const mm_exercise *const mm_exercises[] = {
 
     /* ==== 2 Kinematics ==== */
     &mm_ex_kin_rotation_plane,
+    &mm_ex_kin_rigid_rotation,
     &mm_ex_kin_slider_crank,
     &mm_ex_kin_four_bar,
     /* ==== end of 2 ==== */
