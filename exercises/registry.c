@@ -25,6 +25,7 @@ extern const mm_exercise mm_ex_kin_relative_motion;
 extern const mm_exercise mm_ex_kin_rotation_plane;
 extern const mm_exercise mm_ex_kin_rigid_rotation;
 extern const mm_exercise mm_ex_kin_plane_motion;
+extern const mm_exercise mm_ex_kin_space_motion;
 extern const mm_exercise mm_ex_kin_rolling_wheel;
 extern const mm_exercise mm_ex_kin_slider_crank;
 extern const mm_exercise mm_ex_kin_four_bar;
@@ -71,6 +72,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_kin_rotation_plane,
     &mm_ex_kin_rigid_rotation,
     &mm_ex_kin_plane_motion,
+    &mm_ex_kin_space_motion,
     &mm_ex_kin_rolling_wheel,
     &mm_ex_kin_slider_crank,
     &mm_ex_kin_four_bar,
