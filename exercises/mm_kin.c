@@ -7,6 +7,8 @@
 #include <string.h>
 
 #include "mm_exhelp.h"
+#include "mm_expr.h"
+#include "mm_geom.h"
 
 /* ---- drawing ------------------------------------------------------------------------ */
 
@@ -210,6 +212,61 @@ int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos
             s->x[m] = fd->h[m];
             s->y[m] = fmax(fd->err[m], floor_);
         }
+    }
+    return MM_OK;
+}
+
+/* ---- a plane curve typed as two expressions of t ------------------------------------ */
+
+int mm_kin_curve_compile(mm_kin_curve *c, const char *x, const char *y, const char *px, const char *py,
+                         mm_error *err)
+{
+    static const char *const vars[] = {"t"};
+    c->x = c->y = NULL;
+    c->px = px, c->py = py;
+    int rc = mm_expr_compile(x, vars, 1, &c->x, err);
+    if (rc != MM_OK) {
+        if (err)
+            snprintf(err->param, sizeof err->param, "%s", px);
+        return rc;
+    }
+    rc = mm_expr_compile(y, vars, 1, &c->y, err);
+    if (rc != MM_OK) {
+        mm_kin_curve_free(c);
+        if (err)
+            snprintf(err->param, sizeof err->param, "%s", py);
+    }
+    return rc;
+}
+
+void mm_kin_curve_free(mm_kin_curve *c)
+{
+    mm_expr_free(c->x);
+    mm_expr_free(c->y);
+    c->x = c->y = NULL;
+}
+
+int mm_kin_curve_eval(double t, double *out, void *ctx)
+{
+    mm_kin_curve *c = ctx;
+    out[0] = mm_expr_eval(c->x, &t);
+    out[1] = mm_expr_eval(c->y, &t);
+    return isfinite(out[0]) && isfinite(out[1]) ? MM_OK : MM_ENONFINITE;
+}
+
+int mm_kin_curve_at(mm_kin_curve *c, double t, double h0, double r[2], double d1[2], double e1[2], double d2[2],
+                    double e2[2], mm_error *err)
+{
+    int rc = mm_kin_curve_eval(t, r, c);
+    if (rc == MM_OK)
+        rc = mm_geom_curve_derivs(mm_kin_curve_eval, c, 2, t, h0, d1, e1, d2, e2, NULL);
+    if (rc != MM_OK) {
+        double q[2];
+        mm_kin_curve_eval(t, q, c);
+        return mm_error_set(err, MM_ENONFINITE, isfinite(q[0]) ? c->py : c->px,
+                            "the path is not finite at or near t = %g (%s(t) gives %g): choose an expression "
+                            "defined there, or another time range", t, isfinite(q[0]) ? c->py : c->px,
+                            isfinite(q[0]) ? q[1] : q[0]);
     }
     return MM_OK;
 }

@@ -106,6 +106,31 @@ int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos
                     const double *w, int n, const double *d, int deriv, double h0, int nh, double d_err,
                     mm_kin_fd *fd, mm_error *err);
 
+/* ---- a plane curve typed as two expressions of t ------------------------------------ */
+
+typedef struct mm_expr mm_expr;
+
+typedef struct mm_kin_curve {
+    mm_expr *x, *y;           /* x(t), y(t), compiled for this request */
+    const char *px, *py;      /* their parameter names, for messages */
+} mm_kin_curve;
+
+/* Compile the texts of the parameters px and py as functions of t.
+ * Returns MM_OK or mm_expr's code with err naming the parameter. */
+int mm_kin_curve_compile(mm_kin_curve *c, const char *x, const char *y, const char *px, const char *py,
+                         mm_error *err);
+void mm_kin_curve_free(mm_kin_curve *c);
+
+/* (x(t), y(t)) into out; MM_ENONFINITE when either is not finite (an
+ * mm_geom_curve_fn, ctx is the curve).  Does not fill an mm_error. */
+int mm_kin_curve_eval(double t, double *out, void *ctx);
+
+/* r, r' and r'' at t by Ridders' extrapolation (mm_geom_curve_derivs), h0
+ * the first step; e1, e2 their error estimates (per component).  MM_OK or
+ * MM_ENONFINITE with err naming the expression that is not finite near t. */
+int mm_kin_curve_at(mm_kin_curve *c, double t, double h0, double r[2], double d1[2], double e1[2], double d2[2],
+                    double e2[2], mm_error *err);
+
 /* ---- small things ------------------------------------------------------------------------- */
 
 /* n points from a to b as short decimals: a + i * step with step = (b - a) / (n - 1)

@@ -21,6 +21,7 @@ extern const mm_exercise mm_ex_num_plot;
 /* ==== end of 1 ==== */
 
 /* ==== 2 Kinematics ==== */
+extern const mm_exercise mm_ex_kin_particle_path;
 extern const mm_exercise mm_ex_kin_relative_motion;
 extern const mm_exercise mm_ex_kin_rotation_plane;
 extern const mm_exercise mm_ex_kin_rigid_rotation;
@@ -68,6 +69,7 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 1 ==== */
 
     /* ==== 2 Kinematics ==== */
+    &mm_ex_kin_particle_path,
     &mm_ex_kin_relative_motion,
     &mm_ex_kin_rotation_plane,
     &mm_ex_kin_rigid_rotation,

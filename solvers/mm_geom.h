@@ -187,9 +187,13 @@ typedef int (*mm_geom_curve_fn)(double t, double *out, void *params);
  *     D1(h) = (f(t+h) - f(t-h)) / (2h),  D2(h) = (f(t+h) - 2 f(t) + f(t-h)) / h^2,
  * both even in h, are taken at h0, h0/1.4, h0/1.4^2, ... and extrapolated
  * to h = 0 in a Neville table; the entry whose difference from its
- * neighbours is smallest is returned, and that difference is its error
- * estimate e1 (e2): an ESTIMATE, usually pessimistic by a factor 1-100,
- * that includes the rounding the table met.  h0 should be a step over
+ * neighbours is smallest is returned, and 4 times that difference is its
+ * error estimate e1 (e2) (dfridr's own stopping rule waits for four
+ * columns: earlier, a chance agreement of two extrapolations could stop it
+ * with errors 30 times its estimate): an ESTIMATE, usually pessimistic by
+ * a factor 1-100,
+ * to which the rounding of the differences at the step used is added
+ * (that of f's values, and |f'| eps |t| from rounding t +- h).  h0 should be a step over
  * which the curve changes appreciably (a tenth of its time scale).  d2 and
  * e2 may be NULL.  Fails with MM_ENONFINITE ("t") when f is not finite at a
  * point it needed, or f's own code. */
