@@ -23,6 +23,7 @@ extern const mm_exercise mm_ex_num_plot;
 /* ==== 2 Kinematics ==== */
 extern const mm_exercise mm_ex_kin_particle_path;
 extern const mm_exercise mm_ex_kin_relative_motion;
+extern const mm_exercise mm_ex_kin_path_coordinates;
 extern const mm_exercise mm_ex_kin_rotation_plane;
 extern const mm_exercise mm_ex_kin_rigid_rotation;
 extern const mm_exercise mm_ex_kin_plane_motion;
@@ -71,6 +72,7 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== 2 Kinematics ==== */
     &mm_ex_kin_particle_path,
     &mm_ex_kin_relative_motion,
+    &mm_ex_kin_path_coordinates,
     &mm_ex_kin_rotation_plane,
     &mm_ex_kin_rigid_rotation,
     &mm_ex_kin_plane_motion,
