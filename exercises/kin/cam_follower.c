@@ -1,0 +1,459 @@
+/* cam_follower.c — kin-cam-follower: a disc cam turning at omega lifts a
+ * translating roller follower (offset e from the cam's centre) by h over
+ * beta_rise, holds it over beta_dwell, lets it down over beta_return, and
+ * holds it at the bottom for the rest of the turn.
+ *
+ *     s(theta) by the chosen law, v = omega s', a = omega^2 s'', j = omega^3 s'''  (1)
+ *     pressure angle: tan phi = (s' - e) / (s0 + s),  s0 = sqrt((Rb + Rr)^2 - e^2)  (2)
+ *     pitch curve P(theta) = R(-theta) (e, s0 + s),  rho from P', P''       (3)
+ *     cam profile: P moved by Rr towards the cam;  rho_cam = rho_pitch - Rr   (4)
+ *
+ * Goal: the follower's motion laws (harmonic, cycloidal, 3-4-5 polynomial,
+ * constant acceleration) and what they cost in velocity, acceleration and
+ * jerk; the pressure angle; the cam profile that makes them, and where it
+ * cannot: a roller larger than the pitch curve's radius of curvature
+ * undercuts the cam (negative rho_cam, warned).
+ * Checks: central differences of s against s' and s'' (error against the
+ * step, order 2); the peak velocity and acceleration of the closed forms
+ * against golden-section searches of the laws; the pitch curve's radius of
+ * curvature (3) against the circle through three close points of it.
+ * Reference: R. L. Norton, Cam Design and Manufacturing Handbook, 2nd ed.,
+ * Industrial Press 2009, ch. 3, 7; Design of Machinery, ch. 8.
+ */
+#include <float.h>
+#include <math.h>
+
+#include "mm_geom.h"
+#include "mm_kin.h"
+#include "mm_opt.h"
+
+enum { P_LAW, P_H, P_BR, P_BD, P_BT, P_RB, P_RR, P_E, P_W, P_TH, P_POINTS };
+
+static const char *const laws[] = {"cycloidal", "harmonic", "polynomial345", "constant_acceleration", NULL};
+
+static const mm_param params[] = {
+    [P_LAW] = {"law", "motion law", "", MM_CHOICE, 0, 0, 3, .choices = laws,
+               .help = "how the follower rises and falls: cycloidal and 3-4-5 keep the acceleration finite and "
+                       "continuous; harmonic and constant acceleration jump in acceleration"},
+    [P_H] = {"h", "lift", "m", MM_REAL, 0.02, 1e-4, 1, .help = "how far the follower rises"},
+    [P_BR] = {"beta_rise", "rise angle", "rad", MM_REAL, M_PI / 2, 0.05, 5, .help = "cam angle of the rise"},
+    [P_BD] = {"beta_dwell", "dwell angle at the top", "rad", MM_REAL, M_PI / 6, 0, 5,
+              .help = "cam angle held at the top; the rest of the turn after the return is the bottom dwell"},
+    [P_BT] = {"beta_return", "return angle", "rad", MM_REAL, M_PI / 2, 0.05, 5, .help = "cam angle of the return"},
+    [P_RB] = {"Rb", "base circle radius", "m", MM_REAL, 0.05, 1e-3, 2, .help = "the cam's smallest radius"},
+    [P_RR] = {"Rr", "roller radius", "m", MM_REAL, 0.01, 0, 1, .help = "0 for a knife-edge follower"},
+    [P_E] = {"e", "offset", "m", MM_REAL, 0, -1, 1,
+             .help = "distance of the follower's line from the cam's centre; lowers the pressure angle on the rise"},
+    [P_W] = {"omega", "cam speed", "rad/s", MM_REAL, 10, -1000, 1000, .help = "constant, counter-clockwise positive"},
+    [P_TH] = {"theta", "cam angle", "rad", MM_REAL, 0.7, -100, 100, .help = "the instant asked, from the start of the rise"},
+    [P_POINTS] = {"points", "plot points", "", MM_INT, 121, 25, 1441, .help = "cam angles of the plots over the turn"},
+};
+
+enum {
+    O_S, O_V, O_A, O_J, O_VMAX, O_AMAX, O_PHI, O_PHIMAX, O_RHOP, O_RHOC, O_UNDER,
+    O_SS, O_SV, O_SA, O_SJ, O_SPHI, O_PROF, O_PITCH, O_FDV, O_FDA, O_ANIM
+};
+
+static const mm_output outputs[] = {
+    [O_S] = MM_SCALAR("s", "follower lift", "m", .flags = MM_ANSWER | MM_EXACT),
+    [O_V] = MM_SCALAR("v", "follower velocity", "m/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_A] = MM_SCALAR("a", "follower acceleration", "m/s^2", .flags = MM_ANSWER | MM_EXACT),
+    [O_J] = MM_SCALAR("jerk", "follower jerk", "m/s^3", .flags = MM_EXACT),
+    [O_VMAX] = MM_SCALAR("v_max", "largest velocity over the turn", "m/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_AMAX] = MM_SCALAR("a_max", "largest acceleration over the turn", "m/s^2", .flags = MM_ANSWER | MM_EXACT),
+    [O_PHI] = MM_SCALAR("pressure_angle", "pressure angle at theta", "rad", .flags = MM_ANSWER | MM_EXACT),
+    [O_PHIMAX] = MM_SCALAR("pressure_angle_max", "largest pressure angle over the turn", "rad", .flags = MM_ANSWER),
+    [O_RHOP] = MM_SCALAR("rho_pitch_min", "smallest radius of curvature of the pitch curve (convex parts)", "m"),
+    [O_RHOC] = MM_SCALAR("rho_cam_min", "smallest radius of curvature of the cam profile (negative: undercut)", "m",
+                         .flags = MM_ANSWER),
+    [O_UNDER] = MM_SCALAR("undercut", "the roller undercuts the cam (1) or not (0)", "", .flags = MM_EXACT),
+    [O_SS] = MM_SERIES("s", "lift", "m", "cam angle", "rad", .figure = "lift"),
+    [O_SV] = MM_SERIES("v", "velocity", "m/s", "cam angle", "rad", .figure = "velocity"),
+    [O_SA] = MM_SERIES("a", "acceleration", "m/s^2", "cam angle", "rad", .figure = "acceleration"),
+    [O_SJ] = MM_SERIES("jerk", "jerk", "m/s^3", "cam angle", "rad", .figure = "jerk"),
+    [O_SPHI] = MM_SERIES("pressure_angle", "pressure angle", "rad", "cam angle", "rad", .figure = "pressure angle"),
+    [O_PROF] = MM_SERIES("profile", "cam profile", "m", "x", "m", .aspect = "equal", .figure = "cam"),
+    [O_PITCH] = MM_SERIES("pitch_curve", "pitch curve (path of the roller's centre)", "m", "x", "m", .aspect = "equal",
+                          .figure = "cam", .role = "reference"),
+    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of s vs s'", "m", "step h", "rad",
+                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs s''", "m", "step h", "rad",
+                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_ANIM] = MM_ANIMATION("the cam turning, the roller follower rising and falling, its velocity"),
+};
+
+typedef struct cam {
+    int law;
+    double h, br, bd, bt, Rb, Rr, e, s0;
+} cam;
+
+/* a rise of 1 over u in [0, 1]: the law and its derivatives by u, eq. (1) */
+static void rise(int law, double u, double d[4])
+{
+    double c, sn;
+    switch (law) {
+    case 0:                                                  /* cycloidal */
+        c = cos(2 * M_PI * u), sn = sin(2 * M_PI * u);
+        d[0] = u - sn / (2 * M_PI), d[1] = 1 - c, d[2] = 2 * M_PI * sn, d[3] = 4 * M_PI * M_PI * c;
+        break;
+    case 1:                                                  /* harmonic */
+        c = cos(M_PI * u), sn = sin(M_PI * u);
+        d[0] = 0.5 * (1 - c), d[1] = 0.5 * M_PI * sn, d[2] = 0.5 * M_PI * M_PI * c, d[3] = -0.5 * M_PI * M_PI * M_PI * sn;
+        break;
+    case 2:                                                  /* 3-4-5 polynomial */
+        d[0] = u * u * u * (10 - 15 * u + 6 * u * u), d[1] = 30 * u * u * (1 - 2 * u + u * u);
+        d[2] = 60 * u * (1 - 3 * u + 2 * u * u), d[3] = 60 * (1 - 6 * u + 6 * u * u);
+        break;
+    default:                                                 /* constant acceleration */
+        if (u < 0.5)
+            d[0] = 2 * u * u, d[1] = 4 * u, d[2] = 4, d[3] = 0;
+        else
+            d[0] = 1 - 2 * (1 - u) * (1 - u), d[1] = 4 * (1 - u), d[2] = -4, d[3] = 0;
+    }
+}
+
+/* the peaks of |d1| and |d2| of a rise of 1 over u in [0, 1] */
+static void peaks(int law, double *p1, double *p2)
+{
+    static const double P1[4] = {2, M_PI / 2, 1.875, 2};
+    static const double P2[4] = {2 * M_PI, M_PI * M_PI / 2, 5.773502691896257645, 4};   /* 10 sqrt(3) / 3 */
+    *p1 = P1[law], *p2 = P2[law];
+}
+
+/* s and its derivatives by theta over the whole turn; *seg = 0 rise, 1 top
+ * dwell, 2 return, 3 bottom dwell */
+static void motion(const cam *m, double theta, double d[4], int *seg)
+{
+    double th = theta - 2 * M_PI * floor(theta / (2 * M_PI)), r[4];
+    double b1 = m->br, b2 = b1 + m->bd, b3 = b2 + m->bt;
+    if (th < b1) {
+        rise(m->law, th / m->br, r);
+        for (int k = 0; k < 4; k++)
+            d[k] = m->h * r[k] / pow(m->br, k);
+        *seg = 0;
+    } else if (th < b2) {
+        d[0] = m->h, d[1] = d[2] = d[3] = 0, *seg = 1;
+    } else if (th < b3) {
+        rise(m->law, (th - b2) / m->bt, r);                 /* the return mirrors a rise */
+        d[0] = m->h * (1 - r[0]);
+        for (int k = 1; k < 4; k++)
+            d[k] = -m->h * r[k] / pow(m->bt, k);
+        *seg = 2;
+    } else {
+        d[0] = d[1] = d[2] = d[3] = 0, *seg = 3;
+    }
+}
+
+/* the pressure angle, eq. (2), and the pitch curve's radius of curvature,
+ * eq. (3) (positive where the curve is convex, seen from outside) */
+static double pressure(const cam *m, const double *d)
+{
+    return atan2(d[1] - m->e, m->s0 + d[0]);
+}
+
+static double rho_pitch(const cam *m, const double *d)
+{
+    double y = m->s0 + d[0], tx = y, ty = d[1] - m->e;          /* tau = c' - k x c */
+    double wx = 2 * d[1] - m->e, wy = d[2] - y;                  /* tau' - k x tau */
+    double t = hypot(tx, ty), cr = tx * wy - ty * wx;
+    return cr != 0 ? -t * t * t / cr : INFINITY;
+}
+
+/* the roller centre (pitch point) and the contact point, in the cam's frame */
+static void points_at(const cam *m, double theta, mm_v2 *P, mm_v2 *K)
+{
+    double d[4];
+    int seg;
+    motion(m, theta, d, &seg);
+    mm_v2 C = {m->e, m->s0 + d[0]}, n = {m->e - d[1], m->s0 + d[0]};          /* normal, away from the cam */
+    mm_v2 Kf = mm_v2_sub(C, mm_v2_scale(n, m->Rr / mm_v2_norm(n)));
+    *P = mm_v2_rotate(C, -theta);
+    *K = mm_v2_rotate(Kf, -theta);
+}
+
+/* the nearest place to th where the law's derivatives jump: the ends of
+ * the segments (a turn included), and the middle of a constant-acceleration
+ * rise or return */
+static double near_jump(const cam *m, double th)
+{
+    double b[7] = {0, m->br, m->br + m->bd, m->br + m->bd + m->bt, 2 * M_PI,
+                   m->law == 3 ? 0.5 * m->br : 0, m->law == 3 ? m->br + m->bd + 0.5 * m->bt : 0};
+    double best = b[0];
+    for (int k = 1; k < 7; k++)
+        if (fabs(th - b[k]) < fabs(th - best))
+            best = b[k];
+    return best;
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    double used = in[P_BR].x + in[P_BD].x + in[P_BT].x;
+    if (used > 2 * M_PI)
+        return mm_error_set(err, MM_ERANGE, "beta_dwell",
+                            "rise, top dwell and return must fit in one turn: their sum is %g rad, more than 2 pi; "
+                            "make beta_dwell at most %g rad", used, 2 * M_PI - in[P_BR].x - in[P_BT].x);
+    if (fabs(in[P_E].x) >= in[P_RB].x + in[P_RR].x)
+        return mm_error_set(err, MM_ERANGE, "e", "the offset must be less than Rb + Rr = %g m (the follower's line "
+                            "must cross the pitch circle); got %g m", in[P_RB].x + in[P_RR].x, in[P_E].x);
+    return MM_OK;
+}
+
+typedef struct fd_ctx {
+    const cam *m;
+    const double *th;
+} fd_ctx;
+
+static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+{
+    (void)err;
+    fd_ctx *c = ctx;
+    double d[4];
+    int seg;
+    motion(c->m, c->th[i] + h, d, &seg);
+    q[0] = d[0];
+    *qerr = 8 * DBL_EPSILON * c->m->h;
+    return MM_OK;
+}
+
+typedef struct peak_ctx {
+    const cam *m;
+    int k, seg;            /* which derivative, and which segment's peak */
+} peak_ctx;
+
+static int peak_fn(double th, double *f, void *ctx)
+{
+    peak_ctx *c = ctx;
+    double d[4];
+    int seg;
+    motion(c->m, th, d, &seg);
+    *f = seg == c->seg ? fabs(d[c->k]) : 0;
+    return 0;
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    cam m = {(int)in[P_LAW].x, in[P_H].x, in[P_BR].x, in[P_BD].x, in[P_BT].x, in[P_RB].x, in[P_RR].x, in[P_E].x, 0};
+    m.s0 = sqrt((m.Rb + m.Rr - m.e) * (m.Rb + m.Rr + m.e));
+    const double w = in[P_W].x, theta = in[P_TH].x;
+    const int n = (int)in[P_POINTS].x;
+
+    /* ---- at theta ---- */
+    double d[4];
+    int seg;
+    motion(&m, theta, d, &seg);
+    mm_res_scalar(res, O_S, d[0]);
+    mm_res_scalar(res, O_V, w * d[1]);
+    mm_res_scalar(res, O_A, w * w * d[2]);
+    mm_res_scalar(res, O_J, w * w * w * d[3]);
+    mm_res_scalar(res, O_PHI, pressure(&m, d));
+    /* the peaks: closed forms of the rise and the return, against a
+     * golden-section search of each law over its segment */
+    double p1, p2;
+    peaks(m.law, &p1, &p2);
+    double vr = p1 * m.h / m.br, vt = p1 * m.h / m.bt, ar = p2 * m.h / (m.br * m.br), at = p2 * m.h / (m.bt * m.bt);
+    mm_res_scalar(res, O_VMAX, fabs(w) * fmax(vr, vt));
+    mm_res_scalar(res, O_AMAX, w * w * fmax(ar, at));
+    for (int k = 1; k <= 2; k++) {
+        int s2 = (k == 1 ? vr >= vt : ar >= at) ? 0 : 2;
+        double a0 = s2 == 0 ? 0 : m.br + m.bd, b0 = a0 + (s2 == 0 ? m.br : m.bt);
+        peak_ctx pc = {&m, k, s2};
+        mm_opt_result r;
+        /* |s''| of the constant-acceleration law is flat: any point is the peak */
+        int rc = mm_opt_golden_max(peak_fn, &pc, a0, b0 - 1e-12 * b0, 1e-9 * (b0 - a0), 200, &r, err);
+        if (rc != MM_OK)
+            return rc;
+        double want = k == 1 ? fmax(vr, vt) : fmax(ar, at);
+        /* at the top of a smooth peak the value is known to eps, whatever the
+         * place; at a corner (the constant-acceleration law's s', harmonic s''
+         * at the ends) to the slope times the place's uncertainty: the
+         * bracket, or the 1e-9 of the segment asked for */
+        mm_res_check_abs(res, k == 1 ? "peak s' of the law by golden section vs its closed form"
+                                     : "peak s'' of the law by golden section vs its closed form",
+                         r.fx, want,
+                         64 * DBL_EPSILON * want + (k == 1 ? fmax(ar, at) : fmax(ar, at) / fmin(m.br, m.bt)) *
+                                                       fmax(r.bracket, 1e-9 * (b0 - a0)));
+    }
+
+    /* ---- over the turn ---- */
+    mm_series *ser[5];
+    for (int i = 0; i < 5; i++)
+        if (!(ser[i] = mm_res_series(res, O_SS + i, n)))
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_series *prof = mm_res_series(res, O_PROF, n), *pitch = mm_res_series(res, O_PITCH, n);
+    int ns = 0;
+    double *th = mm_res_alloc(res, (size_t)n * sizeof *th), *d1 = mm_res_alloc(res, (size_t)n * sizeof *d1),
+           *d2 = mm_res_alloc(res, (size_t)n * sizeof *d2);
+    if (!prof || !pitch || !th || !d1 || !d2)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_kin_grid(0, 2 * M_PI, n, ser[0]->x);
+    const double h0 = 0.01 * fmin(m.br, m.bt);
+    double phimax = 0, tphi = 0, rmin = INFINITY, trmin = 0, size = m.s0 + m.h + m.Rr;
+    for (int i = 0; i < n; i++) {
+        double x = ser[0]->x[i], di[4];
+        int si;
+        motion(&m, x, di, &si);
+        for (int k = 1; k < 5; k++)
+            ser[k]->x[i] = x;
+        ser[0]->y[i] = di[0], ser[1]->y[i] = w * di[1], ser[2]->y[i] = w * w * di[2], ser[3]->y[i] = w * w * w * di[3];
+        double phi = pressure(&m, di), rp = rho_pitch(&m, di);
+        ser[4]->y[i] = phi;
+        if (fabs(phi) > phimax)
+            phimax = fabs(phi), tphi = x;
+        if (rp > 0 && rp < rmin)
+            rmin = rp, trmin = x;
+        mm_v2 P, K;
+        points_at(&m, x, &P, &K);
+        pitch->x[i] = P.x, pitch->y[i] = P.y, prof->x[i] = K.x, prof->y[i] = K.y;
+        /* samples for the differences: 4 h0 inside a moving segment */
+        int inside = (si == 0 || si == 2) && fabs(x - near_jump(&m, x)) > 4 * h0;
+        if (inside && i % 4 == 0)
+            th[ns] = x, d1[ns] = di[1], d2[ns] = di[2], ns++;
+    }
+    /* refine the largest pressure angle and the smallest rho between samples:
+     * golden section on the neighbouring interval; the sample spacing bounds
+     * the place, the search's bracket the value */
+    double step = 2 * M_PI / (n - 1);
+    {
+        double lo = tphi - step, hi = tphi + step;
+        peak_ctx pc = {&m, -1, 0};
+        (void)pc;
+        double best = phimax;
+        for (int k = 0; k <= 64; k++) {           /* a fine scan: the peak may sit on a segment boundary */
+            double x = lo + (hi - lo) * k / 64, dk[4];
+            int sk;
+            motion(&m, x, dk, &sk);
+            best = fmax(best, fabs(pressure(&m, dk)));
+        }
+        double slope = fabs(w) > 0 ? 1 : 1;
+        (void)slope;
+        mm_res_scalar_err(res, O_PHIMAX, best, (best - phimax) + 1e-6 * best, MM_ERR_ESTIMATE);
+    }
+    if (isfinite(rmin)) {
+        /* a fine scan about the smallest sample, and both sides of every
+         * place where s'' (and with it rho) jumps; the estimate is the change
+         * of rho over one step of the scan */
+        double lo = trmin - step, hi = trmin + step, best = rmin, e = 0, prev = NAN;
+        for (int k = 0; k <= 64; k++) {
+            double x = lo + (hi - lo) * k / 64, dk[4];
+            int sk;
+            motion(&m, x, dk, &sk);
+            double rp = rho_pitch(&m, dk);
+            if (rp > 0 && rp <= best)
+                best = rp, trmin = x, e = isfinite(prev) ? fabs(rp - prev) : e;
+            prev = rp;
+        }
+        double jumps[7] = {0, m.br, m.br + m.bd, m.br + m.bd + m.bt, 2 * M_PI, 0.5 * m.br, m.br + m.bd + 0.5 * m.bt};
+        for (int k = 0; k < 7; k++)
+            for (int side = -1; side <= 1; side += 2) {
+                double x = jumps[k] + side * 1e-9, dk[4];
+                int sk;
+                motion(&m, x, dk, &sk);
+                double rp = rho_pitch(&m, dk);
+                if (rp > 0 && rp < best)
+                    best = rp, trmin = x, e = 0;
+            }
+        e += 1e-9 * best;
+        mm_res_scalar_err(res, O_RHOP, best, e, MM_ERR_ESTIMATE);
+        mm_res_scalar_err(res, O_RHOC, best - m.Rr, e, MM_ERR_ESTIMATE);
+        int under = best < m.Rr;
+        mm_res_scalar_text(res, O_UNDER, under, under ? "undercut" : "no undercut");
+        if (under)
+            mm_res_warn(res, "undercut: the pitch curve's radius of curvature falls to %.4g m near cam angle %.4g rad, "
+                             "less than the roller's %.4g m; the cam profile there would need a negative radius "
+                             "(it loops over itself) and cannot be cut: enlarge Rb, shrink Rr, or spread the rise "
+                             "over a larger angle", best, trmin, m.Rr);
+        /* rho of eq. (3) against the circle through three pitch points */
+        double d3[4];
+        int s3;
+        motion(&m, trmin, d3, &s3);
+        double rp = rho_pitch(&m, d3), R3[3], dth = 0.02 * rp / hypot(m.s0 + d3[0], d3[1] - m.e);
+        int ok = 1;
+        for (int k = 0; k < 3; k++) {
+            mm_v2 A, B, C, K, cc;
+            double hk = dth / (1 << k);
+            points_at(&m, trmin - hk, &A, &K), points_at(&m, trmin, &B, &K), points_at(&m, trmin + hk, &C, &K);
+            ok &= mm_geom_circumcircle(A, B, C, &cc, &R3[k]);
+        }
+        double ds = 0.005 * rp, rnd = 64 * DBL_EPSILON * (size + rp) * rp * rp / (ds * ds);
+        /* not across a jump of s'' (harmonic and constant acceleration):
+         * there rho itself jumps and the circle straddles the jump */
+        if (ok && s3 != 1 && s3 != 3 && fabs(trmin - near_jump(&m, trmin)) > 4 * dth)
+            mm_res_check_abs(res, "rho of the pitch curve by eq. (3) vs the circle through three of its points", R3[2],
+                             rp, 2 * fabs(R3[1] - R3[2]) + rnd);
+    }
+    if (phimax > 30 * M_PI / 180)
+        mm_res_warn(res, "the pressure angle reaches %.1f degrees (above 30): the follower is pushed sideways in its "
+                         "guide more than it is lifted", phimax * 180 / M_PI);
+    fd_ctx fc = {&m, th};
+    mm_kin_fd fd;
+    int rc = MM_OK;
+    if (ns > 0) {
+        rc = mm_kin_fd_study(res, O_FDV, "ds/dtheta", fd_pos, &fc, 1, NULL, ns, d1, 1, h0, 24, 0, &fd, err);
+        if (rc == MM_OK)
+            rc = mm_kin_fd_study(res, O_FDA, "d2s/dtheta2", fd_pos, &fc, 1, NULL, ns, d2, 2, h0, 18, 0, &fd, err);
+    }
+    if (rc != MM_OK)
+        return rc;
+
+    /* ---- the animation: the cam turning (36 frames a turn) ---- */
+    enum { NF = 36, NP = 48 };
+    double vmax = fabs(w) * fmax(vr, vt);
+    mm_kin_draw dr;
+    mm_anim *an = mm_kin_draw_start(&dr, res, NF, "cam angle", "rad", 2 * size + 2 * m.Rr);
+    mm_shape *cm = an ? mm_kin_shape(&dr, "cam", MM_SHAPE_POLYGON, 1, NP) : NULL;
+    mm_shape *pv = mm_kin_pivot(&dr, "cam centre", 0, 0);
+    mm_shape *rl = mm_kin_shape(&dr, "roller", MM_SHAPE_CIRCLE, 1, 1);
+    mm_shape *st = mm_kin_shape(&dr, "follower", MM_SHAPE_LINE, 1, 2);
+    mm_shape *gd = mm_kin_shape(&dr, "guide", MM_SHAPE_LINE, 0, 2);
+    mm_shape *va = mm_kin_arrow_shape(&dr, "v", "m/s", vmax);
+    if (!cm || !pv || !rl || !st || !gd || !va)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_v2 K[NP];
+    for (int j = 0; j < NP; j++) {
+        mm_v2 P;
+        points_at(&m, 2 * M_PI * j / NP, &P, &K[j]);
+    }
+    rl->radius = m.Rr > 0 ? m.Rr : 0.01 * size;
+    gd->style = "ground";
+    mm_kin_pt(gd, 0, 0, m.e, m.s0 + m.h + 0.4 * size), mm_kin_pt(gd, 0, 1, m.e, m.s0 + m.h + 0.9 * size);
+    for (int f = 0; f < NF; f++) {
+        double thf = 2 * M_PI * f / NF, df[4];
+        int sf;
+        an->t[f] = thf;
+        motion(&m, thf, df, &sf);
+        for (int j = 0; j < NP; j++) {
+            mm_v2 q = mm_v2_rotate(K[j], thf);            /* the cam frame turned by thf */
+            mm_kin_pt(cm, f, j, q.x, q.y);
+        }
+        double yc = m.s0 + df[0];
+        mm_kin_pt(rl, f, 0, m.e, yc);
+        mm_kin_pt(st, f, 0, m.e, yc), mm_kin_pt(st, f, 1, m.e, m.s0 + m.h + 0.9 * size);
+        mm_kin_arrow(va, f, m.e + 1.5 * rl->radius, yc, 0, w * df[1]);
+    }
+    mm_res_method(res, "closed-form motion laws; pitch curve and profile by rotation; checked by central differences", 0);
+    return mm_kin_draw_finish(&dr);
+}
+
+static const char *const references[] = {
+    "R. L. Norton, Cam Design and Manufacturing Handbook, 2nd ed., Industrial Press 2009, ch. 3 and 7",
+    "R. L. Norton, Design of Machinery, 5th ed., McGraw-Hill 2012, ch. 8", NULL,
+};
+
+const mm_exercise mm_ex_kin_cam_follower = {
+    .id = "kin-cam-follower",
+    .chapter = 2,
+    .section = "2.4.4",
+    .title = "Cam and roller follower",
+    .summary = "A disc cam lifting a roller follower: motion laws, velocity, acceleration and jerk, pressure "
+               "angle, the cam profile and its undercutting.",
+    .tags = "kinematics, mechanism, cam, follower, motion law, pressure angle, undercutting",
+    .theory = "exercises/kin/cam_follower.md",
+    .script = "exercises/kin/cam_follower.m",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};
