@@ -32,6 +32,7 @@ extern const mm_exercise mm_ex_kin_rolling_wheel;
 extern const mm_exercise mm_ex_kin_slider_crank;
 extern const mm_exercise mm_ex_kin_four_bar;
 extern const mm_exercise mm_ex_kin_cam_follower;
+extern const mm_exercise mm_ex_kin_quick_return;
 /* ==== end of 2 ==== */
 
 /* ==== 3 Statics ==== */
@@ -82,6 +83,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_kin_slider_crank,
     &mm_ex_kin_four_bar,
     &mm_ex_kin_cam_follower,
+    &mm_ex_kin_quick_return,
     /* ==== end of 2 ==== */
 
     /* ==== 3 Statics ==== */
