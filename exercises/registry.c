@@ -29,6 +29,7 @@ extern const mm_exercise mm_ex_kin_rigid_rotation;
 extern const mm_exercise mm_ex_kin_plane_motion;
 extern const mm_exercise mm_ex_kin_space_motion;
 extern const mm_exercise mm_ex_kin_rolling_wheel;
+extern const mm_exercise mm_ex_kin_mobility;
 extern const mm_exercise mm_ex_kin_slider_crank;
 extern const mm_exercise mm_ex_kin_four_bar;
 extern const mm_exercise mm_ex_kin_cam_follower;
@@ -80,6 +81,7 @@ const mm_exercise *const mm_exercises[] = {
     &mm_ex_kin_plane_motion,
     &mm_ex_kin_space_motion,
     &mm_ex_kin_rolling_wheel,
+    &mm_ex_kin_mobility,
     &mm_ex_kin_slider_crank,
     &mm_ex_kin_four_bar,
     &mm_ex_kin_cam_follower,

@@ -41,7 +41,7 @@ int mm_mech_check(const mm_mech_problem *p, const mm_mech_options *opt, mm_error
 
 mm_mech_work *mm_mech_work_alloc(int n, int m)
 {
-    if (n < 1 || n > MM_MECH_MAX_N || m < n || m > MM_MECH_MAX_M)
+    if (n < 1 || n > MM_MECH_MAX_N || m < 1 || m > MM_MECH_MAX_M)
         return NULL;
     mm_mech_work *w = calloc(1, sizeof *w);
     if (!w)
@@ -50,7 +50,7 @@ mm_mech_work *mm_mech_work_alloc(int n, int m)
     w->n = n, w->m = m;
     w->J = malloc(M * N * sizeof *w->J);
     w->F = malloc(M * sizeof *w->F);
-    w->d = malloc(M * sizeof *w->d);        /* m >= n: room for a least-squares right side */
+    w->d = malloc((M > N ? M : N) * sizeof *w->d);   /* room for a least-squares right side */
     w->LU = malloc(N * N * sizeof *w->LU);
     w->inv = malloc(N * N * sizeof *w->inv);
     w->piv = malloc(N * sizeof *w->piv);
@@ -363,6 +363,7 @@ int mm_mech_rank(const mm_mech_problem *p, mm_mech_work *w, double t, const doub
                  double *sv, int *rank, mm_error *err)
 {
     double s[MM_MECH_MAX_N];
+    assert(w && w->n == p->n && w->m == p->m);
     int rc = p->jac(q, t, w->J, p->params);
     if (rc != 0)
         return callback_failed(rc, "constraint Jacobian", err);

@@ -50,7 +50,7 @@ typedef int (*mm_mech_acc_fn)(const double *q, const double *qd, double t, doubl
 
 typedef struct mm_mech_problem {
     int n;                  /* coordinates, 1..MM_MECH_MAX_N */
-    int m;                  /* equations, n..MM_MECH_MAX_M */
+    int m;                  /* equations, n..MM_MECH_MAX_M (1..MM_MECH_MAX_M for mm_mech_rank) */
     mm_mech_fn phi;         /* eq. (1) */
     mm_mech_fn jac;         /* Phi_q */
     mm_mech_fn nu;          /* eq. (2)'s right side; NULL: 0 (no driver in time) */
@@ -95,7 +95,8 @@ void mm_mech_options_init(mm_mech_options *opt);
 int mm_mech_check(const mm_mech_problem *p, const mm_mech_options *opt, mm_error *err);
 
 /* Scratch for n coordinates and m equations; NULL when out of memory or
- * sizes outside the limits.  mm_mech_work_free(NULL) does nothing. */
+ * sizes outside the limits (m < n is allowed here, for mm_mech_rank of a
+ * mechanism without its drivers).  mm_mech_work_free(NULL) does nothing. */
 mm_mech_work *mm_mech_work_alloc(int n, int m);
 void mm_mech_work_free(mm_mech_work *w);
 

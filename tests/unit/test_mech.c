@@ -526,7 +526,7 @@ static void bad_problems_should_be_refused(void **state)
     prob = fb_problem(&p);
     prob.m = 2;
     assert_int_equal(mm_mech_check(&prob, &opt, &err), MM_ERANGE);
-    assert_null(mm_mech_work_alloc(3, 2));
+    assert_null(mm_mech_work_alloc(3, 0));
     assert_null(mm_mech_work_alloc(MM_MECH_MAX_N + 1, MM_MECH_MAX_N + 1));
     mm_mech_work_free(NULL);
     /* a four-bar that cannot close anywhere: a > b + c + d */
