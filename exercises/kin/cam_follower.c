@@ -209,9 +209,12 @@ static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error 
     fd_ctx *c = ctx;
     double d[4];
     int seg;
-    motion(c->m, c->th[i] + h, d, &seg);
+    double th = c->th[i] + h;
+    motion(c->m, th, d, &seg);
     q[0] = d[0];
-    *qerr = 8 * DBL_EPSILON * c->m->h;
+    /* the law's polynomial or trigonometric terms (up to 31 h), and theta's
+     * own rounding, reduced to a turn: s' eps (|theta| + 2 pi) */
+    *qerr = 64 * DBL_EPSILON * c->m->h + 4 * DBL_EPSILON * fabs(d[1]) * (fabs(th) + 2 * M_PI);
     return MM_OK;
 }
 
