@@ -218,6 +218,72 @@ static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error 
     return MM_OK;
 }
 
+/* the quantity whose extreme is sought: |pressure angle| (which = 0), or
+ * -rho of the pitch curve where it is convex (which = 1; -inf elsewhere) */
+typedef struct ext_ctx {
+    const cam *m;
+    int which;
+} ext_ctx;
+
+static int ext_fn(double th, double *f, void *ctx)
+{
+    const ext_ctx *c = ctx;
+    double d[4];
+    int seg;
+    motion(c->m, th, d, &seg);
+    if (c->which == 0) {
+        *f = fabs(pressure(c->m, d));
+    } else {
+        double rp = rho_pitch(c->m, d);
+        *f = rp > 0 ? -rp : -INFINITY;
+    }
+    return 0;
+}
+
+/* The largest value over the turn: a scan of 3600 cam angles, a
+ * golden-section search between the best sample's neighbours, and both
+ * sides of every place where the law's s'' jumps (rho jumps there).  *at
+ * receives the place; *err an estimate: how much the value changes over
+ * the search's final bracket, at least 1e-12 of it. */
+static double extreme(const cam *m, int which, double *at, double *err)
+{
+    enum { NS = 3600 };
+    ext_ctx c = {m, which};
+    double best = -INFINITY, f, step = 2 * M_PI / NS;
+    int kb = 0;
+    for (int k = 0; k < NS; k++) {
+        ext_fn(step * k, &f, &c);
+        if (f > best)
+            best = f, kb = k;
+    }
+    *at = step * kb, *err = 0;
+    if (!isfinite(best))
+        return best;
+    mm_opt_result r;
+    if (mm_opt_golden_max(ext_fn, &c, step * (kb - 1), step * (kb + 1), 1e-10, 200, &r, NULL) == MM_OK &&
+        r.fx > best) {
+        double fl, fr;
+        ext_fn(r.x - r.bracket, &fl, &c), ext_fn(r.x + r.bracket, &fr, &c);
+        best = r.fx, *at = r.x;
+        *err = fmax(fabs(r.fx - fl), fabs(r.fx - fr));
+    }
+    double jumps[7] = {0, m->br, m->br + m->bd, m->br + m->bd + m->bt, 2 * M_PI, 0.5 * m->br,
+                       m->br + m->bd + 0.5 * m->bt};
+    int near = 0;
+    for (int k = 0; k < 7 && which == 1; k++) {
+        near |= fabs(*at - jumps[k]) < 1e-6;
+        for (int side = -1; side <= 1; side += 2) {
+            ext_fn(jumps[k] + side * 1e-9, &f, &c);
+            if (f > best)
+                best = f, *at = jumps[k] + side * 1e-9, *err = 0, near = 1;
+        }
+    }
+    /* at a jump the extreme is a one-sided limit, reached to within the
+     * search's last step: 1e-6 of the value covers that */
+    *err = fmax(*err, (near ? 1e-6 : 1e-12) * fabs(best));
+    return best;
+}
+
 typedef struct peak_ctx {
     const cam *m;
     int k, seg;            /* which derivative, and which segment's peak */
@@ -312,50 +378,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (inside && i % 4 == 0)
             th[ns] = x, d1[ns] = di[1], d2[ns] = di[2], ns++;
     }
-    /* refine the largest pressure angle and the smallest rho between samples:
-     * golden section on the neighbouring interval; the sample spacing bounds
-     * the place, the search's bracket the value */
-    double step = 2 * M_PI / (n - 1);
-    {
-        double lo = tphi - step, hi = tphi + step;
-        peak_ctx pc = {&m, -1, 0};
-        (void)pc;
-        double best = phimax;
-        for (int k = 0; k <= 64; k++) {           /* a fine scan: the peak may sit on a segment boundary */
-            double x = lo + (hi - lo) * k / 64, dk[4];
-            int sk;
-            motion(&m, x, dk, &sk);
-            best = fmax(best, fabs(pressure(&m, dk)));
-        }
-        double slope = fabs(w) > 0 ? 1 : 1;
-        (void)slope;
-        mm_res_scalar_err(res, O_PHIMAX, best, (best - phimax) + 1e-6 * best, MM_ERR_ESTIMATE);
-    }
-    if (isfinite(rmin)) {
-        /* a fine scan about the smallest sample, and both sides of every
-         * place where s'' (and with it rho) jumps; the estimate is the change
-         * of rho over one step of the scan */
-        double lo = trmin - step, hi = trmin + step, best = rmin, e = 0, prev = NAN;
-        for (int k = 0; k <= 64; k++) {
-            double x = lo + (hi - lo) * k / 64, dk[4];
-            int sk;
-            motion(&m, x, dk, &sk);
-            double rp = rho_pitch(&m, dk);
-            if (rp > 0 && rp <= best)
-                best = rp, trmin = x, e = isfinite(prev) ? fabs(rp - prev) : e;
-            prev = rp;
-        }
-        double jumps[7] = {0, m.br, m.br + m.bd, m.br + m.bd + m.bt, 2 * M_PI, 0.5 * m.br, m.br + m.bd + 0.5 * m.bt};
-        for (int k = 0; k < 7; k++)
-            for (int side = -1; side <= 1; side += 2) {
-                double x = jumps[k] + side * 1e-9, dk[4];
-                int sk;
-                motion(&m, x, dk, &sk);
-                double rp = rho_pitch(&m, dk);
-                if (rp > 0 && rp < best)
-                    best = rp, trmin = x, e = 0;
-            }
-        e += 1e-9 * best;
+    /* the largest pressure angle and the smallest convex rho, refined */
+    double tphi2, ephi, phibest = extreme(&m, 0, &tphi2, &ephi);
+    mm_res_scalar_err(res, O_PHIMAX, phibest, ephi, MM_ERR_ESTIMATE);
+    (void)phimax, (void)tphi, (void)trmin;
+    double e, best = -extreme(&m, 1, &trmin, &e);
+    if (isfinite(best)) {
         mm_res_scalar_err(res, O_RHOP, best, e, MM_ERR_ESTIMATE);
         mm_res_scalar_err(res, O_RHOC, best - m.Rr, e, MM_ERR_ESTIMATE);
         int under = best < m.Rr;
@@ -451,7 +479,6 @@ const mm_exercise mm_ex_kin_cam_follower = {
                "angle, the cam profile and its undercutting.",
     .tags = "kinematics, mechanism, cam, follower, motion law, pressure angle, undercutting",
     .theory = "exercises/kin/cam_follower.md",
-    .script = "exercises/kin/cam_follower.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

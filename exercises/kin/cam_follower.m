@@ -17,14 +17,12 @@ switch law
     L = @(u) (u < 0.5) * [2*u^2, 4*u, 4, 0] + (u >= 0.5) * [1 - 2*(1 - u)^2, 4*(1 - u), -4, 0];
     pk = [2, 4];
 end
+b1 = beta_rise;  b2 = b1 + beta_dwell;  b3 = b2 + beta_return;
 sc = @(b) [1, 1/b, 1/b^2, 1/b^3];          % d/dtheta = (1/beta) d/du
-motion = @(th) ...
-  (th < beta_rise) * (h * L(th/beta_rise) .* sc(beta_rise)) + ...
-  (th >= beta_rise & th < beta_rise + beta_dwell) * [h 0 0 0] + ...
-  (th >= beta_rise + beta_dwell & th < beta_rise + beta_dwell + beta_return) * ...
-     ([h 0 0 0] - h * L(min(max((th - beta_rise - beta_dwell)/beta_return, 0), 1)) .* sc(beta_return));
-th = mod(theta, 2*pi);
-d = motion(th);                            % s, s', s'', s''' by the cam angle
+% s, s', s'', s''' at a cam angle th in [0, 2 pi)
+motion = @(th) (th < b1) * (h * L(th/b1) .* sc(b1)) + (th >= b1 & th < b2) * [h 0 0 0] + ...
+  (th >= b2 & th < b3) * ([h 0 0 0] - h * L(min(max((th - b2)/beta_return, 0), 1)) .* sc(beta_return));
+d = motion(theta - 2*pi*floor(theta/(2*pi)));
 out.s = d(1);
 out.v = omega * d(2);
 out.a = omega^2 * d(3);
@@ -32,16 +30,35 @@ out.jerk = omega^3 * d(4);
 out.pressure_angle = atan2(d(2) - e, s0 + d(1));          % (2)
 out.v_max = abs(omega) * pk(1) * h / min(beta_rise, beta_return);
 out.a_max = omega^2 * pk(2) * h / min(beta_rise, beta_return)^2;
-% radius of curvature of the pitch curve (3) on a fine grid of the turn
+% the pitch curve's radius of curvature (3): + where convex
 rho = @(d) -((s0 + d(1))^2 + (d(2) - e)^2)^1.5 / ((s0 + d(1))*(d(3) - s0 - d(1)) - (d(2) - e)*(2*d(2) - e));
-rmin = Inf;
-for k = 0:3599
-  dk = motion(2*pi*k/3600);
-  rk = rho(dk);
-  if rk > 0 && rk < rmin
-    rmin = rk;
+% the extremes: a scan of the turn, then golden section between the best
+% sample's neighbours (and, for rho, both sides of the law's jumps)
+pa = @(d) abs(atan2(d(2) - e, s0 + d(1)));
+fphi = @(th) pa(motion(th));
+frho = @(th) 1 ./ max(1 ./ rho(motion(th)), 0);   % rho where convex, else +Inf
+g = (sqrt(5) - 1) / 2;
+for which = 1:2
+  if which == 1, f = @(th) -fphi(th); else, f = frho; end   % minimise f
+  fb = Inf;  kb = 0;
+  for k = 0:3599
+    fk = f(2*pi*k/3600);
+    if fk < fb, fb = fk; kb = k; end
+  end
+  lo = 2*pi*(kb - 1)/3600;  hi = 2*pi*(kb + 1)/3600;
+  for it = 1:60                            % golden section
+    x1 = hi - g*(hi - lo);  x2 = lo + g*(hi - lo);
+    if f(x1) < f(x2), hi = x2; else, lo = x1; end
+  end
+  fb = min(fb, f((lo + hi)/2));
+  if which == 2
+    for jt = [0 b1 b2 b3 2*pi b1/2 b2 + beta_return/2]
+      fb = min([fb, f(jt - 1e-9), f(jt + 1e-9)]);
+    end
+    out.rho_pitch_min = fb;
+    out.rho_cam_min = fb - Rr;             % (4): negative means undercut
+    out.undercut = fb < Rr;
+  else
+    out.pressure_angle_max = -fb;
   end
 end
-out.rho_pitch_min = rmin;
-out.rho_cam_min = rmin - Rr;               % (4): negative means undercut
-out.undercut = rmin < Rr;

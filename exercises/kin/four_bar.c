@@ -55,7 +55,7 @@ static const mm_param params[] = {
 
 enum {
     O_TH3, O_TH4, O_OM3, O_OM4, O_AL3, O_AL4, O_GRASHOF, O_MU, O_MU_MIN, O_MU_MAX, O_TH_MUMIN, O_TH_MUMAX,
-    O_SWING, O_TOG1, O_TOG2, O_VP, O_AP, O_ITER,
+    O_SWING, O_TOG1, O_TOG2, O_VP, O_AP,
     O_S3, O_S4, O_SW3, O_SW4, O_SA3, O_SA4, O_SMU, O_SCOUP, O_FDV, O_FDA, O_ANIM
 };
 
@@ -79,7 +79,6 @@ static const mm_output outputs[] = {
     [O_TOG2] = MM_SCALAR("theta2_toggle2", "crank angle of the second toggle", "rad", .flags = MM_EXACT),
     [O_VP] = MM_SCALAR("v_P", "speed of the coupler point", "m/s", .flags = MM_EXACT),
     [O_AP] = MM_SCALAR("a_P", "acceleration of the coupler point", "m/s^2", .flags = MM_EXACT),
-    [O_ITER] = MM_SCALAR("newton_iterations", "Newton iterations at theta2", "", .flags = MM_EXACT),
     [O_S3] = MM_SERIES("theta3", "coupler angle", "rad", "crank angle", "rad", .figure = "angles"),
     [O_S4] = MM_SERIES("theta4", "rocker angle", "rad", "crank angle", "rad", .figure = "angles"),
     [O_SW3] = MM_SERIES("omega3", "coupler angular velocity", "rad/s", "crank angle", "rad", .figure = "angular velocities"),
@@ -202,6 +201,7 @@ typedef struct fb_class {
     int grashof;         /* s + l <= p + q (equality within 4 ulps of the sum) */
     int change_point;    /* s + l = p + q */
     int full;            /* the crank turns round */
+    int shortest;        /* 0 a, 1 b, 2 c, 3 d */
     double lo, hi;       /* else: the arc holding theta2, between toggles */
     const char *name;
 } fb_class;
@@ -219,6 +219,7 @@ static fb_class classify(const fb *m, double th2)
     }
     double excess = s + l - (sum - s - l), tol = 4 * DBL_EPSILON * sum;
     k.change_point = fabs(excess) <= tol;
+    k.shortest = is;
     k.grashof = excess <= tol;
     static const char *const grashof_names[4] = {"crank-rocker", "double rocker (Grashof)", "rocker-crank",
                                                  "double crank (drag link)"};
@@ -520,7 +521,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_mech_info info;
     if ((rc = mm_mech_position(&prob, &opt, w, th2, q, &info, err)) != MM_OK)
         goto out;
-    mm_res_scalar(res, O_ITER, info.iterations);
     double w3 = 0, w4 = 0, a3 = 0, a4 = 0;
     if (!singular)
         fb_rates(&m, th2, t3, t4, &w3, &w4, &a3, &a4);
@@ -661,7 +661,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     {
         double cand[4] = {lo, hi, 0, M_PI}, mn = INFINITY, mx = -INFINITY, tmn = 0, tmx = 0;
         for (int i = 0; i < 4; i++) {
-            double t = i < 2 ? cand[i] : lo + fmod(fmod(cand[i] - lo, 2 * M_PI) + 2 * M_PI, 2 * M_PI);
+            double t = i < 2 ? cand[i] : cand[i] + 2 * M_PI * ceil((lo - cand[i]) / (2 * M_PI));   /* first one >= lo */
             if (t > hi + 1e-12 || (k.full && i < 2))
                 continue;
             double v = mu_of(&m, t);
@@ -707,7 +707,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                 dq[nd++] = atan2(L * sin(ang), L * cos(ang) - m.d);          /* theta4 there */
             }
         }
-        double swing_lo = 0, swing_hi = 0;
         for (int i = 0; i < s.n_turn && i < 2; i++) {
             int best = 0;
             for (int c = 1; c < nd; c++)
@@ -717,13 +716,25 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             mm_res_check_abs(res, i ? "second dead centre of the rocker: located by the sweep vs crank and coupler in line"
                                     : "first dead centre of the rocker: located by the sweep vs crank and coupler in line",
                              s.t_turn[i], want, 1e-9);
-            if (i)
-                swing_hi = dq[best];
-            else
-                swing_lo = dq[best];
         }
-        if (s.n_turn == 2)
-            mm_res_scalar(res, O_SWING, fabs(mm_kin_wrap(swing_hi - swing_lo)));
+        (void)dq;
+        /* a crank-rocker's swing: theta4 where crank and coupler lie in line,
+         * stretched (|O2 C| = b + a) and folded (b - a), each on the side of
+         * B -> O4 the assembly keeps */
+        if (!k.change_point && k.shortest == 0) {
+            double th4[2];
+            for (int e = 0; e < 2; e++) {
+                double L = e ? m.b - m.a : m.b + m.a, ang = acos((L * L + m.d * m.d - m.c * m.c) / (2 * L * m.d));
+                double best = -INFINITY;
+                for (int sg = -1; sg <= 1; sg += 2) {
+                    mm_v2 C = mm_v2_polar(L, sg * ang), B = mm_v2_scale(C, (e ? -m.a : m.a) / L);
+                    double sd = side * mm_v2_cross(mm_v2_sub((mm_v2){m.d, 0}, B), mm_v2_sub(C, B));
+                    if (sd > best)
+                        best = sd, th4[e] = atan2(C.y, C.x - m.d);
+                }
+            }
+            mm_res_scalar(res, O_SWING, fabs(mm_kin_wrap(th4[0] - th4[1])));
+        }
         if (k.change_point) {
             /* all four links in line where |O4 B| = |b - c| (th2 = 0) or b + c
              * (th2 = pi); each one must be met as a sign change of det(Phi_q)
@@ -791,7 +802,6 @@ const mm_exercise mm_ex_kin_four_bar = {
                "transmission angle, coupler curve, toggles and change points.",
     .tags = "kinematics, mechanism, four-bar, Grashof, Freudenstein, transmission angle, coupler curve",
     .theory = "exercises/kin/four_bar.md",
-    .script = "exercises/kin/four_bar.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

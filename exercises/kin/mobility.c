@@ -516,7 +516,6 @@ const mm_exercise mm_ex_kin_mobility = {
                "count is right, and the overconstrained linkages where it is wrong.",
     .tags = "kinematics, mechanism, mobility, degrees of freedom, Grubler, Kutzbach, overconstrained, Bennett",
     .theory = "exercises/kin/mobility.md",
-    .script = "exercises/kin/mobility.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -41,6 +41,8 @@ if strcmp(linkage, 'bennett')
              0 sin(alv(k)) cos(alv(k)) 0; 0 0 0 1];
   end
   fprintf('the loop closes: |T1 T2 T3 T4 - I| = %.2g\n', max(max(abs(T - eye(4)))));
+  out.coordinates = 4;                     % the joint angles
+  out.constraints = 6;                     % a loop in space closes in 6 equations
   out.rank = rank(Tw);
   out.mobility = 4 - out.rank;
   out.count_wrong = out.mobility ~= out.gruebler;

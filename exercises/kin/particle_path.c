@@ -275,7 +275,6 @@ const mm_exercise mm_ex_kin_particle_path = {
                "and the error of a finite difference against its step.",
     .tags = "kinematics, particle, velocity, acceleration, numerical differentiation, Ridders",
     .theory = "exercises/kin/particle_path.md",
-    .script = "exercises/kin/particle_path.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

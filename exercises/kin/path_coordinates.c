@@ -290,7 +290,6 @@ const mm_exercise mm_ex_kin_path_coordinates = {
                "and centre of curvature, the osculating circle.",
     .tags = "kinematics, particle, tangential, normal, curvature, osculating circle",
     .theory = "exercises/kin/path_coordinates.md",
-    .script = "exercises/kin/path_coordinates.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

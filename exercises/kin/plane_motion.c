@@ -262,7 +262,6 @@ const mm_exercise mm_ex_kin_plane_motion = {
                "acceleration and the acceleration pole.",
     .tags = "kinematics, rigid body, plane motion, instantaneous centre, centrode, acceleration pole",
     .theory = "exercises/kin/plane_motion.md",
-    .script = "exercises/kin/plane_motion.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -358,7 +358,6 @@ const mm_exercise mm_ex_kin_quick_return = {
                "dead centres and the time ratio of cutting to return.",
     .tags = "kinematics, mechanism, quick return, shaper, slotted lever, time ratio",
     .theory = "exercises/kin/quick_return.md",
-    .script = "exercises/kin/quick_return.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -259,7 +259,6 @@ const mm_exercise mm_ex_kin_relative_motion = {
                "terms and the Coriolis acceleration.",
     .tags = "kinematics, moving frame, relative motion, Coriolis, transport acceleration",
     .theory = "exercises/kin/relative_motion.md",
-    .script = "exercises/kin/relative_motion.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

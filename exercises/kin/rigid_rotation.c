@@ -245,7 +245,6 @@ const mm_exercise mm_ex_kin_rigid_rotation = {
                "the tangential and normal parts, and a translation added.",
     .tags = "kinematics, rigid body, rotation, fixed axis, translation, cross product",
     .theory = "exercises/kin/rigid_rotation.md",
-    .script = "exercises/kin/rigid_rotation.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -322,7 +322,6 @@ const mm_exercise mm_ex_kin_rolling_wheel = {
                "acceleration of any point, the cycloid's curvature and length.",
     .tags = "kinematics, rigid body, rolling, cycloid, trochoid, instantaneous centre",
     .theory = "exercises/kin/rolling_wheel.md",
-    .script = "exercises/kin/rolling_wheel.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

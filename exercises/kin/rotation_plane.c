@@ -282,7 +282,6 @@ const mm_exercise mm_ex_kin_rotation_plane = {
                "and Coriolis terms, and circular motion as the special case.",
     .tags = "kinematics, particle, polar coordinates, rotation, Coriolis, centripetal",
     .theory = "exercises/kin/rotation_plane.md",
-    .script = "exercises/kin/rotation_plane.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -45,7 +45,7 @@ static const mm_param params[] = {
 
 enum {
     O_X, O_V, O_A, O_TH3, O_OM3, O_AL3, O_STROKE, O_XMAX, O_XMIN, O_PHI_OUT, O_PHI_IN, O_RATIO,
-    O_TOG1, O_TOG2, O_ITER, O_NEWTON,
+    O_TOG1, O_TOG2, O_NEWTON,
     O_SX, O_SV, O_SA, O_STH3, O_SMID, O_FDV, O_FDA, O_ANIM
 };
 
@@ -69,7 +69,6 @@ static const mm_output outputs[] = {
     [O_TOG1] = MM_SCALAR("phi_toggle1", "crank angle of the first toggle (rod square to the slide)", "rad",
                          .flags = MM_EXACT),
     [O_TOG2] = MM_SCALAR("phi_toggle2", "crank angle of the second toggle", "rad", .flags = MM_EXACT),
-    [O_ITER] = MM_SCALAR("newton_iterations", "Newton iterations at phi", "", .flags = MM_EXACT),
     [O_NEWTON] = MM_TABLE("newton", "Newton's iterates at phi from the level rod: |Phi| and the weighted step",
                           newton_cols, newton_units),
     [O_SX] = MM_SERIES("x", "slider position", "m", "crank angle", "rad", .figure = "slider position"),
@@ -404,7 +403,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_mech_info info;
     if ((rc = newton_at(&m, &prob, &opt, w, phi, q, &info, res, err)) != MM_OK)
         goto out;
-    mm_res_scalar(res, O_ITER, info.iterations);
     double tol_x = 16 * DBL_EPSILON * scale * kappa + info.err_est * m.l;
     mm_res_check_abs(res, "x at phi: Newton on eq. (1) vs closed form (2)", q[1], c.x, tol_x);
     mm_res_check_abs(res, "theta3 at phi: Newton vs closed form (2)", mm_kin_near(q[0], c.t), c.t,
@@ -595,7 +593,6 @@ const mm_exercise mm_ex_kin_slider_crank = {
                "offset and quick return, toggles of a short rod.",
     .tags = "kinematics, mechanism, slider-crank, loop closure, Newton-Raphson, dead centre",
     .theory = "exercises/kin/slider_crank.md",
-    .script = "exercises/kin/slider_crank.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -13,7 +13,20 @@ for k = 1:50
     break
   end
 end
-out.newton_iterations = k;
+s = e - r*sin(phi);
+if ~(q(2) >= r*cos(phi) - 1e-9*l) || any(~isfinite(q))
+  % that guess found the other assembly (slider left of the pin): start
+  % again from where the rod's circle meets the slide
+  xg = r*cos(phi) + sqrt(max(l^2 - s^2, 0));
+  q = [atan2(s, xg - r*cos(phi)); xg];
+  for k = 1:50
+    dq = -J(q) \ Phi(q);
+    q = q + dq;
+    if norm(dq) < 1e-13 * (1 + norm(q))
+      break
+    end
+  end
+end
 % velocities per unit crank angle: J q' = nu, nu = -dPhi/dphi      (4)
 nu = [r*sin(phi); -r*cos(phi)];
 qd = J(q) \ nu;
@@ -28,9 +41,8 @@ out.a = omega^2 * qdd(2);
 out.omega3 = omega * qd(1);
 out.alpha3 = omega^2 * qdd(1);
 % the closed form (2) as a check
-s = e - r*sin(phi);
-x_closed = r*cos(phi) + sqrt(l^2 - s^2);
-fprintf('x by Newton %.15g, closed form %.15g\n', q(2), x_closed);
+x_closed = r*cos(phi) + sqrt(max(l^2 - s^2, 0));
+fprintf('check: x by Newton %.15g, closed form %.15g\n', q(2), x_closed);
 if abs(e) + r <= l
   % dead centres (6): crank and rod in line
   out.phi_outer = asin(e/(l + r));
@@ -42,7 +54,26 @@ if abs(e) + r <= l
   beta = asin(e/(l - r)) - asin(e/(l + r));
   out.time_ratio = (pi + abs(beta)) / (pi - abs(beta));
 else
-  % toggles (8): the rod square to the slide, sin(phi) = (e -+ l)/r
-  fprintf('the crank cannot turn a full revolution: toggles where sin(phi) = %g or %g\n', ...
-          (e - l)/r, (e + l)/r);
+  % toggles (8): the rod square to the slide, sin(phi) = (e -+ l)/r; the
+  % crank rocks on the arc between the two next to phi
+  up = (e + l)/r;  dn = (e - l)/r;  base = [];
+  if up < 1, base = [base, asin(up), pi - asin(up)]; end
+  if dn > -1, base = [base, asin(dn), -pi - asin(dn)]; end
+  c = [];
+  for i = 1:numel(base)
+    for k = -3:3
+      c(end + 1) = phi + (base(i) - phi) - 2*pi*round((base(i) - phi)/(2*pi)) + 2*pi*k;
+    end
+  end
+  c = sort(c);
+  k = 1;
+  while k + 1 < numel(c) && c(k + 1) <= phi
+    k = k + 1;
+  end
+  sm = e - r*sin((c(k) + c(k + 1))/2);
+  if (l - sm)*(l + sm) < 0                % phi on the rounding edge of a gap
+    if phi - c(k) < c(k + 1) - phi, k = k - 1; else, k = k + 1; end
+  end
+  out.phi_toggle1 = c(k);
+  out.phi_toggle2 = c(k + 1);
 end

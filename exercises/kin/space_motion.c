@@ -374,7 +374,6 @@ const mm_exercise mm_ex_kin_space_motion = {
                "from their rates, the angles read back, and gimbal lock.",
     .tags = "kinematics, rigid body, rotation matrix, Euler angles, angular velocity, gimbal lock, quaternion",
     .theory = "exercises/kin/space_motion.md",
-    .script = "exercises/kin/space_motion.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

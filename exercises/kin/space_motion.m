@@ -22,13 +22,25 @@ w1 = phi_dot * B(:,1);
 al = theta_dot * cross(w1, B(:,2)) + psi_dot * cross(w1 + theta_dot*B(:,2), B(:,3));
 out.alpha_x = al(1);  out.alpha_y = al(2);  out.alpha_z = al(3);
 out.det_B = det(B);                            % +-cos(theta) or +-sin(theta)
-out.rotation_angle = acos(max(-1, min(1, (trace(R) - 1)/2)));
+% the single turn equal to R: sin from its skew part, cos from its trace
+out.rotation_angle = atan2(norm([R(3,2) - R(2,3), R(1,3) - R(3,1), R(2,1) - R(1,2)]) / 2, (trace(R) - 1) / 2);
 out.v_P = norm(cross(w, R*point(:)));
 % read the angles back (away from the lock)
 if ax(1) == ax(3)
   out.gimbal_lock = abs(sin(theta)) < 1e-8;    % proper Euler: theta = 0 or pi
+  lock = 0;
 else
   out.gimbal_lock = abs(cos(theta)) < 1e-8;    % Tait-Bryan: theta = +-pi/2
+  lock = pi/2;
+end
+% the first lock the motion meets: theta(t) = lock + k pi
+if theta_dot ~= 0
+  k = (theta - lock) / pi;
+  if theta_dot > 0, kn = floor(k) + 1; else, kn = ceil(k) - 1; end
+  tl = (lock + pi*kn - theta) / theta_dot;
+  if tl <= t_end
+    out.t_lock = tl;
+  end
 end
 if strcmp(sequence, 'zyx') && ~out.gimbal_lock
   back = [atan2(R(2,1), R(1,1)), -asin(R(3,1)), atan2(R(3,2), R(3,3))];
