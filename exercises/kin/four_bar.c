@@ -543,8 +543,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     mm_res_check_abs(res, "theta3 at theta2: Newton on eq. (1) vs Freudenstein (2)", mm_kin_near(q[0], t3), t3, tol[0]);
     mm_res_check_abs(res, "theta4 at theta2: Newton on eq. (1) vs Freudenstein (3)", mm_kin_near(q[1], t4), t4, tol[0]);
+    /* mu by the law of cosines: its cosine carries a few eps of the terms,
+     * which near 0 or pi (a toggle) move mu by up to sqrt of that */
     double mu = mu_of(&m, th2);
-    mm_res_scalar(res, O_MU, mu);
+    double dx = 4 * DBL_EPSILON * (m.a * m.a + m.d * m.d + 2 * m.a * m.d + m.b * m.b + m.c * m.c) / (2 * m.b * m.c);
+    put(res, O_MU, mu, fmin(dx / fmax(sin(mu), 1e-300), sqrt(2 * dx)));
     if (!singular) {
         put(res, O_OM3, w2 * w3, fabs(w2) * tol[1]);
         put(res, O_OM4, w2 * w4, fabs(w2) * tol[1]);
@@ -664,16 +667,21 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             double t = i < 2 ? cand[i] : cand[i] + 2 * M_PI * ceil((lo - cand[i]) / (2 * M_PI));   /* first one >= lo */
             if (t > hi + 1e-12 || (k.full && i < 2))
                 continue;
+            /* at a toggle coupler and rocker lie in line: mu is 0 or pi
+             * exactly (the law of cosines would give sqrt(eps) there) */
             double v = mu_of(&m, t);
+            if (i < 2)
+                v = v < M_PI / 2 ? 0 : M_PI;
+            double where = i < 2 ? mm_kin_wrap(t) : cand[i];       /* 0 and pi as themselves */
             if (v < mn)
-                mn = v, tmn = t;
+                mn = v, tmn = where;
             if (v > mx)
-                mx = v, tmx = t;
+                mx = v, tmx = where;
         }
         mm_res_scalar(res, O_MU_MIN, mn);
         mm_res_scalar(res, O_MU_MAX, mx);
-        mm_res_scalar(res, O_TH_MUMIN, mm_kin_wrap(tmn));
-        mm_res_scalar(res, O_TH_MUMAX, mm_kin_wrap(tmx));
+        mm_res_scalar(res, O_TH_MUMIN, tmn);
+        mm_res_scalar(res, O_TH_MUMAX, tmx);
         double dev = fmax(fabs(M_PI / 2 - mn), fabs(mx - M_PI / 2));
         if (k.full && dev > M_PI / 2 - 40 * M_PI / 180)
             mm_res_warn(res, "the transmission angle strays more than 50 degrees from 90 (%.1f to %.1f degrees): "

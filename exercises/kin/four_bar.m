@@ -84,18 +84,23 @@ mu = @(t) acos(max(-1, min(1, (b^2 + c^2 - a^2 - d^2 + 2*a*d*cos(t)) / (2*b*c)))
 out.mu = mu(theta2);
 cand = [lo hi 0 pi];  mn = Inf;  mx = -Inf;
 for i = 1:4
-  t = cand(i);
+  t = cand(i);  where = cand(i);
   if i > 2
     t = cand(i) + 2*pi*ceil((lo - cand(i)) / (2*pi));   % the first one at or after lo
   end
   if t > hi + 1e-12 || (full && i <= 2)
     continue
   end
-  if mu(t) < mn, mn = mu(t); tmn = t; end
-  if mu(t) > mx, mx = mu(t); tmx = t; end
+  v = mu(t);
+  if i <= 2                            % a toggle: coupler and rocker in line
+    v = pi * (v >= pi/2);
+    where = wrap(t);
+  end
+  if v < mn, mn = v; tmn = where; end
+  if v > mx, mx = v; tmx = where; end
 end
 out.mu_min = mn;  out.mu_max = mx;
-out.theta2_mu_min = wrap(tmn);  out.theta2_mu_max = wrap(tmx);
+out.theta2_mu_min = tmn;  out.theta2_mu_max = tmx;
 % a crank-rocker's swing: theta4 where crank and coupler lie in line
 [~, shortest] = min([a b c d]);
 if full && ~change_point && shortest == 1
