@@ -391,6 +391,7 @@ typedef struct sweep_ctx {
     mm_error *err;
     double tau;                      /* the smallest step in t */
     double range;                    /* |t_last - t_first| */
+    double cross;                    /* the longest step accepted across a sign change of det */
 } sweep_ctx;
 
 /* Newton at t from the predictor qp into q; 1 if it converged (0 if not),
@@ -438,7 +439,7 @@ static double watch_at(sweep_ctx *c, double t, const double *q)
  * could land on the other one); when it does not, the secant of g ends the
  * search.  A turning point is no singular point: no such guard there. */
 static int locate(sweep_ctx *c, int kind, double ta, const double *qa, double ga, double tb,
-                  const double *qb, double gb, double *tz, double *qz)
+                  const double *qb, double gb, double *tz, double *qz, int *jumped)
 {
     int n = c->p->n;
     double A[MM_MECH_MAX_N], B[MM_MECH_MAX_N], M[MM_MECH_MAX_N], P[MM_MECH_MAX_N];
@@ -457,8 +458,13 @@ static int locate(sweep_ctx *c, int kind, double ta, const double *qa, double ga
         int ok = corrector(c, tm, P, M, &info);
         if (ok < 0)
             return -ok;
-        if (!ok || (kind == 0 && wdist(c->p, c->o, M, P) > 0.3 * wdist(c->p, c->o, A, B) + 1e3 * c->o->xtol))
+        if (!ok)
             break;
+        if (kind == 0 && wdist(c->p, c->o, M, P) > 0.3 * wdist(c->p, c->o, A, B) + 1e3 * c->o->xtol) {
+            if (jumped)
+                *jumped = 1;
+            break;
+        }
         double g = kind == 0 ? det_at(c, tm, M) : watch_at(c, tm, M);
         if (g == 0) {
             ta = tb = tm;
@@ -533,7 +539,8 @@ int mm_mech_sweep_solve(const mm_mech_problem *p, const mm_mech_options *o, mm_m
         if (!((s->t[f] - s->t[f - 1]) * dir > 0))
             return mm_error_set(err, MM_ERANGE, "t", "the sweep's values must be strictly monotonic");
     double range = fabs(s->t[s->nt - 1] - s->t[0]);
-    sweep_ctx c = {p, o, w, s, err, s->tol_t > 0 ? s->tol_t : 1e-11 * range, range};
+    sweep_ctx c = {p, o, w, s, err, s->tol_t > 0 ? s->tol_t : 1e-11 * range, range, 0};
+    c.cross = fmax(1e-6 * range, c.tau);
     s->solved = 0, s->t_limit = s->t[0], s->n_sing = s->n_turn = 0;
     s->steps = s->newton = s->singular_frames = 0;
     s->err_est = 0;
@@ -585,13 +592,31 @@ int mm_mech_sweep_solve(const mm_mech_problem *p, const mm_mech_options *o, mm_m
                 continue;
             }
             double det_n = det_at(&c, tn, qtry), g_n = watch_at(&c, tn, qtry);
-            if (det_c != 0 && det_n != 0 && (det_c > 0) != (det_n > 0) && s->n_sing < MM_MECH_MAX_EVENTS) {
-                if ((rc = locate(&c, 0, tc, qcur, det_c, tn, qtry, det_n, &s->t_sing[s->n_sing], NULL)) != MM_OK)
+            /* det changes sign only through a singular point.  Where two
+             * assemblies pass close (near a toggle) a long step can land on
+             * the other one, whose det has the other sign: shrink the step
+             * until it either stays on this side or is short enough to be
+             * the crossing of a change point */
+            if (det_c != 0 && det_n != 0 && (det_c > 0) != (det_n > 0)) {
+                /* det changes sign only through a singular point.  Where two
+                 * assemblies pass close (near a toggle) a long step can land
+                 * on the other one, whose det has the other sign: then the
+                 * bisection's midpoints leave the chord between the ends,
+                 * and the step is halved until it stays on its own side (or
+                 * is short enough to be the crossing of a change point) */
+                double tz;
+                int jumped = 0;
+                if ((rc = locate(&c, 0, tc, qcur, det_c, tn, qtry, det_n, &tz, NULL, &jumped)) != MM_OK)
                     return rc;
-                s->n_sing++;
+                if (jumped && fabs(dt) > c.cross) {
+                    h = 0.5 * dt;
+                    continue;
+                }
+                if (s->n_sing < MM_MECH_MAX_EVENTS)
+                    s->t_sing[s->n_sing++] = tz;
             }
             if (g_c != 0 && g_n != 0 && (g_c > 0) != (g_n > 0) && s->n_turn < MM_MECH_MAX_EVENTS) {
-                if ((rc = locate(&c, 1, tc, qcur, g_c, tn, qtry, g_n, &s->t_turn[s->n_turn], &s->q_turn[s->n_turn])) !=
+                if ((rc = locate(&c, 1, tc, qcur, g_c, tn, qtry, g_n, &s->t_turn[s->n_turn], &s->q_turn[s->n_turn], NULL)) !=
                     MM_OK)
                     return rc;
                 s->n_turn++;

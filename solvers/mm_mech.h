@@ -160,13 +160,18 @@ typedef struct mm_mech_sweep {
  * t[1], t[2], ...: each frame is reached in steps whose predictor
  * extrapolates the last two or three solutions, and a step is halved when
  * Newton fails or its correction is large beside the step (a branch jump
- * would be).  When steps shrink below tol_t without a solution, the
+ * would be), or when det Phi_q changes sign over it and the bisection for
+ * the crossing leaves the chord between its ends (it landed on another
+ * assembly that passes close, not through a change point).  When steps shrink below tol_t without a solution, the
  * mechanism has stopped closing: s->solved and s->t_limit say where, and
  * the function still returns MM_OK.  Velocities and accelerations of each
  * frame are solved when qd (qdd) are given; a singular frame (exactly at a
  * change point) gets zeros and is counted.  Returns MM_ENOCONV when even
  * t[0] cannot be assembled, a callback's code, or MM_ERANGE for bad sweep
- * arguments. */
+ * arguments.  A gap where the mechanism cannot close that is narrower than
+ * a step (max_step, or the frames' spacing) can be stepped across when it
+ * closes again just beyond: keep the frames inside the range that closes,
+ * or closer together than its gaps. */
 int mm_mech_sweep_solve(const mm_mech_problem *p, const mm_mech_options *opt, mm_mech_work *w,
                         mm_mech_sweep *s, mm_error *err);
 

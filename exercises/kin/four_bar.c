@@ -202,7 +202,8 @@ typedef struct fb_class {
     int change_point;    /* s + l = p + q */
     int full;            /* the crank turns round */
     int shortest;        /* 0 a, 1 b, 2 c, 3 d */
-    double lo, hi;       /* else: the arc holding theta2, between toggles */
+    double lo, hi;       /* else: the arc holding theta2, between toggles, */
+    double gap[2];       /* and the widths of the unreachable arcs below lo and above hi */
     const char *name;
 } fb_class;
 
@@ -236,10 +237,13 @@ static fb_class classify(const fb *m, double th2)
     double w = mm_kin_wrap(th2);
     if (uhi < 1 && ulo > -1) {             /* two arcs: [Ahi, Alo] and [-Alo, -Ahi] */
         k.lo = w >= 0 ? Ahi : -Alo, k.hi = w >= 0 ? Alo : -Ahi;
+        k.gap[0] = w >= 0 ? 2 * Ahi : 2 * M_PI - 2 * Alo, k.gap[1] = w >= 0 ? 2 * M_PI - 2 * Alo : 2 * Ahi;
     } else if (ulo > -1) {                 /* one arc about 0 */
         k.lo = -Alo, k.hi = Alo;
+        k.gap[0] = k.gap[1] = 2 * M_PI - 2 * Alo;
     } else {                               /* one arc about pi */
         k.lo = Ahi, k.hi = 2 * M_PI - Ahi;
+        k.gap[0] = k.gap[1] = 2 * Ahi;
         if (w < 0)
             w += 2 * M_PI;
     }
@@ -703,7 +707,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &s, err)) != MM_OK)
             goto out;
         /* crank and coupler in line: |O2 C| = b + a or |b - a|, C on the rocker's circle */
-        double dc[4], dq[4];
+        double dc[4], dq[4], dce[4];
         int nd = 0;
         for (int e = 0; e < 2; e++) {
             double L = e ? fabs(m.b - m.a) : m.b + m.a, cs = (L * L + m.d * m.d - m.c * m.c) / (2 * L * m.d);
@@ -712,7 +716,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             for (int sg = -1; sg <= 1; sg += 2) {
                 double ang = sg * acos(cs);                                  /* the direction of O2 C */
                 dc[nd] = e && m.b < m.a ? ang : (e ? ang + M_PI : ang);      /* the crank along or against */
-                dq[nd++] = atan2(L * sin(ang), L * cos(ang) - m.d);          /* theta4 there */
+                dq[nd] = atan2(L * sin(ang), L * cos(ang) - m.d);            /* theta4 there */
+                /* acos magnifies the rounding of cs by 1 / sin(ang) */
+                dce[nd++] = 8 * DBL_EPSILON * (1 + fabs(cs)) / fmax(sqrt(1 - cs * cs), DBL_EPSILON);
             }
         }
         for (int i = 0; i < s.n_turn && i < 2; i++) {
@@ -721,9 +727,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                 if (fabs(mm_kin_wrap(s.t_turn[i] - dc[c])) < fabs(mm_kin_wrap(s.t_turn[i] - dc[best])))
                     best = c;
             double want = nd ? mm_kin_near(dc[best], s.t_turn[i]) : 0;
+            /* the sweep ends on the secant of q4' (rounding of theta2) */
             mm_res_check_abs(res, i ? "second dead centre of the rocker: located by the sweep vs crank and coupler in line"
                                     : "first dead centre of the rocker: located by the sweep vs crank and coupler in line",
-                             s.t_turn[i], want, 1e-9);
+                             s.t_turn[i], want, 64 * DBL_EPSILON * (1 + fabs(want)) + (nd ? dce[best] : 0));
         }
         (void)dq;
         /* a crank-rocker's swing: theta4 where crank and coupler lie in line,
@@ -769,13 +776,23 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     } else {
         mm_res_scalar(res, O_TOG1, lo);
         mm_res_scalar(res, O_TOG2, hi);
-        mm_res_warn(res, "%s: the crank cannot turn round; it rocks between the toggles at %.4g and %.4g rad, "
-                         "where coupler and rocker lie in line, and cannot close from %.4g to %.4g rad",
-                    k.name, lo, hi, hi, lo + 2 * M_PI);
+        if (fabs(lo + 2 * M_PI - hi - k.gap[1]) <= 1e-9)     /* one arc: the gap is the rest of the turn */
+            mm_res_warn(res, "%s: the crank cannot turn round; it rocks between the toggles at %.4g and %.4g "
+                             "rad, where coupler and rocker lie in line, and cannot close from %.4g to %.4g rad",
+                        k.name, lo, hi, hi, lo + 2 * M_PI);
+        else
+            mm_res_warn(res, "%s: the crank cannot turn round; it rocks between the toggles at %.4g and %.4g "
+                             "rad, where coupler and rocker lie in line, and cannot close from %.4g to %.4g nor "
+                             "from %.4g to %.4g rad; the arc beyond those gaps is another assembly, reached only "
+                             "by taking the linkage apart",
+                        k.name, lo, hi, hi, hi + k.gap[1], lo - k.gap[0], lo);
         for (int end = 0; end < 2; end++) {
             enum { NT = 9 };
             double t[NT], qq2[2 * NT];
-            double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + 0.05 : lo - 0.05;
+            /* past the toggle, but never past the middle of the gap: beyond it
+             * the linkage closes again, and a sweep could step across */
+            double past = fmin(0.05, 0.5 * k.gap[end]);
+            double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + past : lo - past;
             for (int i = 0; i < NT; i++)
                 t[i] = from + (to - from) * i / (NT - 1);
             assemble(&m, t[0], side, qq2);

@@ -163,8 +163,9 @@ static const unsigned char is_length[2] = {0, 1};
  * (e - l)/r <= sin phi <= (e + l)/r.  Over a turn: all of it (|e| + r <= l),
  * or arcs between toggles where sin phi = (e -+ l)/r.  The arc holding
  * phi0 into [lo, hi] (hi - lo < 2 pi), returns 1; 0 when the whole turn is
- * reachable; -1 when phi0 is not reachable. */
-static int reach(const sc *m, double phi0, double *lo, double *hi)
+ * reachable; -1 when phi0 is not reachable.  gaps (may be NULL) gets the
+ * widths of the unreachable arcs below lo and above hi. */
+static int reach(const sc *m, double phi0, double *lo, double *hi, double *gaps)
 {
     double tiny = 2 * DBL_EPSILON * m->l * m->l;
     if (fabs(m->e) + m->r <= m->l)
@@ -193,6 +194,8 @@ static int reach(const sc *m, double phi0, double *lo, double *hi)
     if (sc_disc(m, 0.5 * (c[k] + c[k + 1])) < 0)
         k += phi0 - c[k] < c[k + 1] - phi0 ? -1 : 1;
     *lo = c[k], *hi = c[k + 1];
+    if (gaps)                              /* the unreachable gaps below and above */
+        gaps[0] = k > 0 ? c[k] - c[k - 1] : 2 * M_PI, gaps[1] = k + 2 < nc ? c[k + 2] - c[k + 1] : 2 * M_PI;
     return 1;
 }
 
@@ -204,7 +207,7 @@ static int check(const mm_value *in, mm_error *err)
         return mm_error_set(err, MM_ERANGE, "e",
                             "the slide is out of the rod's reach at every crank angle: |e| must be at most "
                             "l + r = %g m; got %g m", m.l + m.r, m.e);
-    if (reach(&m, in[P_PHI].x, &lo, &hi) < 0) {
+    if (reach(&m, in[P_PHI].x, &lo, &hi, NULL) < 0) {
         double up = (m.e + m.l) / m.r, dn = (m.e - m.l) / m.r;
         return mm_error_set(err, MM_ERANGE, "phi",
                             "the linkage cannot close at phi = %g rad: the rod (l = %g m) cannot reach the "
@@ -427,8 +430,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* ---- the cycle: a full turn, or the arc the crank can reach ---- */
-    double lo = 0, hi = 2 * M_PI;
-    int partial = reach(&m, phi, &lo, &hi) == 1;
+    double lo = 0, hi = 2 * M_PI, gaps[2] = {2 * M_PI, 2 * M_PI};
+    int partial = reach(&m, phi, &lo, &hi, gaps) == 1;
     mm_series *sx = mm_res_series(res, O_SX, n), *sv = mm_res_series(res, O_SV, n);
     mm_series *sa = mm_res_series(res, O_SA, n), *st = mm_res_series(res, O_STH3, n);
     mm_series *sm = mm_res_series(res, O_SMID, n);
@@ -548,14 +551,24 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     } else {
         mm_res_scalar(res, O_TOG1, lo);
         mm_res_scalar(res, O_TOG2, hi);
-        mm_res_warn(res, "the rod is too short for the offset: the crank cannot turn a full revolution; it "
-                         "reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide) and "
-                         "cannot close from %.4g to %.4g rad", lo, hi, hi, lo + 2 * M_PI);
+        if (fabs(lo + 2 * M_PI - hi - gaps[1]) <= 1e-9)      /* one arc: the gap is the rest of the turn */
+            mm_res_warn(res, "the rod is too short for the offset: the crank cannot turn a full revolution; it "
+                             "reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide) "
+                             "and cannot close from %.4g to %.4g rad", lo, hi, hi, lo + 2 * M_PI);
+        else
+            mm_res_warn(res, "the rod is too short for the offset: the crank cannot turn a full revolution; it "
+                             "reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide) "
+                             "and cannot close from %.4g to %.4g nor from %.4g to %.4g rad; the arc beyond those "
+                             "gaps is another assembly, reached only by taking the linkage apart",
+                        lo, hi, hi, hi + gaps[1], lo - gaps[0], lo);
         /* the sweep run past each end stops where the closed form says */
         for (int end = 0; end < 2; end++) {
             enum { NT = 9 };
             double t[NT], qq[2 * NT];
-            double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + 0.05 : lo - 0.05;
+            /* past the toggle, but never past the middle of the gap: beyond it
+             * the linkage closes again, and a sweep could step across */
+            double past = fmin(0.05, 0.5 * gaps[end]);
+            double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + past : lo - past;
             for (int i = 0; i < NT; i++)
                 t[i] = from + (to - from) * i / (NT - 1);
             c = sc_closed(&m, t[0], 1);

@@ -124,6 +124,53 @@ static void slider_crank_sweep_should_match_the_closed_form(void **state)
     mm_mech_work_free(w);
 }
 
+/* A slider-crank that only just turns round (l a hair longer than |e| + r):
+ * near phi = -pi/2 the rod nearly stands square to the slide and the two
+ * assemblies (x = r cos phi +- sqrt(l^2 - s^2)) pass within 2 sqrt(...) of
+ * each other.  Frames a 24th of a turn apart once stepped across to the
+ * other one (a random draw of kin-slider-crank found it); det changes sign
+ * there, the bisection's midpoints leave the chord, and the step is cut. */
+static void a_sweep_should_not_jump_between_assemblies_that_pass_close(void **state)
+{
+    (void)state;
+    const double margins[] = {1.8e-3, 1e-4, 1e-6};
+    for (int k = 0; k < 3; k++) {
+        sc p = {2.3960861360947723, 0, -5.871475224137694, 1};
+        p.l = fabs(p.e) + p.r + margins[k] * p.r;
+        mm_mech_problem prob = {.n = 2, .m = 2, .phi = sc_phi, .jac = sc_jac, .nu = sc_nu, .gamma = sc_gamma,
+                                .is_length = sc_len, .params = &p};
+        mm_mech_options opt;
+        mm_mech_options_init(&opt);
+        opt.length = p.l;
+        mm_mech_work *w = mm_mech_work_alloc(2, 2);
+        enum { NT = 25 };
+        double po = asin(p.e / (p.l + p.r)), t[NT], q[2 * NT], qd[2 * NT];
+        for (int i = 0; i < NT; i++)
+            t[i] = po + 0.25 + 2 * M_PI * i / (NT - 1);
+        double x, v, a;
+        sc_exact(&p, t[0], &x, &v, &a);
+        q[0] = atan2(p.e - p.r * sin(t[0]), x - p.r * cos(t[0])), q[1] = x;
+        mm_mech_sweep s = {.nt = NT, .t = t, .q = q, .qd = qd, .watch = 1};
+        mm_error err;
+        assert_int_equal(mm_mech_sweep_solve(&prob, &opt, w, &s, &err), MM_OK);
+        assert_int_equal(s.solved, NT);
+        double ex = 0;
+        for (int i = 0; i < NT; i++) {
+            sc_exact(&p, t[i], &x, &v, &a);
+            ex = fmax(ex, fabs(q[2 * i + 1] - x));
+        }
+        /* the same assembly on every frame: rounding of x (~ 10 m), the
+         * other assembly being at least 2 sqrt(l^2 - (|e| + r)^2) away */
+        check_abs(ex, 0, 1e-9, "x on the assembly it started on, every frame");
+        assert_int_equal(s.n_sing, 0);
+        assert_int_equal(s.n_turn, 2);
+        /* from po + 0.25: the inner dead centre first, then the outer a turn on */
+        check_abs(s.t_turn[0], M_PI + asin(p.e / (p.l - p.r)), 1e-9, "inner dead centre");
+        check_abs(s.t_turn[1], po + 2 * M_PI, 1e-9, "outer dead centre");
+        mm_mech_work_free(w);
+    }
+}
+
 static void newton_should_converge_quadratically_with_an_honest_error_estimate(void **state)
 {
     (void)state;
@@ -543,6 +590,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(slider_crank_sweep_should_match_the_closed_form),
+        cmocka_unit_test(a_sweep_should_not_jump_between_assemblies_that_pass_close),
         cmocka_unit_test(newton_should_converge_quadratically_with_an_honest_error_estimate),
         cmocka_unit_test(four_bar_should_match_freudenstein_and_differences_of_its_positions),
         cmocka_unit_test(a_non_grashof_four_bar_should_stop_at_its_toggle),
