@@ -356,14 +356,16 @@ static void coupler(const fb *m, double px, double py, double th2, const double 
 
 typedef struct fd_ctx {
     const fb_run *r;
-    const double *th, *q;
+    const double *th, *q;         /* the samples and their solved positions, */
+    const double *qd, *qdd;       /* velocities and accelerations per unit crank rate */
 } fd_ctx;
 
 static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     fd_ctx *c = ctx;
     mm_mech_info info;
-    memcpy(q, c->q + 2 * i, 2 * sizeof *q);
+    for (int j = 0; j < 2; j++)          /* Taylor's guess: Newton stays on the assembly */
+        q[j] = c->q[2 * i + j] + h * c->qd[2 * i + j] + 0.5 * h * h * c->qdd[2 * i + j];
     int rc = mm_mech_position(c->r->prob, c->r->opt, c->r->w, c->th[i] + h, q, &info, err);
     *qerr = info.err_est;
     return rc;
@@ -642,9 +644,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         int ns = 0;
         double derr1 = 0, derr2 = 0;
         for (int i = 0; i < n; i += 4) {
-            /* keep 4 h0 from toggles and from where the Jacobian is near singular */
-            if (fb_disc(&m, x[i] - 4 * h0) <= 0 || fb_disc(&m, x[i] + 4 * h0) <= 0 ||
-                fabs(sin(Q[2 * i + 1] - Q[2 * i])) < 0.05)
+            /* keep 4 h0 inside the arc between the toggles (a gap narrower
+             * than 8 h0 would hide between two tests of its ends) and away
+             * from where the Jacobian is near singular */
+            if ((!k.full && (x[i] - 4 * h0 < lo || x[i] + 4 * h0 > hi)) || fabs(sin(Q[2 * i + 1] - Q[2 * i])) < 0.05)
                 continue;
             th[ns] = x[i];
             memcpy(qs + 2 * ns, Q + 2 * i, 2 * sizeof *qs);
@@ -655,7 +658,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             derr1 = fmax(derr1, ft[1]), derr2 = fmax(derr2, ft[2]);
             ns++;
         }
-        fd_ctx fc = {&run, th, qs};
+        fd_ctx fc = {&run, th, qs, d1, d2};
         mm_kin_fd fd;
         if (ns > 0 && ((rc = mm_kin_fd_study(res, O_FDV, "dtheta/dtheta2", fd_pos, &fc, 2, NULL, ns, d1, 1, h0, 24,
                                              derr1, &fd, err)) != MM_OK ||

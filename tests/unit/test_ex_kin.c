@@ -204,6 +204,28 @@ static void four_bar_crank_exactly_at_a_toggle_should_leave_out_the_rates(void *
     expect_400("kin-four-bar", "a=2&b=0.3&c=0.4&d=0.35", "a", "cannot close");
 }
 
+/* Two random draws that once failed: a four-bar whose crank's two arcs are
+ * split by a gap of 0.03 rad (|O4 B| dips just under |b - c| about
+ * theta2 = 0), where the differences of the positions stepped into the gap
+ * (422), and a slider-crank that only just turns round (l - |e| - r =
+ * 0.0018 m), whose dead-centre sweep stepped onto the other assembly near
+ * the near-toggle.  Every check of both must pass. */
+static void linkages_near_their_limits_should_keep_to_their_arc_and_assembly(void **state)
+{
+    (void)state;
+    cJSON *doc = solve_ok("kin-four-bar", "a=0.1739779128451147&b=0.08439686717299758&c=0.07173806426135312&"
+                                          "d=0.185803615458478&theta2=-13.308386829754298&branch=crossed&points=187");
+    assert_true(has_warning(doc, "nor from"));              /* two gaps: the other arc is another assembly */
+    double lo = scalar(doc, "theta2_toggle1"), hi = scalar(doc, "theta2_toggle2");
+    assert_true(lo < -13.308386829754298 && -13.308386829754298 < hi);
+    cJSON_Delete(doc);
+    doc = solve_ok("kin-slider-crank", "r=2.3960861360947723&l=8.269339326557484&e=-5.871475224137694&"
+                                       "omega=1338.5087796546413&phi=-38.37183340849997&points=527");
+    const double r = 2.3960861360947723, l = 8.269339326557484, e = -5.871475224137694;
+    check_abs(scalar(doc, "phi_inner"), M_PI + asin(e / (l - r)), 0, "inner dead centre, eq. (6)");
+    cJSON_Delete(doc);
+}
+
 /* ---- the rest of the chapter ------------------------------------------------------------------ */
 
 static void a_cam_with_a_roller_too_large_should_warn_of_undercutting(void **state)
@@ -352,6 +374,7 @@ int main(void)
         cmocka_unit_test(four_bar_at_the_grashof_boundary_should_be_a_change_point),
         cmocka_unit_test(a_parallelogram_should_move_as_one_and_stop_at_its_change_points),
         cmocka_unit_test(four_bar_crank_exactly_at_a_toggle_should_leave_out_the_rates),
+        cmocka_unit_test(linkages_near_their_limits_should_keep_to_their_arc_and_assembly),
         cmocka_unit_test(a_cam_with_a_roller_too_large_should_warn_of_undercutting),
         cmocka_unit_test(the_rolling_wheel_contact_point_should_be_exactly_at_rest),
         cmocka_unit_test(mobility_should_catch_the_overconstrained_linkages),
