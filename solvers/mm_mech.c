@@ -554,6 +554,9 @@ int mm_mech_sweep_solve(const mm_mech_problem *p, const mm_mech_options *o, mm_m
         return mm_error_set(err, MM_ENOCONV, "q", "the mechanism cannot be assembled at the start of the sweep");
     memcpy(s->q, w->qa, (size_t)n * sizeof *s->q);
     s->err_est = info.err_est;
+    double err_c = info.err_est, rcond_c = info.rcond;   /* of the newest solution in the history */
+    double qlast[MM_MECH_MAX_N];                         /* the newest solution */
+    memcpy(qlast, w->qa, (size_t)n * sizeof *qlast);
 
     /* history: hq[0] oldest .. hq[have-1] newest */
     double *hq[3] = {w->qa, w->qb, w->qc}, ht[3] = {s->t[0], 0, 0};
@@ -577,10 +580,14 @@ int mm_mech_sweep_solve(const mm_mech_problem *p, const mm_mech_options *o, mm_m
             if (ok < 0)
                 return -ok;
             const double *qcur = hq[have - 1];
+            const double ta = ht[have - 1];            /* tc, or before a point left out */
             double corr = wdist(p, o, qtry, w->qp), move = wdist(p, o, qtry, qcur);
             /* a branch jump moves far from the predictor; the first step has
-             * no predictor and may move at most a tenth of a radian */
-            int accept = ok && (have > 1 ? corr <= 0.3 * move + 1e3 * o->xtol : move <= 0.1);
+             * no predictor and may move at most a tenth of a radian.  The
+             * solutions' own errors (large on a frame exactly at a change
+             * point, where Newton stops at the rounding floor) are no jump */
+            double slack = 1e3 * o->xtol + 2 * (err_c + info.err_est);
+            int accept = ok && (have > 1 ? corr <= 0.3 * move + slack : move <= 0.1 + slack);
             if (!accept) {
                 h = 0.5 * dt;
                 if (fabs(h) < c.tau) {                    /* it stops closing here */
@@ -606,7 +613,7 @@ int mm_mech_sweep_solve(const mm_mech_problem *p, const mm_mech_options *o, mm_m
                  * is short enough to be the crossing of a change point) */
                 double tz;
                 int jumped = 0;
-                if ((rc = locate(&c, 0, tc, qcur, det_c, tn, qtry, det_n, &tz, NULL, &jumped)) != MM_OK)
+                if ((rc = locate(&c, 0, ta, qcur, det_c, tn, qtry, det_n, &tz, NULL, &jumped)) != MM_OK)
                     return rc;
                 if (jumped && fabs(dt) > c.cross) {
                     h = 0.5 * dt;
@@ -616,23 +623,32 @@ int mm_mech_sweep_solve(const mm_mech_problem *p, const mm_mech_options *o, mm_m
                     s->t_sing[s->n_sing++] = tz;
             }
             if (g_c != 0 && g_n != 0 && (g_c > 0) != (g_n > 0) && s->n_turn < MM_MECH_MAX_EVENTS) {
-                if ((rc = locate(&c, 1, tc, qcur, g_c, tn, qtry, g_n, &s->t_turn[s->n_turn], &s->q_turn[s->n_turn], NULL)) !=
+                if ((rc = locate(&c, 1, ta, qcur, g_c, tn, qtry, g_n, &s->t_turn[s->n_turn], &s->q_turn[s->n_turn], NULL)) !=
                     MM_OK)
                     return rc;
                 s->n_turn++;
             }
-            /* shift the history */
-            if (have == 3) {
-                double *old = hq[0];
-                hq[0] = hq[1], hq[1] = hq[2], hq[2] = old;
-                ht[0] = ht[1], ht[1] = ht[2];
-                have = 2;
-            }
-            memcpy(hq[have], qtry, (size_t)n * sizeof *qtry);
-            ht[have] = tn;
-            have++;
-            tc = tn, det_c = det_n, g_c = g_n != 0 ? g_n : g_c;
             s->err_est = fmax(s->err_est, info.err_est);
+            memcpy(qlast, qtry, (size_t)n * sizeof *qtry);
+            tc = tn;
+            /* a solution (almost) on a change point, where the Jacobian's
+             * condition has collapsed beside the last one's, is good to
+             * draw but says nothing of which way the motion goes on: the
+             * predictor keeps to the solutions before it */
+            if (!(have > 1 && info.rcond < 1e-3 * rcond_c)) {
+                /* shift the history */
+                if (have == 3) {
+                    double *old = hq[0];
+                    hq[0] = hq[1], hq[1] = hq[2], hq[2] = old;
+                    ht[0] = ht[1], ht[1] = ht[2];
+                    have = 2;
+                }
+                memcpy(hq[have], qtry, (size_t)n * sizeof *qtry);
+                ht[have] = tn;
+                have++;
+                det_c = det_n, g_c = g_n != 0 ? g_n : g_c;
+                err_c = info.err_est, rcond_c = info.rcond;
+            }
             h = 2 * dt;                                   /* grow back after a cut */
             if (fabs(h) > fabs(s->t[f] - s->t[f - 1]))
                 h = s->t[f] - s->t[f - 1];
@@ -640,7 +656,7 @@ int mm_mech_sweep_solve(const mm_mech_problem *p, const mm_mech_options *o, mm_m
                 h = s->t[f + 1] - s->t[f];
         }
         if (!stopped)
-            memcpy(s->q + (size_t)f * (size_t)n, hq[have - 1], (size_t)n * sizeof *s->q);
+            memcpy(s->q + (size_t)f * (size_t)n, qlast, (size_t)n * sizeof *s->q);
     }
     if (!stopped) {
         s->solved = s->nt;

@@ -162,7 +162,10 @@ typedef struct mm_mech_sweep {
  * Newton fails or its correction is large beside the step (a branch jump
  * would be), or when det Phi_q changes sign over it and the bisection for
  * the crossing leaves the chord between its ends (it landed on another
- * assembly that passes close, not through a change point).  When steps shrink below tol_t without a solution, the
+ * assembly that passes close, not through a change point).  A solution
+ * whose Jacobian's condition has collapsed beside the last one's (a frame
+ * on a change point) is kept for its frame but not for the predictor,
+ * which would not know which way to go on from it.  When steps shrink below tol_t without a solution, the
  * mechanism has stopped closing: s->solved and s->t_limit say where, and
  * the function still returns MM_OK.  Velocities and accelerations of each
  * frame are solved when qd (qdd) are given; a singular frame (exactly at a

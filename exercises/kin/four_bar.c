@@ -113,11 +113,13 @@ static double fb_disc(const fb *m, double th2)
 }
 
 /* Freudenstein: K1 cos th4 - K2 cos th2 + K3 = cos(th2 - th4), solved by the
- * half-angle substitution t = tan(th4/2): A t^2 + B t + C = 0, eq. (2); the
- * root that puts C left (side = +1) or right (-1) of B -> O4; then th3 from
- * the loop, eq. (3).  *err (may be NULL) receives a first-order bound of
- * the rounding of th3 and th4: the coefficients' and the square root's,
- * carried through th4 = 2 atan2(-B -+ sqrt(B^2 - 4AC), 2A). */
+ * half-angle substitution t = tan(th4/2): A t^2 + B t + C = 0, eq. (2),
+ * in the stable form t = Q/A or C/Q with Q = -(B + sign(B) sqrt(B^2 - 4AC))/2
+ * (A = 0 when a + c = b + d... e.g. a rhombus: then one root is th4 = pi);
+ * the root that puts C left (side = +1) or right (-1) of B -> O4; then th3
+ * from the loop, eq. (3).  *err (may be NULL) receives a first-order bound
+ * of the rounding of th3 and th4: the coefficients' and the square root's,
+ * carried through th4 = 2 atan2(y, x). */
 static void freudenstein(const fb *m, double th2, int side, double *th3, double *th4, double *err)
 {
     double a = m->a, b = m->b, c = m->c, d = m->d, c2 = cos(th2), s2 = sin(th2);
@@ -125,13 +127,21 @@ static void freudenstein(const fb *m, double th2, int side, double *th3, double 
     double A = c2 - K1 - K2 * c2 + K3, B = -2 * s2, C = K1 - (K2 + 1) * c2 + K3;
     double disc = B * B - 4 * A * C, big = B * B + 4 * fabs(A * C);
     double r = disc > 8 * DBL_EPSILON * big ? sqrt(disc) : 0;      /* a double root within rounding */
-    double Bx = a * c2, By = a * s2, best = -INFINITY, y = 0, x = 2 * A;
+    double Q = -0.5 * (B + copysign(r, B));
+    /* the two roots as (y, x) with t = y / x; a double root at B = r = 0 */
+    double ys[2] = {Q, C}, xs[2] = {A, Q};
+    if (Q == 0)
+        ys[1] = -B, xs[1] = 2 * A;
+    double Bx = a * c2, By = a * s2, best = -INFINITY, y = 0, x = 1;
+    int kb = 0;
     for (int k = 0; k < 2; k++) {
-        double yk = -B + (k ? r : -r), t4 = 2 * atan2(yk, x);
+        if (ys[k] == 0 && xs[k] == 0)
+            continue;
+        double t4 = 2 * atan2(ys[k], xs[k]);
         double Cx = d + c * cos(t4), Cy = c * sin(t4);
         double side_k = side * ((d - Bx) * (Cy - By) + By * (Cx - Bx));   /* cross(O4 - B, C - B) */
         if (side_k > best)
-            best = side_k, *th4 = t4, y = yk;
+            best = side_k, *th4 = t4, y = ys[k], x = xs[k], kb = k;
     }
     double Cx = d + c * cos(*th4), Cy = c * sin(*th4);
     *th3 = mm_kin_wrap(atan2(Cy - By, Cx - Bx));
@@ -141,7 +151,10 @@ static void freudenstein(const fb *m, double th2, int side, double *th3, double 
         double dB = 2 * DBL_EPSILON * fabs(B), dA = 4 * DBL_EPSILON * MA, dC = 4 * DBL_EPSILON * MC;
         double ddisc = 4 * DBL_EPSILON * big + 2 * fabs(B) * dB + 4 * (fabs(A) * dC + fabs(C) * dA);
         double dr = r > 0 ? ddisc / (2 * r) : sqrt(ddisc);
-        double dy = dB + dr, dx = 2 * dA;
+        double dQ = 0.5 * (dB + dr) + DBL_EPSILON * fabs(Q);
+        double dy = kb == 0 ? dQ : dC, dx = kb == 0 ? dA : dQ;
+        if (Q == 0 && kb == 1)
+            dy = dB + dr, dx = 2 * dA;
         double e4 = 2 * (fabs(x) * dy + fabs(y) * dx) / (x * x + y * y) + 4 * DBL_EPSILON;
         *err = e4 * fmax(1, c / b) + 4 * DBL_EPSILON;                 /* th3 moves with C */
     }
@@ -474,7 +487,7 @@ static int animate(const fb_run *r, const fb_class *k, int side, double w2, doub
  * its size (or 1e-15 absolute), else printed with that bound as estimate */
 static void put(mm_result *res, int o, double v, double bound)
 {
-    mm_scalar *s = mm_res_scalar(res, o, v);
+    mm_scalar *s = mm_res_scalar(res, o, v + 0.0);                    /* no -0 */
     if (bound > 1e-12 * fabs(v) && bound > 1e-15) {
         s->exact = 0;
         s->error = bound;
@@ -619,8 +632,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         frame_tol(&m, fq, fv, fa, newton_err(&m, fq, 0) + (near1 ? ge : he), tol);
         track(&e3, mm_kin_near(qi[0], f3), f3, tol[0]);
         track(&e4, mm_kin_near(qi[1], f4), f4, tol[0]);
-        track(&ew, QD[2 * i + (fabs(QD[2 * i] - v3) < fabs(QD[2 * i + 1] - v4))], fabs(QD[2 * i] - v3) < fabs(QD[2 * i + 1] - v4) ? v4 : v3, tol[1]);
-        track(&ea, QDD[2 * i + (fabs(QDD[2 * i] - c3) < fabs(QDD[2 * i + 1] - c4))], fabs(QDD[2 * i] - c3) < fabs(QDD[2 * i + 1] - c4) ? c4 : c3, tol[2]);
+        /* a frame exactly at a change point has no rates (the sweep leaves
+         * zeros there: B moves, so omega3 = omega4 = 0 cannot happen else) */
+        int sing = (QD[2 * i] == 0 && QD[2 * i + 1] == 0) || !isfinite(v3 + v4 + c3 + c4);
+        if (!sing) {
+            track(&ew, QD[2 * i + (fabs(QD[2 * i] - v3) < fabs(QD[2 * i + 1] - v4))],
+                  fabs(QD[2 * i] - v3) < fabs(QD[2 * i + 1] - v4) ? v4 : v3, tol[1]);
+            track(&ea, QDD[2 * i + (fabs(QDD[2 * i] - c3) < fabs(QDD[2 * i + 1] - c4))],
+                  fabs(QDD[2 * i] - c3) < fabs(QDD[2 * i + 1] - c4) ? c4 : c3, tol[2]);
+        }
         track(&emu, mu_q, mu_of(&m, x[i]), 2 * tol[0] + 8 * DBL_EPSILON / fmax(sin(mu_q), 1e-300));
     }
     mm_res_check_abs(res, "sweep: theta3 vs Freudenstein, the frame nearest its bound (the assembly kept)", e3.got, e3.ref, e3.tol);
@@ -758,8 +778,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
              * (th2 = pi); each one must be met as a sign change of det(Phi_q)
              * by the sweep, whose frames miss them (0.123 + k pi/24): bisected
              * to 1e-5 of the turn and a parabola through det (measured within
-             * 5e-11; det's sign is lost within ~sqrt(eps) of the crossing) */
+             * 5e-11; det's sign is lost within ~sqrt(eps) of the crossing).
+             * The angles there carry eps S / (min(b, c) |sin mu|) of rounding,
+             * |sin mu| ~ 1e-5 of the turn away: links of very unequal lengths
+             * move the zero by that much */
             double tol_g = 4 * DBL_EPSILON * S;
+            double tol_cp = 1e-9 + 4 * DBL_EPSILON * S / (fmin(m.b, m.c) * 1e-5 * 2 * M_PI);
             double want[2] = {fabs(fabs(m.d - m.a) - fabs(m.b - m.c)) <= tol_g ? 0 : -1,
                               fabs(m.b + m.c - m.d - m.a) <= tol_g ? M_PI : -1};
             for (int e = 0; e < 2; e++) {
@@ -770,7 +794,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                     if (fabs(s.t_sing[i] - cp) < fabs(got - cp))
                         got = s.t_sing[i];
                 mm_res_check_abs(res, "change point: located by the sweep (det = 0) vs all links in line",
-                                 isfinite(got) ? got : t[NT - 1], cp, 1e-9);
+                                 isfinite(got) ? got : t[NT - 1], cp, tol_cp);
             }
             mm_res_warn(res, "s + l = p + q: a change point. Where all four links lie in line the open and crossed "
                              "assemblies meet; the motion shown carries straight on through them, and past such a "

@@ -226,6 +226,30 @@ static void linkages_near_their_limits_should_keep_to_their_arc_and_assembly(voi
     cJSON_Delete(doc);
 }
 
+/* All four links equal (a rhombus): Freudenstein's quadratic loses its
+ * leading coefficient (A = 0, one root at theta4 = pi), and the two
+ * assemblies are the parallelogram (theta3 = 0, theta4 = theta2) and the
+ * kite folded onto the frame (C on O2: theta4 = pi, theta3 = theta2 + pi).
+ * And a parallelogram of links 1000 : 1 whose frame grid lands exactly on
+ * its change point theta2 = pi (points = 721): the sweep must carry on
+ * along the parallelogram, not stop there (both were 422 in make bench). */
+static void a_rhombus_should_take_both_its_assemblies(void **state)
+{
+    (void)state;
+    cJSON *doc = solve_ok("kin-four-bar", "a=1&b=1&c=1&d=1&theta2=1");
+    check_abs(scalar(doc, "theta3"), 0, 1e-12, "the parallelogram keeps its coupler level");
+    check_abs(scalar(doc, "theta4"), 1, 1e-12, "and its rocker parallel to the crank");
+    check_abs(scalar(doc, "omega3"), 0, 1e-9, "a coupler that translates");
+    cJSON_Delete(doc);
+    doc = solve_ok("kin-four-bar", "a=1&b=1&c=1&d=1&theta2=1&branch=crossed");
+    check_abs(fabs(scalar(doc, "theta4")), M_PI, 1e-12, "the kite: the rocker folded back onto the frame");
+    check_abs(scalar(doc, "theta3"), 1 - M_PI, 1e-12, "C on O2: the coupler points back along the crank");
+    cJSON_Delete(doc);
+    doc = solve_ok("kin-four-bar", "a=10&b=0.01&c=10&d=0.01&theta2=-100&points=721");
+    assert_true(has_warning(doc, "change point"));
+    cJSON_Delete(doc);
+}
+
 /* ---- the rest of the chapter ------------------------------------------------------------------ */
 
 static void a_cam_with_a_roller_too_large_should_warn_of_undercutting(void **state)
@@ -375,6 +399,7 @@ int main(void)
         cmocka_unit_test(a_parallelogram_should_move_as_one_and_stop_at_its_change_points),
         cmocka_unit_test(four_bar_crank_exactly_at_a_toggle_should_leave_out_the_rates),
         cmocka_unit_test(linkages_near_their_limits_should_keep_to_their_arc_and_assembly),
+        cmocka_unit_test(a_rhombus_should_take_both_its_assemblies),
         cmocka_unit_test(a_cam_with_a_roller_too_large_should_warn_of_undercutting),
         cmocka_unit_test(the_rolling_wheel_contact_point_should_be_exactly_at_rest),
         cmocka_unit_test(mobility_should_catch_the_overconstrained_linkages),

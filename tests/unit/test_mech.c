@@ -371,6 +371,30 @@ static void a_parallelogram_should_stay_a_parallelogram_through_the_change_point
     assert_int_equal(s.n_sing, 2);
     check_abs(s.t_sing[0], M_PI, 1e-9, "the change point at pi");
     check_abs(s.t_sing[1], 2 * M_PI, 1e-9, "and at 2 pi");
+
+    /* a frame exactly on the change point, links 1000 : 1 (make bench found
+     * it): Newton stops there at the rounding floor, and the solution says
+     * nothing of which way the motion goes on; the predictor must keep to
+     * the frames before it, or the next steps land on the other assembly
+     * and the sweep stalls */
+    fb big = {10, 0.01, 10, 0.01};
+    prob = fb_problem(&big);
+    for (int i = 0; i < NT; i++)
+        t[i] = M_PI / 2 + M_PI * i / (NT - 1);
+    t[(NT - 1) / 2] = M_PI;
+    q[0] = t[0], q[1] = 0.02, q[2] = t[0] + 0.02;
+    mm_mech_sweep s2 = {.nt = NT, .t = t, .q = q, .qd = qd, .watch = -1};
+    assert_int_equal(mm_mech_sweep_solve(&prob, &opt, w, &s2, NULL), MM_OK);
+    assert_int_equal(s2.solved, NT);
+    worst = 0;
+    for (int i = 0; i < NT; i++)
+        if (i != (NT - 1) / 2) {
+            worst = fmax(worst, fabs(remainder(q[3 * i + 1], 2 * M_PI)));
+            worst = fmax(worst, fabs(remainder(q[3 * i + 2] - t[i], 2 * M_PI)));
+        }
+    /* the frames next to pi are pi/72 from it: cond ~ a / (b |sin|) ~ 2e4 */
+    check_abs(worst, 0, 1e-10, "a parallelogram on both sides of the frame on the change point");
+    assert_int_equal(s2.n_sing, 1);
     mm_mech_work_free(w);
 }
 
