@@ -47,7 +47,8 @@ K1 = d/a;  K2 = d/c;  K3 = (a^2 - b^2 + c^2 + d^2) / (2*a*c);
 A = cos(theta2) - K1 - K2*cos(theta2) + K3;
 Bq = -2*sin(theta2);
 Cq = K1 - (K2 + 1)*cos(theta2) + K3;
-t4 = wrap(2*atan2(-Bq + [-1 1]*sqrt(max(Bq^2 - 4*A*Cq, 0)), 2*A));
+Q = -(Bq + (2*(Bq >= 0) - 1)*sqrt(max(Bq^2 - 4*A*Cq, 0))) / 2;   % stable: t = Q/A or Cq/Q
+t4 = wrap(2*atan2([Q Cq], [A Q]));
 fprintf('check: theta4 by Newton %.15g; the roots of Freudenstein %.15g %.15g\n', out.theta4, t4);
 % Grashof: shortest + longest <= the other two
 Ls = sort([a b c d]);  tol = 4*eps*sum(Ls);
