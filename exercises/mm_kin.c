@@ -303,3 +303,40 @@ double mm_kin_near(double x, double ref)
 {
     return ref + remainder(x - ref, 2 * M_PI);
 }
+
+/* ---- mobility ---- */
+
+/* the joints table from "name:kind:freedom,..." */
+int mm_kin_joints_table(mm_result *res, int out, const char *spec, mm_error *err)
+{
+    int rows = 1;
+    for (const char *c = spec; *c; c++)
+        rows += *c == ',';
+    mm_table *t = mm_res_table(res, out, rows);
+    char *copy = mm_res_strdup(res, spec);
+    if (!t || !copy)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    char *save = NULL;
+    int r = 0;
+    for (char *tok = strtok_r(copy, ",", &save); tok && r < rows; tok = strtok_r(NULL, ",", &save), r++) {
+        char *k = strchr(tok, ':'), *f = k ? strchr(k + 1, ':') : NULL;
+        if (!k || !f)
+            return mm_error_set(err, MM_EINTERNAL, "", "bad joint list");
+        *k = *f = '\0';
+        t->text[3 * r] = tok, t->text[3 * r + 1] = k + 1;
+        t->cell[3 * r + 2] = f[1] - '0';
+    }
+    return MM_OK;
+}
+
+/* the rank decision: zero singular values at rounding, the others clear */
+void mm_kin_rank_checks(mm_result *res, const double *sv, int k, int rank, int m, int n)
+{
+    double zero = (m > n ? m : n) * DBL_EPSILON * sv[0];
+    if (rank < k)
+        mm_res_check_abs(res, "largest singular value counted as zero: at rounding (max(m,n) eps sigma_1 x 64)",
+                         sv[rank], 0, 64 * zero);
+    if (rank > 0)
+        mm_res_check_abs(res, "smallest singular value counted as non-zero: well clear of rounding (>= 1e-6 sigma_1)",
+                         fmin(sv[rank - 1], 1e-6 * sv[0]), 1e-6 * sv[0], 0);
+}

@@ -145,4 +145,13 @@ double mm_kin_wrap(double x);
 /* x unwrapped to lie within pi of ref. */
 double mm_kin_near(double x, double ref);
 
+/* a table (output out; columns joint, kind, freedom) from a spec
+ * "name:kind:f,name:kind:f,..." (f one digit) */
+int mm_kin_joints_table(mm_result *res, int out, const char *spec, mm_error *err);
+
+/* checks of a rank decision from the singular values sv[0..k-1] of an
+ * m x n matrix: the largest one counted as zero is at rounding, the
+ * smallest one counted as non-zero is clear of it */
+void mm_kin_rank_checks(mm_result *res, const double *sv, int k, int rank, int m, int n);
+
 #endif

@@ -396,3 +396,23 @@ int mm_geom_polygon(const double *xy, int n, mm_geom_polygon_props *p, mm_error 
     p->Ixy = s * Sxy / 24 - p->area * xc * yc;
     return MM_OK;
 }
+
+/* ---- Denavit-Hartenberg frames ---- */
+
+void mm_geom_dh(double th, double a, double al, double T[12])
+{
+    double c = cos(th), s = sin(th), ca = cos(al), sa = sin(al);
+    double M[12] = {c, -s * ca, s * sa, a * c, s, c * ca, -c * sa, a * s, 0, sa, ca, 0};
+    memcpy(T, M, sizeof M);
+}
+
+void mm_geom_frame_mul(const double A[12], const double B[12], double C[12])
+{
+    double T[12];
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 4; j++)
+            T[4 * i + j] = A[4 * i] * B[j] + A[4 * i + 1] * B[4 + j] + A[4 * i + 2] * B[8 + j];
+        T[4 * i + 3] += A[4 * i + 3];
+    }
+    memcpy(C, T, sizeof T);
+}

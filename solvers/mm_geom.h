@@ -222,4 +222,11 @@ typedef struct mm_geom_polygon_props {
  * is zero.  Self-intersection is not detected (check it beforehand). */
 int mm_geom_polygon(const double *xy, int n, mm_geom_polygon_props *p, mm_error *err);
 
+/* The standard Denavit-Hartenberg transform of a joint angle th, link
+ * length a and twist al: Rz(th) Tx(a) Rx(al) as [R | p], row-major 3 x 4. */
+void mm_geom_dh(double th, double a, double al, double T[12]);
+
+/* C = A B for transforms [R | p] stored row-major 3 x 4; C may alias A or B. */
+void mm_geom_frame_mul(const double A[12], const double B[12], double C[12]);
+
 #endif

@@ -23,6 +23,7 @@
 #include <float.h>
 #include <math.h>
 
+#include "mm_cam.h"
 #include "mm_geom.h"
 #include "mm_kin.h"
 #include "mm_opt.h"
@@ -82,108 +83,7 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the cam turning, the roller follower rising and falling, its velocity"),
 };
 
-typedef struct cam {
-    int law;
-    double h, br, bd, bt, Rb, Rr, e, s0;
-} cam;
-
-/* a rise of 1 over u in [0, 1]: the law and its derivatives by u, eq. (1) */
-static void rise(int law, double u, double d[4])
-{
-    double c, sn;
-    switch (law) {
-    case 0:                                                  /* cycloidal */
-        c = cos(2 * M_PI * u), sn = sin(2 * M_PI * u);
-        d[0] = u - sn / (2 * M_PI), d[1] = 1 - c, d[2] = 2 * M_PI * sn, d[3] = 4 * M_PI * M_PI * c;
-        break;
-    case 1:                                                  /* harmonic */
-        c = cos(M_PI * u), sn = sin(M_PI * u);
-        d[0] = 0.5 * (1 - c), d[1] = 0.5 * M_PI * sn, d[2] = 0.5 * M_PI * M_PI * c, d[3] = -0.5 * M_PI * M_PI * M_PI * sn;
-        break;
-    case 2:                                                  /* 3-4-5 polynomial */
-        d[0] = u * u * u * (10 - 15 * u + 6 * u * u), d[1] = 30 * u * u * (1 - 2 * u + u * u);
-        d[2] = 60 * u * (1 - 3 * u + 2 * u * u), d[3] = 60 * (1 - 6 * u + 6 * u * u);
-        break;
-    default:                                                 /* constant acceleration */
-        if (u < 0.5)
-            d[0] = 2 * u * u, d[1] = 4 * u, d[2] = 4, d[3] = 0;
-        else
-            d[0] = 1 - 2 * (1 - u) * (1 - u), d[1] = 4 * (1 - u), d[2] = -4, d[3] = 0;
-    }
-}
-
-/* the peaks of |d1| and |d2| of a rise of 1 over u in [0, 1] */
-static void peaks(int law, double *p1, double *p2)
-{
-    static const double P1[4] = {2, M_PI / 2, 1.875, 2};
-    static const double P2[4] = {2 * M_PI, M_PI * M_PI / 2, 5.773502691896257645, 4};   /* 10 sqrt(3) / 3 */
-    *p1 = P1[law], *p2 = P2[law];
-}
-
-/* s and its derivatives by theta over the whole turn; *seg = 0 rise, 1 top
- * dwell, 2 return, 3 bottom dwell */
-static void motion(const cam *m, double theta, double d[4], int *seg)
-{
-    double th = theta - 2 * M_PI * floor(theta / (2 * M_PI)), r[4];
-    double b1 = m->br, b2 = b1 + m->bd, b3 = b2 + m->bt;
-    if (th < b1) {
-        rise(m->law, th / m->br, r);
-        for (int k = 0; k < 4; k++)
-            d[k] = m->h * r[k] / pow(m->br, k);
-        *seg = 0;
-    } else if (th < b2) {
-        d[0] = m->h, d[1] = d[2] = d[3] = 0, *seg = 1;
-    } else if (th < b3) {
-        rise(m->law, (th - b2) / m->bt, r);                 /* the return mirrors a rise */
-        d[0] = m->h * (1 - r[0]);
-        for (int k = 1; k < 4; k++)
-            d[k] = -m->h * r[k] / pow(m->bt, k);
-        *seg = 2;
-    } else {
-        d[0] = d[1] = d[2] = d[3] = 0, *seg = 3;
-    }
-}
-
-/* the pressure angle, eq. (2), and the pitch curve's radius of curvature,
- * eq. (3) (positive where the curve is convex, seen from outside) */
-static double pressure(const cam *m, const double *d)
-{
-    return atan2(d[1] - m->e, m->s0 + d[0]);
-}
-
-static double rho_pitch(const cam *m, const double *d)
-{
-    double y = m->s0 + d[0], tx = y, ty = d[1] - m->e;          /* tau = c' - k x c */
-    double wx = 2 * d[1] - m->e, wy = d[2] - y;                  /* tau' - k x tau */
-    double t = hypot(tx, ty), cr = tx * wy - ty * wx;
-    return cr != 0 ? -t * t * t / cr : INFINITY;
-}
-
-/* the roller centre (pitch point) and the contact point, in the cam's frame */
-static void points_at(const cam *m, double theta, mm_v2 *P, mm_v2 *K)
-{
-    double d[4];
-    int seg;
-    motion(m, theta, d, &seg);
-    mm_v2 C = {m->e, m->s0 + d[0]}, n = {m->e - d[1], m->s0 + d[0]};          /* normal, away from the cam */
-    mm_v2 Kf = mm_v2_sub(C, mm_v2_scale(n, m->Rr / mm_v2_norm(n)));
-    *P = mm_v2_rotate(C, -theta);
-    *K = mm_v2_rotate(Kf, -theta);
-}
-
-/* the nearest place to th where the law's derivatives jump: the ends of
- * the segments (a turn included), and the middle of a constant-acceleration
- * rise or return */
-static double near_jump(const cam *m, double th)
-{
-    double b[7] = {0, m->br, m->br + m->bd, m->br + m->bd + m->bt, 2 * M_PI,
-                   m->law == 3 ? 0.5 * m->br : 0, m->law == 3 ? m->br + m->bd + 0.5 * m->bt : 0};
-    double best = b[0];
-    for (int k = 1; k < 7; k++)
-        if (fabs(th - b[k]) < fabs(th - best))
-            best = b[k];
-    return best;
-}
+typedef mm_cam cam;
 
 static int check(const mm_value *in, mm_error *err)
 {
@@ -210,7 +110,7 @@ static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error 
     double d[4];
     int seg;
     double th = c->th[i] + h;
-    motion(c->m, th, d, &seg);
+    mm_cam_motion(c->m, th, d, &seg);
     q[0] = d[0];
     /* the law's polynomial or trigonometric terms (up to 31 h), and theta's
      * own rounding, reduced to a turn: s' eps (|theta| + 2 pi) */
@@ -230,11 +130,11 @@ static int ext_fn(double th, double *f, void *ctx)
     const ext_ctx *c = ctx;
     double d[4];
     int seg;
-    motion(c->m, th, d, &seg);
+    mm_cam_motion(c->m, th, d, &seg);
     if (c->which == 0) {
-        *f = fabs(pressure(c->m, d));
+        *f = fabs(mm_cam_pressure(c->m, d));
     } else {
-        double rp = rho_pitch(c->m, d);
+        double rp = mm_cam_rho_pitch(c->m, d);
         *f = rp > 0 ? -rp : -INFINITY;
     }
     return 0;
@@ -294,7 +194,7 @@ static int peak_fn(double th, double *f, void *ctx)
     peak_ctx *c = ctx;
     double d[4];
     int seg;
-    motion(c->m, th, d, &seg);
+    mm_cam_motion(c->m, th, d, &seg);
     *f = seg == c->seg ? fabs(d[c->k]) : 0;
     return 0;
 }
@@ -309,16 +209,16 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- at theta ---- */
     double d[4];
     int seg;
-    motion(&m, theta, d, &seg);
+    mm_cam_motion(&m, theta, d, &seg);
     mm_res_scalar(res, O_S, d[0]);
     mm_res_scalar(res, O_V, w * d[1]);
     mm_res_scalar(res, O_A, w * w * d[2]);
     mm_res_scalar(res, O_J, w * w * w * d[3]);
-    mm_res_scalar(res, O_PHI, pressure(&m, d));
+    mm_res_scalar(res, O_PHI, mm_cam_pressure(&m, d));
     /* the peaks: closed forms of the rise and the return, against a
      * golden-section search of each law over its segment */
     double p1, p2;
-    peaks(m.law, &p1, &p2);
+    mm_cam_peaks(m.law, &p1, &p2);
     double vr = p1 * m.h / m.br, vt = p1 * m.h / m.bt, ar = p2 * m.h / (m.br * m.br), at = p2 * m.h / (m.bt * m.bt);
     mm_res_scalar(res, O_VMAX, fabs(w) * fmax(vr, vt));
     mm_res_scalar(res, O_AMAX, w * w * fmax(ar, at));
@@ -360,21 +260,21 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     for (int i = 0; i < n; i++) {
         double x = ser[0]->x[i], di[4];
         int si;
-        motion(&m, x, di, &si);
+        mm_cam_motion(&m, x, di, &si);
         for (int k = 1; k < 5; k++)
             ser[k]->x[i] = x;
         ser[0]->y[i] = di[0], ser[1]->y[i] = w * di[1], ser[2]->y[i] = w * w * di[2], ser[3]->y[i] = w * w * w * di[3];
-        double phi = pressure(&m, di), rp = rho_pitch(&m, di);
+        double phi = mm_cam_pressure(&m, di), rp = mm_cam_rho_pitch(&m, di);
         ser[4]->y[i] = phi;
         if (fabs(phi) > phimax)
             phimax = fabs(phi), tphi = x;
         if (rp > 0 && rp < rmin)
             rmin = rp, trmin = x;
         mm_v2 P, K;
-        points_at(&m, x, &P, &K);
+        mm_cam_points(&m, x, &P, &K);
         pitch->x[i] = P.x, pitch->y[i] = P.y, prof->x[i] = K.x, prof->y[i] = K.y;
         /* samples for the differences: 4 h0 inside a moving segment */
-        int inside = (si == 0 || si == 2) && fabs(x - near_jump(&m, x)) > 4 * h0;
+        int inside = (si == 0 || si == 2) && fabs(x - mm_cam_near_jump(&m, x)) > 4 * h0;
         if (inside && i % 4 == 0)
             th[ns] = x, d1[ns] = di[1], d2[ns] = di[2], ns++;
     }
@@ -396,19 +296,19 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         /* rho of eq. (3) against the circle through three pitch points */
         double d3[4];
         int s3;
-        motion(&m, trmin, d3, &s3);
-        double rp = rho_pitch(&m, d3), R3[3], dth = 0.02 * rp / hypot(m.s0 + d3[0], d3[1] - m.e);
+        mm_cam_motion(&m, trmin, d3, &s3);
+        double rp = mm_cam_rho_pitch(&m, d3), R3[3], dth = 0.02 * rp / hypot(m.s0 + d3[0], d3[1] - m.e);
         int ok = 1;
         for (int k = 0; k < 3; k++) {
             mm_v2 A, B, C, K, cc;
             double hk = dth / (1 << k);
-            points_at(&m, trmin - hk, &A, &K), points_at(&m, trmin, &B, &K), points_at(&m, trmin + hk, &C, &K);
+            mm_cam_points(&m, trmin - hk, &A, &K), mm_cam_points(&m, trmin, &B, &K), mm_cam_points(&m, trmin + hk, &C, &K);
             ok &= mm_geom_circumcircle(A, B, C, &cc, &R3[k]);
         }
         double ds = 0.005 * rp, rnd = 64 * DBL_EPSILON * (size + rp) * rp * rp / (ds * ds);
         /* not across a jump of s'' (harmonic and constant acceleration):
          * there rho itself jumps and the circle straddles the jump */
-        if (ok && s3 != 1 && s3 != 3 && fabs(trmin - near_jump(&m, trmin)) > 4 * dth)
+        if (ok && s3 != 1 && s3 != 3 && fabs(trmin - mm_cam_near_jump(&m, trmin)) > 4 * dth)
             mm_res_check_abs(res, "rho of the pitch curve by eq. (3) vs the circle through three of its points", R3[2],
                              rp, 2 * fabs(R3[1] - R3[2]) + rnd);
     }
@@ -442,7 +342,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_v2 K[NP];
     for (int j = 0; j < NP; j++) {
         mm_v2 P;
-        points_at(&m, 2 * M_PI * j / NP, &P, &K[j]);
+        mm_cam_points(&m, 2 * M_PI * j / NP, &P, &K[j]);
     }
     rl->radius = m.Rr > 0 ? m.Rr : 0.01 * size;
     gd->style = "ground";
@@ -451,7 +351,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double thf = 2 * M_PI * f / NF, df[4];
         int sf;
         an->t[f] = thf;
-        motion(&m, thf, df, &sf);
+        mm_cam_motion(&m, thf, df, &sf);
         for (int j = 0; j < NP; j++) {
             mm_v2 q = mm_v2_rotate(K[j], thf);            /* the cam frame turned by thf */
             mm_kin_pt(cm, f, j, q.x, q.y);

@@ -33,6 +33,7 @@
 #include "mm_geom.h"
 #include "mm_kin.h"
 #include "mm_linalg.h"
+#include "mm_linkage.h"
 #include "mm_mech.h"
 
 enum { P_LINKAGE, P_LINKS, P_J1, P_J2 };
@@ -196,89 +197,13 @@ static int jac_fn(const double *q, double t, double *J, void *ctx)
     return 0;
 }
 
-/* ---- the Bennett linkage: four revolutes, standard Denavit-Hartenberg ------------------------- */
-
-static const double BA = 0.3, BAL = M_PI / 3, BBE = M_PI / 4;      /* a, alpha; b from sin(alpha)/a = sin(beta)/b */
-
-static void dh(double th, double a, double al, double T[12])      /* [R | p], row-major 3 x 4 */
-{
-    double c = cos(th), s = sin(th), ca = cos(al), sa = sin(al);
-    double M[12] = {c, -s * ca, s * sa, a * c, s, c * ca, -c * sa, a * s, 0, sa, ca, 0};
-    memcpy(T, M, sizeof M);
-}
-
-static void tmul(const double A[12], const double B[12], double C[12])
-{
-    double T[12];
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 4; j++)
-            T[4 * i + j] = A[4 * i] * B[j] + A[4 * i + 1] * B[4 + j] + A[4 * i + 2] * B[8 + j];
-        T[4 * i + 3] += A[4 * i + 3];
-    }
-    memcpy(C, T, sizeof T);
-}
-
-/* the frames of the four joints at th1: origins o[k], axes z[k]; the loop's
- * closing error |T1 T2 T3 T4 - I| into *gap */
-static void bennett(double th1, mm_v3 o[4], mm_v3 z[4], double *gap)
-{
-    double b = BA * sin(BBE) / sin(BAL), K = sin(0.5 * (BBE + BAL)) / sin(0.5 * (BBE - BAL));
-    double th2 = 2 * atan(K / tan(0.5 * th1));                      /* Bennett: tan(th1/2) tan(th2/2) = K */
-    double ths[4] = {th1, th2, -th1, -th2}, as[4] = {BA, b, BA, b}, als[4] = {BAL, BBE, BAL, BBE};
-    double T[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}, Ti[12];
-    for (int k = 0; k < 4; k++) {
-        o[k] = (mm_v3){T[3], T[7], T[11]};
-        z[k] = (mm_v3){T[2], T[6], T[10]};
-        dh(ths[k], as[k], als[k], Ti);
-        tmul(T, Ti, T);
-    }
-    double e = 0;
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            e = fmax(e, fabs(T[4 * i + j] - (i == j)));
-    *gap = e;
-}
+/* the Bennett linkage (mm_linkage_bennett): a, alpha of links 1 and 3; b from sin(alpha)/a = sin(beta)/b */
+static const double BA = 0.3, BAL = M_PI / 3, BBE = M_PI / 4;
 
 static void view(mm_v3 p, double *x, double *y)
 {
     *x = (p.y - p.x) * M_SQRT1_2;
     *y = (2 * p.z - p.x - p.y) / sqrt(6.0);
-}
-
-/* ---- the answer --------------------------------------------------------------------------------- */
-
-static int joints_table(mm_result *res, const char *spec, mm_error *err)
-{
-    int rows = 1;
-    for (const char *c = spec; *c; c++)
-        rows += *c == ',';
-    mm_table *t = mm_res_table(res, O_PAIRS, rows);
-    char *copy = mm_res_strdup(res, spec);
-    if (!t || !copy)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    char *save = NULL;
-    int r = 0;
-    for (char *tok = strtok_r(copy, ",", &save); tok && r < rows; tok = strtok_r(NULL, ",", &save), r++) {
-        char *k = strchr(tok, ':'), *f = k ? strchr(k + 1, ':') : NULL;
-        if (!k || !f)
-            return mm_error_set(err, MM_EINTERNAL, "", "bad joint list");
-        *k = *f = '\0';
-        t->text[3 * r] = tok, t->text[3 * r + 1] = k + 1;
-        t->cell[3 * r + 2] = f[1] - '0';
-    }
-    return MM_OK;
-}
-
-/* the rank decision: zero singular values at rounding, the others clear */
-static void rank_checks(mm_result *res, const double *sv, int k, int rank, int m, int n)
-{
-    double zero = (m > n ? m : n) * DBL_EPSILON * sv[0];
-    if (rank < k)
-        mm_res_check_abs(res, "largest singular value counted as zero: at rounding (max(m,n) eps sigma_1 x 64)",
-                         sv[rank], 0, 64 * zero);
-    if (rank > 0)
-        mm_res_check_abs(res, "smallest singular value counted as non-zero: well clear of rounding (>= 1e-6 sigma_1)",
-                         fmin(sv[rank - 1], 1e-6 * sv[0]), 1e-6 * sv[0], 0);
 }
 
 static int planar(const preset *s, mm_result *res, mm_error *err)
@@ -310,13 +235,13 @@ static int planar(const preset *s, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_NQ, n), mm_res_scalar(res, O_NC, nc), mm_res_scalar(res, O_RANK, rank);
     mm_res_scalar_text(res, O_OVER, M != gk, s->note);
     mm_res_check_abs(res, "Grubler-Kutzbach count (1) vs coordinates minus constraint equations", gk, n - nc, 0);
-    rank_checks(res, sv, k, rank, nc, n);
+    mm_kin_rank_checks(res, sv, k, rank, nc, n);
     mm_series *ss = mm_res_series(res, O_SV, k);
     if (!ss)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int i = 0; i < k; i++)
         ss->x[i] = i + 1, ss->y[i] = fmax(sv[i], 1e-300);
-    if ((rc = joints_table(res, s->joints, err)) != MM_OK)
+    if ((rc = mm_kin_joints_table(res, O_PAIRS, s->joints, err)) != MM_OK)
         return rc;
     if (M != gk)
         mm_res_warn(res, "%s", s->note);
@@ -417,7 +342,7 @@ static int spatial_bennett(mm_result *res, mm_error *err)
      * combinations summing to zero, so M = joints - rank */
     mm_v3 o[4], z[4];
     double gap, S[24], sv[4];
-    bennett(1.0, o, z, &gap);
+    mm_linkage_bennett(BA, BAL, BBE, 1.0, o, z, &gap);
     for (int k = 0; k < 4; k++) {
         mm_v3 m = mm_v3_cross(o[k], z[k]);
         double col[6] = {z[k].x, z[k].y, z[k].z, m.x, m.y, m.z};
@@ -440,9 +365,9 @@ static int spatial_bennett(mm_result *res, mm_error *err)
                        "(Bennett 1903)";
     mm_res_scalar_text(res, O_OVER, M != gk, note);
     mm_res_warn(res, "%s", note);
-    rank_checks(res, sv, 4, rank, 6, 4);
+    mm_kin_rank_checks(res, sv, 4, rank, 6, 4);
     mm_series *ss = mm_res_series(res, O_SV, 4);
-    if (!ss || joints_table(res, "1:revolute:1,2:revolute:1,3:revolute:1,4:revolute:1", err) != MM_OK)
+    if (!ss || mm_kin_joints_table(res, O_PAIRS, "1:revolute:1,2:revolute:1,3:revolute:1,4:revolute:1", err) != MM_OK)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int k = 0; k < 4; k++)
         ss->x[k] = k + 1, ss->y[k] = fmax(sv[k], 1e-300);
@@ -460,7 +385,7 @@ static int spatial_bennett(mm_result *res, mm_error *err)
     for (int f = 0; f < NF; f++) {
         double th1 = 0.05 + (2 * M_PI - 0.1) * f / (NF - 1), g;   /* th1 = 0 folds the loop flat */
         an->t[f] = th1;
-        bennett(th1, o, z, &g);
+        mm_linkage_bennett(BA, BAL, BBE, th1, o, z, &g);
         worst = fmax(worst, g);
         for (int k = 0; k < 4; k++) {
             double x, y, x1, y1;

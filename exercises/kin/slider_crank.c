@@ -25,6 +25,8 @@
 
 #include "mm_geom.h"
 #include "mm_kin.h"
+#include "mm_kin_linkage.h"
+#include "mm_linkage.h"
 #include "mm_mech.h"
 
 enum { P_R, P_L, P_E, P_OMEGA, P_PHI, P_POINTS };
@@ -84,120 +86,8 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the crank, the rod and the slider over the cycle, with the slider's velocity and acceleration"),
 };
 
-typedef struct sc {
-    double r, l, e;
-} sc;
-
-/* ---- the closed form, eqs. (2)-(3): side = +1 (slider right of A) or -1 ---- */
-
-typedef struct sc_pos {
-    double x, x1, x2;         /* x and its derivatives by phi */
-    double t, t1, t2;         /* theta3 and its derivatives by phi */
-    double R;                 /* l cos theta3: the rod's run along the slide */
-} sc_pos;
-
-static double sc_disc(const sc *m, double phi)
-{
-    double s = m->e - m->r * sin(phi);
-    return (m->l - s) * (m->l + s);        /* l^2 - s^2 as a product: keeps its digits at a toggle */
-}
-
-static sc_pos sc_closed(const sc *m, double phi, int side)
-{
-    double s = m->e - m->r * sin(phi), s1 = -m->r * cos(phi), s2 = m->r * sin(phi);
-    double D = sc_disc(m, phi), tiny = 2 * DBL_EPSILON * m->l * m->l;
-    double R = D > tiny ? side * sqrt(D) : 0;         /* within rounding of a toggle: at it */
-    sc_pos p = {.R = R};
-    p.x = m->r * cos(phi) + R;
-    p.t = atan2(s, R);
-    if (R != 0) {
-        double R1 = -s * s1 / R, R2 = -(s1 * s1 + s * s2) / R - s * s * s1 * s1 / (R * R * R);
-        p.x1 = -m->r * sin(phi) + R1;
-        p.x2 = -m->r * cos(phi) + R2;
-        p.t1 = s1 / R;
-        p.t2 = (s2 + s * p.t1 * p.t1) / R;
-    }
-    return p;
-}
-
-/* ---- the constraint equations (1) for mm_mech: q = (theta3, x), t = phi ---- */
-
-static int phi_fn(const double *q, double t, double *F, void *ctx)
-{
-    const sc *m = ctx;
-    F[0] = m->r * cos(t) + m->l * cos(q[0]) - q[1];
-    F[1] = m->r * sin(t) + m->l * sin(q[0]) - m->e;
-    return 0;
-}
-
-static int jac_fn(const double *q, double t, double *J, void *ctx)
-{
-    (void)t;
-    const sc *m = ctx;
-    J[0] = -m->l * sin(q[0]), J[1] = -1;
-    J[2] = m->l * cos(q[0]), J[3] = 0;
-    return 0;
-}
-
-static int nu_fn(const double *q, double t, double *nu, void *ctx)   /* eq. (4): -Phi_phi */
-{
-    (void)q;
-    const sc *m = ctx;
-    nu[0] = m->r * sin(t), nu[1] = -m->r * cos(t);
-    return 0;
-}
-
-static int gamma_fn(const double *q, const double *qd, double t, double *g, void *ctx)   /* eq. (5) */
-{
-    const sc *m = ctx;
-    g[0] = m->r * cos(t) + m->l * cos(q[0]) * qd[0] * qd[0];
-    g[1] = m->r * sin(t) + m->l * sin(q[0]) * qd[0] * qd[0];
-    return 0;
-}
-
-static const unsigned char is_length[2] = {0, 1};
-
-/* ---- the range the crank can reach -------------------------------------------------- */
-
-/* The crank can be at phi when |e - r sin phi| <= l, i.e. when
- * (e - l)/r <= sin phi <= (e + l)/r.  Over a turn: all of it (|e| + r <= l),
- * or arcs between toggles where sin phi = (e -+ l)/r.  The arc holding
- * phi0 into [lo, hi] (hi - lo < 2 pi), returns 1; 0 when the whole turn is
- * reachable; -1 when phi0 is not reachable.  gaps (may be NULL) gets the
- * widths of the unreachable arcs below lo and above hi. */
-static int reach(const sc *m, double phi0, double *lo, double *hi, double *gaps)
-{
-    double tiny = 2 * DBL_EPSILON * m->l * m->l;
-    if (fabs(m->e) + m->r <= m->l)
-        return 0;
-    if (sc_disc(m, phi0) < -tiny)
-        return -1;
-    double up = (m->e + m->l) / m->r, dn = (m->e - m->l) / m->r;
-    double base[4], c[32] = {0};
-    int nb = 0, nc = 0;
-    if (up < 1)
-        base[nb++] = asin(up), base[nb++] = M_PI - asin(up);
-    if (dn > -1)
-        base[nb++] = asin(dn), base[nb++] = -M_PI - asin(dn);
-    for (int i = 0; i < nb; i++)           /* every toggle within two turns of phi0, sorted */
-        for (int k = -3; k <= 3; k++) {
-            double v = phi0 + remainder(base[i] - phi0, 2 * M_PI) + 2 * M_PI * k;
-            int j = nc++;
-            while (j > 0 && c[j - 1] > v)
-                c[j] = c[j - 1], j--;
-            c[j] = v;
-        }
-    int k = 0;
-    while (k + 2 < nc && c[k + 1] <= phi0)
-        k++;
-    /* phi0 on the rounding edge of a gap: take the arc on its reachable side */
-    if (sc_disc(m, 0.5 * (c[k] + c[k + 1])) < 0)
-        k += phi0 - c[k] < c[k + 1] - phi0 ? -1 : 1;
-    *lo = c[k], *hi = c[k + 1];
-    if (gaps)                              /* the unreachable gaps below and above */
-        gaps[0] = k > 0 ? c[k] - c[k - 1] : 2 * M_PI, gaps[1] = k + 2 < nc ? c[k + 2] - c[k + 1] : 2 * M_PI;
-    return 1;
-}
+typedef mm_slider_crank sc;
+typedef mm_sc_pos sc_pos;
 
 static int check(const mm_value *in, mm_error *err)
 {
@@ -207,7 +97,7 @@ static int check(const mm_value *in, mm_error *err)
         return mm_error_set(err, MM_ERANGE, "e",
                             "the slide is out of the rod's reach at every crank angle: |e| must be at most "
                             "l + r = %g m; got %g m", m.l + m.r, m.e);
-    if (reach(&m, in[P_PHI].x, &lo, &hi, NULL) < 0) {
+    if (mm_linkage_sc_reach(&m, in[P_PHI].x, &lo, &hi, NULL) < 0) {
         double up = (m.e + m.l) / m.r, dn = (m.e - m.l) / m.r;
         return mm_error_set(err, MM_ERANGE, "phi",
                             "the linkage cannot close at phi = %g rad: the rod (l = %g m) cannot reach the "
@@ -215,27 +105,6 @@ static int check(const mm_value *in, mm_error *err)
                             fmax(dn, -1), fmin(up, 1));
     }
     return MM_OK;
-}
-
-/* ---- finite differences of the Newton positions --------------------------------------------- */
-
-typedef struct fd_ctx {
-    const mm_mech_problem *p;
-    const mm_mech_options *o;
-    mm_mech_work *w;
-    const double *phi, *q;        /* the samples and their solved positions, */
-    const double *qd, *qdd;       /* velocities and accelerations per unit crank rate */
-} fd_ctx;
-
-static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
-{
-    fd_ctx *c = ctx;
-    mm_mech_info info;
-    for (int j = 0; j < 2; j++)          /* Taylor's guess: Newton stays on the assembly */
-        q[j] = c->q[2 * i + j] + h * c->qd[2 * i + j] + 0.5 * h * h * c->qdd[2 * i + j];
-    int rc = mm_mech_position(c->p, c->o, c->w, c->phi[i] + h, q, &info, err);
-    *qerr = info.err_est;
-    return rc;
 }
 
 /* ---- Newton at phi, iterate by iterate ---------------------------------------------- */
@@ -264,7 +133,7 @@ static int newton_at(const sc *m, const mm_mech_problem *prob, mm_mech_options *
             opt->max_iter = k;
             rc = mm_mech_position(prob, opt, w, phi, q, info, NULL);
             double F[2];
-            phi_fn(q, phi, F, (void *)m);
+            prob->phi(q, phi, F, prob->params);
             rows[k - 1][0] = fmax(fabs(F[0]), fabs(F[1]));
             rows[k - 1][1] = fmax(fabs(q[0] - prev[0]), fabs(q[1] - prev[1]) / m->l);
             memcpy(prev, q, sizeof prev);
@@ -304,83 +173,13 @@ static void put(mm_result *res, int o, double v, double scale, double kappa, int
     }
 }
 
-static int animate(const sc *m, double omega, int partial, double lo, double hi, const mm_mech_problem *prob,
-                   const mm_mech_options *opt, mm_mech_work *w, mm_result *res, mm_error *err)
-{
-    /* full turn: 72 frames; partial: out on the right-hand assembly and back
-     * on the other one through the toggles, 36 frames each way */
-    enum { NF = 72 };
-    double phis[NF], q[2 * NF], qd[2 * NF], qdd[2 * NF];
-    int half = NF / 2;
-    for (int side = 0; side < (partial ? 2 : 1); side++) {
-        int nf = partial ? half : NF, off = side * half;
-        double t[NF];
-        double a0 = lo + 1e-9 * (hi - lo), a1 = hi - 1e-9 * (hi - lo);    /* off the double roots */
-        for (int f = 0; f < nf; f++)
-            t[f] = partial ? (side ? a1 - (a1 - a0) * f / (nf - 1) : a0 + (a1 - a0) * f / (nf - 1))
-                           : 2 * M_PI * f / NF;
-        sc_pos g = sc_closed(m, t[0], side ? -1 : 1);     /* the assembly to start from */
-        double *qq = q + 2 * off;
-        qq[0] = g.t, qq[1] = g.x;
-        mm_mech_sweep s = {.nt = nf, .t = t, .q = qq, .qd = qd + 2 * off, .qdd = qdd + 2 * off, .watch = -1};
-        int rc = mm_mech_sweep_solve(prob, opt, w, &s, err);
-        if (rc != MM_OK)
-            return rc;
-        for (int f = s.solved; f < nf; f++) {              /* rounding at a toggle end: hold the last */
-            memcpy(qq + 2 * f, qq + 2 * (s.solved - 1), 2 * sizeof *qq);
-            memset(qd + 2 * (off + f), 0, 2 * sizeof *qd);
-            memset(qdd + 2 * (off + f), 0, 2 * sizeof *qdd);
-        }
-        memcpy(phis + off, t, (size_t)nf * sizeof *t);
-    }
-    double xmax = -INFINITY, xmin = INFINITY, vmax = 0, amax = 0;
-    for (int f = 0; f < NF; f++) {
-        xmax = fmax(xmax, q[2 * f + 1]), xmin = fmin(xmin, q[2 * f + 1]);
-        vmax = fmax(vmax, fabs(omega * qd[2 * f + 1]));
-        amax = fmax(amax, fabs(omega * omega * qdd[2 * f + 1]));
-    }
-    mm_kin_draw d;
-    mm_anim *a = mm_kin_draw_start(&d, res, NF, "crank angle travelled", "rad", xmax + m->r + fabs(m->e));
-    mm_shape *slide = a ? mm_kin_shape(&d, "slide", MM_SHAPE_LINE, 0, 2) : NULL;
-    mm_shape *piv = mm_kin_pivot(&d, "O", 0, 0);
-    mm_shape *crank = mm_kin_shape(&d, "crank", MM_SHAPE_LINE, 1, 2);
-    mm_shape *rod = mm_kin_shape(&d, "rod", MM_SHAPE_LINE, 1, 2);
-    mm_shape *block = mm_kin_shape(&d, "slider", MM_SHAPE_POLYGON, 1, 4);
-    mm_shape *mid = mm_kin_shape(&d, "rod midpoint path", MM_SHAPE_PATH, 0, NF + 1);
-    mm_shape *va = mm_kin_arrow_shape(&d, "v", "m/s", vmax);
-    mm_shape *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
-    if (!slide || !piv || !crank || !rod || !block || !mid || !va || !aa)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    slide->style = "ground";
-    double bw = 0.3 * fmin(m->r, m->l) + 0.05 * (xmax - xmin);
-    mm_kin_pt(slide, 0, 0, fmin(xmin, 0) - bw, m->e);
-    mm_kin_pt(slide, 0, 1, xmax + bw, m->e);
-    double travelled = 0;
-    for (int f = 0; f < NF; f++) {
-        if (f)
-            travelled += fabs(phis[f] - phis[f - 1]);
-        a->t[f] = travelled;
-        double Ax = m->r * cos(phis[f]), Ay = m->r * sin(phis[f]), x = q[2 * f + 1];
-        mm_kin_pt(crank, f, 0, 0, 0);
-        mm_kin_pt(crank, f, 1, Ax, Ay);
-        mm_kin_pt(rod, f, 0, Ax, Ay);
-        mm_kin_pt(rod, f, 1, x, m->e);
-        mm_kin_block(block, f, x, m->e, bw, 0.6 * bw, 0);
-        mm_kin_pt(mid, 0, f, 0.5 * (Ax + x), 0.5 * (Ay + m->e));
-        mm_kin_arrow(va, f, x, m->e + 0.3 * bw, omega * qd[2 * f + 1], 0);
-        mm_kin_arrow(aa, f, x, m->e - 0.3 * bw, omega * omega * qdd[2 * f + 1], 0);
-    }
-    mm_kin_pt(mid, 0, NF, mid->x[0], mid->y[0]);          /* close the path */
-    return mm_kin_draw_finish(&d);
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     sc m = {in[P_R].x, in[P_L].x, in[P_E].x};
     const double omega = in[P_OMEGA].x, phi = in[P_PHI].x;
     const int n = (int)in[P_POINTS].x;
-    mm_mech_problem prob = {.n = 2, .m = 2, .phi = phi_fn, .jac = jac_fn, .nu = nu_fn, .gamma = gamma_fn,
-                            .is_length = is_length, .params = &m};
+    mm_mech_problem prob;
+    mm_linkage_sc_problem(&m, &prob);
     mm_mech_options opt;
     mm_mech_options_init(&opt);
     opt.length = m.l;
@@ -392,8 +191,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     const double scale = m.r + m.l + fabs(m.e), tiny = 2 * DBL_EPSILON * m.l * m.l;
 
     /* ---- at phi: the closed form printed, Newton and the Jacobian solves checked ---- */
-    sc_pos c = sc_closed(&m, phi, 1);
-    double D = sc_disc(&m, phi), kappa = m.l / fmax(fabs(c.R), DBL_MIN);
+    sc_pos c = mm_linkage_sc_closed(&m, phi, 1);
+    double D = mm_linkage_sc_disc(&m, phi), kappa = m.l / fmax(fabs(c.R), DBL_MIN);
     int at_toggle = D <= tiny;
     if (at_toggle) {
         /* the discriminant is zero within its rounding tiny: the true one lies
@@ -437,7 +236,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* ---- the cycle: a full turn, or the arc the crank can reach ---- */
     double lo = 0, hi = 2 * M_PI, gaps[2] = {2 * M_PI, 2 * M_PI};
-    int partial = reach(&m, phi, &lo, &hi, gaps) == 1;
+    int partial = mm_linkage_sc_reach(&m, phi, &lo, &hi, gaps) == 1;
     mm_series *sx = mm_res_series(res, O_SX, n), *sv = mm_res_series(res, O_SV, n);
     mm_series *sa = mm_res_series(res, O_SA, n), *st = mm_res_series(res, O_STH3, n);
     mm_series *sm = mm_res_series(res, O_SMID, n);
@@ -451,7 +250,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * at the toggle itself v and a are unbounded */
     double inset = partial ? 1e-3 * (hi - lo) : 0;
     mm_kin_grid(lo + inset, hi - inset, n, sx->x);
-    c = sc_closed(&m, sx->x[0], 1);
+    c = mm_linkage_sc_closed(&m, sx->x[0], 1);
     Q[0] = c.t, Q[1] = c.x;
     mm_mech_sweep s = {.nt = n, .t = sx->x, .q = Q, .qd = QD, .qdd = QDD, .watch = 1};
     if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &s, err)) != MM_OK)
@@ -467,7 +266,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double rx = -1, rv = -1, ra = -1, cx[3] = {0}, cv[3] = {0}, ca[3] = {0};
     for (int i = 0; i < n; i++) {
         double ph = sx->x[i];
-        c = sc_closed(&m, ph, 1);
+        c = mm_linkage_sc_closed(&m, ph, 1);
         sv->x[i] = sa->x[i] = st->x[i] = ph;
         sx->y[i] = Q[2 * i + 1];
         sv->y[i] = omega * QD[2 * i + 1];
@@ -514,12 +313,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             memcpy(d2 + 2 * ns, QDD + 2 * i, 2 * sizeof *d2);
             ns++;
         }
-        fd_ctx fc = {&prob, &opt, w, ph, qs, d1, d2};
+        mm_kin_link_fd fc = {&prob, &opt, w, ph, qs, d1, d2};
         const double wt[2] = {1, 1 / m.l};
         mm_kin_fd fd;
-        if ((rc = mm_kin_fd_study(res, O_FDV, "dq/dphi", fd_pos, &fc, 2, wt, ns, d1, 1, h0, 24, 0, &fd, err)) !=
+        if ((rc = mm_kin_fd_study(res, O_FDV, "dq/dphi", mm_kin_link_fd_pos, &fc, 2, wt, ns, d1, 1, h0, 24, 0, &fd, err)) !=
                 MM_OK ||
-            (rc = mm_kin_fd_study(res, O_FDA, "d2q/dphi2", fd_pos, &fc, 2, wt, ns, d2, 2, h0, 18, 0, &fd, err)) != MM_OK)
+            (rc = mm_kin_fd_study(res, O_FDA, "d2q/dphi2", mm_kin_link_fd_pos, &fc, 2, wt, ns, d2, 2, h0, 18, 0, &fd, err)) != MM_OK)
             goto out;
     }
 
@@ -539,7 +338,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double t[NT], qq[2 * NT], vv[2 * NT];
         for (int i = 0; i < NT; i++)
             t[i] = po + 0.25 + 2 * M_PI * i / (NT - 1);
-        c = sc_closed(&m, t[0], 1);
+        c = mm_linkage_sc_closed(&m, t[0], 1);
         qq[0] = c.t, qq[1] = c.x;
         mm_mech_sweep dc = {.nt = NT, .t = t, .q = qq, .qd = vv, .watch = 1};
         if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &dc, err)) != MM_OK)
@@ -577,7 +376,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + past : lo - past;
             for (int i = 0; i < NT; i++)
                 t[i] = from + (to - from) * i / (NT - 1);
-            c = sc_closed(&m, t[0], 1);
+            c = mm_linkage_sc_closed(&m, t[0], 1);
             qq[0] = c.t, qq[1] = c.x;
             mm_mech_sweep e = {.nt = NT, .t = t, .q = qq, .watch = -1, .tol_t = 1e-13};
             if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &e, err)) != MM_OK)
@@ -591,7 +390,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method_stat(res, "sweep_steps", s.steps);
     mm_res_method_stat(res, "newton_iterations", s.newton);
     mm_res_method_stat(res, "error_estimate", s.err_est);
-    rc = animate(&m, omega, partial, lo, hi, &prob, &opt, w, res, err);
+    rc = mm_kin_sc_animate(&m, omega, partial, lo, hi, &prob, &opt, w, res, err);
 out:
     mm_mech_work_free(w);
     return rc;
