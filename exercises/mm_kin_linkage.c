@@ -30,14 +30,13 @@ void mm_kin_track(mm_kin_worst *w, double got, double ref, double tol)
         *w = (mm_kin_worst){r, got, ref, tol};
 }
 
-/* ---- the four-bar ---- */
-/* ---- the sweeps ------------------------------------------------------------------------------ */
+/* ---- the four-bar: the sweep ---- */
 
 /* Positions, velocities, accelerations (per unit crank rate) on the grid
  * x[0..n-1] (increasing), following the assembly q0 found at th2 forward
- * and backward from it.  Returns MM_OK; *stopped = 1 if a sweep lost it. */
+ * and backward from it.  MM_ENOCONV (theta2 named) if a sweep lost it. */
 int mm_kin_fb_sweep(const mm_kin_fb_run *r, double th2, const double *q0, int side, int singular, int n,
-                      const double *x, double *Q, double *QD, double *QDD, mm_result *res, mm_error *err)
+                    const double *x, double *Q, double *QD, double *QDD, mm_result *res, mm_error *err)
 {
     int j = 0;                                      /* first grid point above th2 */
     while (j < n && x[j] <= th2)
@@ -85,10 +84,10 @@ int mm_kin_fb_sweep(const mm_kin_fb_run *r, double th2, const double *q0, int si
     return MM_OK;
 }
 
-/* ---- the animation ------------------------------------------------------------------------------ */
+/* ---- the four-bar: the animation ---- */
 
-int mm_kin_fb_animate(const mm_kin_fb_run *r, const mm_fourbar_class *k, int side, double w2, double px, double py, double th0,
-                   const double *q0, int singular, mm_result *res, mm_error *err)
+int mm_kin_fb_animate(const mm_kin_fb_run *r, const mm_fourbar_class *k, int side, double w2, double px, double py,
+                      double th0, const double *q0, int singular, mm_result *res, mm_error *err)
 {
     enum { NF = 72 };
     const mm_fourbar *m = r->m;
@@ -161,8 +160,9 @@ int mm_kin_fb_animate(const mm_kin_fb_run *r, const mm_fourbar_class *k, int sid
 
 /* ---- the slider-crank ---- */
 
-int mm_kin_sc_animate(const mm_slider_crank *m, double omega, int partial, double lo, double hi, const mm_mech_problem *prob,
-                   const mm_mech_options *opt, mm_mech_work *w, mm_result *res, mm_error *err)
+int mm_kin_sc_animate(const mm_slider_crank *m, double omega, int partial, double lo, double hi,
+                      const mm_mech_problem *prob, const mm_mech_options *opt, mm_mech_work *w, mm_result *res,
+                      mm_error *err)
 {
     /* full turn: 72 frames; partial: out on the right-hand assembly and back
      * on the other one through the toggles, 36 frames each way */

@@ -79,7 +79,8 @@ void mm_linkage_fb_angles(const mm_fourbar *m, double th2, int side, double *th3
 }
 
 /* velocities and accelerations per unit crank rate (omega2 = 1), eqs. (4)-(5) */
-void mm_linkage_fb_rates(const mm_fourbar *m, double th2, double th3, double th4, double *w3, double *w4, double *a3, double *a4)
+void mm_linkage_fb_rates(const mm_fourbar *m, double th2, double th3, double th4, double *w3, double *w4,
+                         double *a3, double *a4)
 {
     *w3 = m->a * sin(th4 - th2) / (m->b * sin(th3 - th4));
     *w4 = m->a * sin(th2 - th3) / (m->c * sin(th4 - th3));
@@ -185,7 +186,7 @@ void mm_linkage_fb_assemble(const mm_fourbar *m, double th2, int side, double *q
 
 /* the coupler point P and its velocity, acceleration per unit crank rate */
 void mm_linkage_fb_coupler(const mm_fourbar *m, double px, double py, double th2, const double *q, const double *qd,
-                    const double *qdd, mm_v2 *P, mm_v2 *V, mm_v2 *A)
+                           const double *qdd, mm_v2 *P, mm_v2 *V, mm_v2 *A)
 {
     mm_v2 rp = mm_v2_rotate((mm_v2){px, py}, q[0]);          /* B to P */
     *P = mm_v2_add(mm_v2_polar(m->a, th2), rp);
@@ -198,7 +199,8 @@ void mm_linkage_fb_coupler(const mm_fourbar *m, double px, double py, double th2
  * rates inherit it through the solves (whose condition is kappa =
  * 1/|sin mu|, the Jacobian's smallest singular value being about
  * min(b, c) |sin mu|) */
-void mm_linkage_fb_frame_tol(const mm_fourbar *m, const double *q, const double *qd, const double *qdd, double dth, double tol[3])
+void mm_linkage_fb_frame_tol(const mm_fourbar *m, const double *q, const double *qd, const double *qdd, double dth,
+                             double tol[3])
 {
     double mn = fmin(m->b, m->c);
     double kappa = 1 / fmax(fabs(sin(q[1] - q[0])), 1e-300);
