@@ -10,8 +10,11 @@
  *     LAPACK would destroy into scratch memory it allocates and frees
  *     itself.  Outputs go to arrays the caller owns, with the sizes given in
  *     each comment.  No function keeps a pointer after it returns.
- *   - No globals, no locks: safe to call from many threads at once (the
- *     BLAS is Debian's serial OpenBLAS, which runs in the calling thread).
+ *   - No globals but one lock: safe to call from many threads at once.
+ *     Debian's serial OpenBLAS (the default BLAS/LAPACK) shares scratch
+ *     buffers between threads without a lock, so mm_linalg.c makes every
+ *     LAPACK/BLAS call under one mutex (see there); the double-double
+ *     routines (mm_linalg_*_dd) need no lock.
  *   - Every fallible function returns MM_OK or an MM_E* code and fills err
  *     (may be NULL) with the parameter concerned and a message for a
  *     learner.  Sizes are checked against the MM_LINALG_MAX_* limits, and
@@ -47,13 +50,20 @@
  *                                    of the ~16 digits of x may be wrong) */
 #define MM_LINALG_RCOND_WARN 1e-10
 
-/* Symmetry test of K and M in the symmetric eigen solvers: |a_ij - a_ji| must
- * be <= MM_LINALG_SYM_TOL * max |a_kl|.  Loose enough for an assembly that
- * rounds differently above and below the diagonal, tight enough to catch a
- * typing error. */
-#define MM_LINALG_SYM_TOL    1e-10
+/* The symmetry rule of the whole project (mm_linalg_is_symmetric): a
+ * matrix is symmetric when |a_ij - a_ji| <= MM_LINALG_SYM_TOL * max |a_kl|.
+ * A matrix typed in decimal is exactly symmetric, and one assembled from
+ * element matrices is symmetric to a few units of rounding (~1e-15); a
+ * difference in the 12th digit is a typing error.  The symmetric solvers
+ * use the upper triangle. */
+#define MM_LINALG_SYM_TOL    1e-12
 
 /* ---- helpers ------------------------------------------------------------- */
+
+/* 1 when the row-major n x n a is symmetric by the rule of
+ * MM_LINALG_SYM_TOL, else 0 with the first offending pair (0-based, i < j)
+ * in *bad_i, *bad_j (each may be NULL).  Cannot fail. */
+int mm_linalg_is_symmetric(int n, const double *a, int *bad_i, int *bad_j);
 
 /* MM_OK if all count values of a are finite, else MM_EVALUE naming param and
  * the first bad entry (by 0-based flat index).  Cannot fail otherwise. */
