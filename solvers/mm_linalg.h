@@ -218,4 +218,50 @@ int mm_linalg_sbgv_first(int n, int kd, int nev, const double *Kb,
 int mm_linalg_geev(int n, const double *A, double *wr, double *wi, double *VR,
                    mm_error *err);
 
+/* ---- double-double: small problems with every digit, and its bound -------- */
+/*
+ * The same problems, solved in double-double arithmetic (~32 digits,
+ * solvers/mm_dd.h) by simple methods (Jacobi rotations, Gaussian
+ * elimination) and returned rounded to double with an error bound that
+ * comes from residuals computed from the given data, not from trust in the
+ * method.  For the learner's exercises (n <= 12), where a printed number
+ * must be right to its last digit, and as an independent reference for the
+ * LAPACK results above.  Work: n^3 operations in software arithmetic, about
+ * 1 ms at n = 12 (24 for an SVD).  Thread-safe, no LAPACK.
+ *
+ * A bound err for a value x means |x - x_exact| <= err, where x_exact is
+ * the exact answer for the given doubles, up to the double-double rounding
+ * of the bound's own computation (a relative 1e-30 of it).  A double
+ * rounding of x_exact is in every bound, so err is never below half an ulp
+ * of x unless x is exact.
+ */
+
+#define MM_LINALG_DD_MAX_N 32     /* largest order (m + n for the SVD) */
+
+/* Eigenvalues of the symmetric pencil K v = lambda M v (M symmetric
+ * positive definite; M NULL means the identity), ascending, each with its
+ * bound lambda_err[j].  V (n x n, or NULL) receives the modes, rounded to
+ * double, M-normalised, signs as in mm_linalg_sygv.  Fails with MM_ERANGE
+ * (n outside 1..MM_LINALG_DD_MAX_N, "n"), MM_EVALUE (non-finite or not
+ * symmetric, "K"/"M"), MM_ESINGULAR (M not positive definite to ~32
+ * digits, "M"), MM_ENOMEM. */
+int mm_linalg_sygv_dd(int n, const double *K, const double *M, double *lambda, double *lambda_err,
+                      double *V, mm_error *err);
+
+/* Singular values of the m x n A, descending, into s[min(m,n)], each with
+ * its bound s_err (s >= 0; a singular value whose bound reaches 0 may be
+ * 0).  Needs m + n <= MM_LINALG_DD_MAX_N.  Fails with MM_ERANGE ("A"),
+ * MM_EVALUE ("A"), MM_ENOMEM. */
+int mm_linalg_svdvals_dd(int m, int n, const double *A, double *s, double *s_err, mm_error *err);
+
+/* x = A^-1 b for the n x n A, rounded to double, each x[i] with its bound
+ * x_err[i] = ||b - A x_dd||_2 / sigma_min + |x[i] - x_dd[i]|, where
+ * sigma_min > 0 is a LOWER BOUND of A's smallest singular value (from
+ * mm_linalg_svdvals_dd: s[n-1] - s_err[n-1]).  *residual (may be NULL)
+ * receives ||b - A x_dd||_2 with its rounding.  Fails with MM_ERANGE,
+ * MM_EVALUE, MM_ESINGULAR (sigma_min <= 0, or a zero pivot, "A"),
+ * MM_ENONFINITE ("b"), MM_ENOMEM. */
+int mm_linalg_solve_dd(int n, const double *A, const double *b, double sigma_min, double *x,
+                       double *x_err, double *residual, mm_error *err);
+
 #endif
