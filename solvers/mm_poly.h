@@ -105,4 +105,40 @@ typedef struct mm_poly_fit_info {
 int mm_poly_fit(int npts, const double *x, const double *y, int degree,
                 double *p, mm_poly_fit_info *info, mm_error *err);
 
+/* ---- the same fit, every digit: double-double ----------------------------- */
+
+#define MM_POLY_MAX_FIT_DD_DEGREE 15   /* largest degree for mm_poly_fit_dd */
+
+typedef struct mm_poly_fit_dd_info {
+    double mu;         /* t = (x - mu) / scale: mu the mean of x (as computed in double) */
+    double scale;      /* a power of 2 >= max |x - mu| (1 if 0), so t is exact in double-double */
+    double cond, cond_err;  /* 2-norm condition number of the Vandermonde matrix in
+                               (x - mu) / max |x - mu|, with its bound */
+    double rms, rms_err;    /* sqrt(sum r_i^2 / n) with its bound */
+    int dof;           /* degrees of freedom left, npts - degree - 1 */
+} mm_poly_fit_dd_info;
+
+/* The least-squares polynomial of mm_poly_fit, computed in double-double
+ * (Householder QR on the Vandermonde matrix in t, then expanded to powers
+ * of x), each number rounded to double with its bound:
+ *   c[degree + 1], c_err: coefficients, highest power first, as MATLAB's
+ *     polyfit; |c[k] - c_exact[k]| <= c_err[k], where c_exact is the exact
+ *     least-squares solution for the given doubles;
+ *   fit[npts], fit_err: p(x_i), and the same bound for y_i - p(x_i);
+ *   se[degree + 1] (may be NULL): the standard error of each coefficient
+ *     from the scatter of the data, sigma sqrt(diag((A^T A)^-1)) with
+ *     sigma^2 = sum r_i^2 / dof (0 when dof = 0): a statistical estimate,
+ *     not a rounding error;
+ *   bt[degree + 1] (may be NULL): the coefficients in t, highest first, for
+ *     evaluating p(x) = sum bt t^k without the cancellation of powers of x.
+ * The bounds of the QR step use the standard backward error of Householder
+ * QR (a multiple n m of the double-double unit) through Wedin's
+ * perturbation bound with the certified cond; they are far below a double's
+ * rounding unless cond(A) passes ~1e15 or the powers of x cancel.
+ * Fails as mm_poly_fit (degree limit MM_POLY_MAX_FIT_DD_DEGREE), and with
+ * MM_ESINGULAR ("x") when the Vandermonde matrix is singular to ~32 digits. */
+int mm_poly_fit_dd(int npts, const double *x, const double *y, int degree, double *c, double *c_err,
+                   double *fit, double *fit_err, double *se, double *bt, mm_poly_fit_dd_info *info,
+                   mm_error *err);
+
 #endif

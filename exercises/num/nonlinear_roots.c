@@ -10,6 +10,10 @@
  * secant and inverse quadratic steps).  Learn what such a scan misses: roots
  * of even multiplicity (no sign change) and pairs of roots closer than
  * (b - a) / n, and what fools it: poles and jumps.
+ * Each root x carries an error estimate: the width of its final bracket, or
+ * where the rounding of f blurs the sign (near a multiple root f stays
+ * within its own rounding error over a wide interval), whichever is wider;
+ * f(x) carries the estimate of its rounding error (mm_expr_eval_err).
  * Checks: each root against plain bisection restarted from its part (a
  * slower method whose error bound is certain, eq. 3), and a sign change of
  * f across x +- tol around each root.
@@ -35,12 +39,28 @@ enum { P_F, P_A, P_B, P_N, P_TOL };
 static const mm_param params[] = {
     [P_F] = {"f", "function f(x)", "", MM_EXPR, 0, 0, 0, "x^3+sin(x)-2", .vars = "x",
              .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e"},
-    [P_A] = {"a", "left end of the interval", "", MM_REAL, -1, -1e6, 1e6, .help = "search from x = a"},
-    [P_B] = {"b", "right end of the interval", "", MM_REAL, 10, -1e6, 1e6, .help = "to x = b > a"},
+    [P_A] = {"a", "left end of the interval", "", MM_REAL, -1, -1e6, 1e6,
+             .help = "search from x = a; |a| <= 1e6 keeps (b - a) / n and tol on one scale"},
+    [P_B] = {"b", "right end of the interval", "", MM_REAL, 10, -1e6, 1e6, .help = "to x = b > a; |b| <= 1e6"},
     [P_N] = {"n", "number of subintervals", "", MM_INT, 100, 1, MAXN,
-             .help = "[a, b] is cut into n equal parts; two roots in one part are missed, so raise n to separate them (n times the length of f may be at most 120000)"},
+             .help = "[a, b] is cut into n equal parts; two roots in one part are missed, so raise n to separate "
+                     "them; at most 1000, and n times the length of f at most 120000 (the work of the scan)"},
     [P_TOL] = {"tol", "tolerance on x", "", MM_REAL, 1e-6, 1e-15, 1,
-               .help = "each root is within tol of a sign change of f (absolute, in units of x)"},
+               .help = "each root is within tol of a sign change of f (absolute, in units of x); from 1e-15, "
+                       "about the spacing of doubles near 1, to 1"},
+};
+
+enum { O_COUNT, O_X1, O_ROOTS, O_RPTS, O_F };
+
+static const char *const root_cols[] = {"x", "err", "fx", "fx_err", "iterations", NULL};
+static const char *const root_units[] = {"", "", "", "", "", NULL};
+
+static const mm_output outputs[] = {
+    [O_COUNT] = MM_SCALAR("count", "number of roots found (sign changes of f)", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_X1] = MM_SCALAR("x1", "the first (smallest) root", "", .flags = MM_ANSWER),
+    [O_ROOTS] = MM_TABLE("roots", "the roots, each within err (an estimate) of a root of f", root_cols, root_units),
+    [O_RPTS] = MM_SERIES("roots", "roots", "", "x", "", .figure = "f", .mark = "dots"),
+    [O_F] = MM_SERIES("f", "f(x)", "", "x", "", .figure = "f"),
 };
 
 /* The work grows with n (every part may be refined and checked) times the
@@ -107,6 +127,30 @@ static int bisect(fctx *c, double xl, double xr, double fl, double w, double *x)
     return 0;
 }
 
+/* Where the sign of f is blurred by its rounding error around the root x:
+ * step out from x, doubling, until f is certainly nonzero (|f| above its
+ * error estimate) on each side, within [lo, hi].  The larger of the two
+ * distances is the root's error estimate when it exceeds the bracket: near
+ * a root of multiplicity m the band is about (error of f)^(1/m) wide. */
+static double blur(fctx *c, double x, double w, double lo, double hi)
+{
+    double worst = 0;
+    for (int side = -1; side <= 1; side += 2) {
+        double h = fmax(w, 4 * DBL_EPSILON * fabs(x) + DBL_MIN);
+        for (int it = 0; it < 80; it++, h *= 2) {
+            double y = x + side * h, e;
+            if (y < lo || y > hi)
+                break;
+            c->evals += 7;
+            double fy = mm_expr_eval_err(c->e, &y, &e);
+            if (!isfinite(fy) || fabs(fy) > e)
+                break;
+        }
+        worst = fmax(worst, h);
+    }
+    return worst;
+}
+
 /* x by the scan's own formula (mm_roots.c), so the parts are the same. */
 static double grid(double a, double b, int n, int i) { return i >= n ? b : i <= 0 ? a : a + (b - a) * i / n; }
 
@@ -124,7 +168,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     mm_roots_result rr = {.roots = mm_res_alloc(res, (size_t)(n + 1) * sizeof(mm_roots_root)),
                           .cap = n + 1, .poles = poles, .pole_cap = MAXPOLES};
     if (!rr.roots)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     int rc = mm_roots_solve(&prob, &opt, &rr, err);
     if (rc == MM_ENOCONV)
         return mm_error_set(err, MM_ENOCONV, "tol", "a root could not be refined to tol = %g in %d steps "
@@ -133,31 +177,33 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         return rc;
     const int nr = rr.nroots;
 
-    static const char *const cols[] = {"x", "fx", "iterations"};
-    static const char *const units[] = {"", "", ""};
-    mm_table *t = mm_res_table_v1(res, "roots", nr, 3, cols, units);
-    mm_series *sr = mm_res_series_v1(res, "roots", "roots", "", "x", "", nr);
+    mm_table *t = mm_res_table(res, O_ROOTS, nr);
+    mm_series *sr = mm_res_series(res, O_RPTS, nr);
     if (!t || !sr)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    int nsuspect = 0;
-    double wmax = 0, xmax = 0;
+        return MM_ENOMEM;
+    long scan_evals = c->evals;
+    int nsuspect = 0, nblur = 0;
+    double wmax = 0, xmax = 0, part = (b - a) / n;
     for (int i = 0; i < nr; i++) {
         const mm_roots_root *z = &rr.roots[i];
-        t->cell[3 * i] = z->x;
-        t->cell[3 * i + 1] = z->fx;
-        t->cell[3 * i + 2] = z->iterations;
+        double fe, fx = mm_expr_eval_err(c->e, &z->x, &fe);
+        /* the root's error: its final bracket (plus the rounding of x), or
+         * the band where rounding blurs the sign of f, if wider */
+        double w = z->width + 2 * DBL_EPSILON * fabs(z->x);
+        double band = blur(c, z->x, w, z->x - part, z->x + part);
+        nblur += band > fmax(w, tol);
+        double e = fmax(w, band);
+        double *row = t->cell + 5 * i;
+        row[0] = z->x, row[1] = e, row[2] = fx, row[3] = fe, row[4] = z->iterations;
         sr->x[i] = z->x;
         sr->y[i] = 0;
         nsuspect += (z->flags & MM_ROOTS_SUSPECT) != 0;
-        wmax = fmax(wmax, z->width);
+        wmax = fmax(wmax, e);
         xmax = fmax(xmax, fabs(z->x));
+        if (i == 0)
+            mm_res_scalar_err(res, O_X1, z->x, e, MM_ERR_ESTIMATE);
     }
-    mm_res_scalar_v1(res, "count", "number of roots found", "", nr);
-    if (nr > 0)
-        mm_res_scalar_v1(res, "x1", "the first (smallest) root", "", rr.roots[0].x);
-    else
-        mm_res_scalar_text_v1(res, "x1", "the first (smallest) root", "", 0, "none found");
-    long scan_evals = c->evals;
+    mm_res_scalar(res, O_COUNT, nr);
 
     /* check 1: every root against bisection restarted from its part, to a
      * width of tol/4: Brent's claim is |x - root| <= tol + 4 eps |x|.
@@ -175,8 +221,8 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         double h = tol + 8 * DBL_EPSILON * fabs(z->x), fm = f1(c, z->x - h), fp = f1(c, z->x + h);
         int own = fm == 0 || fp == 0 || (fm < 0) != (fp < 0);
         nosign += !own;
-        int k = (int)floor((z->x - a) / (b - a) * n), found = 0;
-        for (int j = k - 1; j <= k + 1 && !found; j++) {
+        int found = 0;
+        for (int j = z->part; j <= z->part && !found; j++) {     /* the part Brent refined */
             if (j < 0 || j >= n)
                 continue;
             double xl = grid(a, b, n, j), xr = grid(a, b, n, j + 1), fl = f1(c, xl), fr = f1(c, xr), xb;
@@ -207,7 +253,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     /* the plot: f over [a, b]; points where f is not finite are left out */
     double *xs = mm_res_alloc(res, PLOT * sizeof *xs), *ys = mm_res_alloc(res, PLOT * sizeof *ys);
     if (!xs || !ys)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     mm_linspace(a, b, PLOT, xs);
     int np = 0, bad = 0, plot_changes = 0;
     double first_bad = 0, prev = NAN;
@@ -230,9 +276,9 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                     "than a part (%.3g), roots that only touch zero, and roots beside points where f is not finite "
                     "are missed; raise n", plot_changes, nr, nr == 1 ? "" : "s", rr.npoles ? " and poles" : "",
                     (b - a) / n);
-    mm_series *sf = mm_res_series_v1(res, "f", "f(x)", "", "x", "", np);
+    mm_series *sf = mm_res_series(res, O_F, np);
     if (!sf)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     memcpy(sf->x, xs, np * sizeof *xs);
     memcpy(sf->y, ys, np * sizeof *ys);
 
@@ -260,6 +306,11 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     if (nsuspect)
         mm_res_warn(res, "%d root%s a large residual |f(x)|: a jump of f through zero (or a very steep root) "
                     "rather than a smooth crossing; look at the plot", nsuspect, nsuspect > 1 ? "s have" : " has");
+    if (nblur)
+        mm_res_warn(res, "%d root%s known only to within %s err: f stays within its own rounding error over a band "
+                    "wider than tol around %s (a multiple root, or a flat crossing); no method can place %s closer "
+                    "in double precision", nblur, nblur > 1 ? "s are" : " is", nblur > 1 ? "their" : "its",
+                    nblur > 1 ? "them" : "it", nblur > 1 ? "them" : "it");
     if (nr == 0)
         mm_res_warn(res, "no sign change of f on [%g, %g] with n = %d: f may have no root there, only roots "
                     "where it touches zero without crossing (such as x^2), or two roots within one part; "
@@ -297,8 +348,11 @@ const mm_exercise mm_ex_num_nonlinear_roots = {
     .summary = "Every root of f(x) = 0 on an interval: subdivide, keep the sign changes, refine each by Brent's method.",
     .tags = "nonlinear equation, roots, bisection, Brent, sign change",
     .theory = "exercises/num/nonlinear_roots.md",
+    .script = "exercises/num/nonlinear_roots.m",
     .params = params,
     .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .references = references,
     .check = check,
     .solve = solve,
