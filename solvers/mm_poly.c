@@ -485,8 +485,8 @@ int mm_poly_fit_dd(int npts, const double *x, const double *y, int degree, doubl
         b[j] = mm_dd_div(s, a[j * w + j]);
     }
     /* cond of the Vandermonde matrix in (x - mu) / dev: R with its columns
-     * scaled by (dev / scale)^(power) */
-    double f = dev > 0 ? dev / scale : 1;
+     * scaled by (scale / dev)^(power) */
+    double f = dev > 0 ? scale / dev : 1;                  /* t / ((x - mu) / dev) */
     for (int i = 0; i < m; i++)
         for (int j = 0; j < m; j++)
             A[i * m + j] = j >= i ? mm_dd_val(a[i * w + j]) * pow(f, degree - j) : 0;

@@ -21,15 +21,22 @@ static const double wgk[8] = {0.022935322010529224963732008058970, 0.06309209262
 static const double wg[4] = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
                              0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
 
-/* 5-point Gauss-Legendre on [-1, 1] */
-static const double xgl[3] = {0.0, 0.538469310105683091036314420700208, 0.906179845938663992797626878299393};
+/* 5-point Gauss-Legendre on [-1, 1]: weights of the nodes 0, +-0.538, +-0.906 */
 static const double wgl[3] = {0.568888888888888888888888888888889, 0.478628670499366468041291514835639,
                               0.236926885056189087514264040719918};
 
 /* a rounding floor: the error estimates never claim better than this many
  * eps of the integral of |f| (QUADPACK takes 50; with compensated sums a
- * few are what rounding reaches) */
+ * few are what rounding reaches), plus what the rounding of the nodes
+ * themselves does: a node x is placed to within u |x|, which moves f by
+ * |f'| u |x|, so the integral by up to u max |x| times the total variation
+ * of f (measured between the nodes) */
 #define FLOOR_EPS 4
+
+static double floor_of(double resabs, double tv, double a, double b)
+{
+    return FLOOR_EPS * DBL_EPSILON * resabs + DBL_EPSILON / 2 * fmax(fabs(a), fabs(b)) * tv;
+}
 
 void mm_quad_options_init(mm_quad_options *opt)
 {
@@ -113,8 +120,20 @@ static int gk15(mm_quad_fn f, void *params, double a, double b, mm_quad_piece *p
     double e = fabs((k - g) * h), resasc = asc * fabs(h), resabs = ak * fabs(h);
     if (resasc != 0 && e != 0)                       /* QUADPACK's sharpening */
         e = resasc * fmin(1, pow(200 * e / resasc, 1.5));
-    e = fmax(e, FLOOR_EPS * DBL_EPSILON * resabs);
-    *p = (mm_quad_piece){a, b, k * h, e, resabs};
+    /* total variation between the nodes in order: m - h x_0 < ... < m < ... < m + h x_0 */
+    double tv = 0, prev = fv[1];
+    for (int j = 1; j < 7; j++) {
+        tv += fabs(fv[1 + 2 * j] - prev);
+        prev = fv[1 + 2 * j];
+    }
+    tv += fabs(fv[0] - prev);
+    prev = fv[0];
+    for (int j = 6; j >= 0; j--) {
+        tv += fabs(fv[2 + 2 * j] - prev);
+        prev = fv[2 + 2 * j];
+    }
+    double fl = floor_of(resabs, tv, a, b);
+    *p = (mm_quad_piece){a, b, k * h, fmax(e, fl), resabs, fl};
     return MM_OK;
 }
 
@@ -169,7 +188,7 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
      * the safe side */
     if (rc == MM_OK) {
         csum sum = {0, 0}, abs_sum = {0, 0};
-        double e = 0;
+        double e = 0, floor_total = 0;
         for (int i = 0; i < np && rc == MM_OK; i++) {
             double mid = 0.5 * (p[i].a + p[i].b);
             mm_quad_piece left, right;
@@ -177,6 +196,7 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
                 cadd(&sum, p[i].value);
                 cadd(&abs_sum, p[i].abs_value);
                 e += p[i].err;
+                floor_total += p[i].floor;
                 continue;
             }
             rc = gk15(f, params, p[i].a, mid, &left, &r->evals, err);
@@ -188,12 +208,13 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
                 cadd(&abs_sum, left.abs_value);
                 cadd(&abs_sum, right.abs_value);
                 e += fabs(left.value + right.value - p[i].value);
+                floor_total += left.floor + right.floor;  /* rounding: the halves' own floors */
             }
         }
         if (rc == MM_OK) {
             r->value = cval(&sum);
             r->abs_value = cval(&abs_sum);
-            r->err = fmax(e, FLOOR_EPS * DBL_EPSILON * r->abs_value);
+            r->err = fmax(e, floor_total);
         }
     }
     if (!piece)
@@ -201,30 +222,36 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
     return rc;
 }
 
-/* G5 on m equal panels, compensated, with the integral of |f| */
+/* G5 on m equal panels, compensated, with the integral of |f| and the
+ * rounding floor (floor_of: the variation of f along the nodes) */
 static int gauss_panels(mm_quad_fn f, void *params, double a, double b, int m, double *value, double *abs_value,
-                        long *evals, mm_error *err)
+                        double *floor, long *evals, mm_error *err)
 {
+    static const double node[5] = {-0.906179845938663992797626878299393, -0.538469310105683091036314420700208, 0,
+                                   0.538469310105683091036314420700208, 0.906179845938663992797626878299393};
+    static const int weight[5] = {2, 1, 0, 1, 2};
     csum s = {0, 0}, as = {0, 0};
+    double tv = 0, prev = NAN;
     for (int i = 0; i < m; i++) {
         double lo = i == 0 ? a : a + (b - a) * i / m, hi = i == m - 1 ? b : a + (b - a) * (i + 1) / m;
-        double mid = 0.5 * (lo + hi), hh = 0.5 * (hi - lo), fv;
-        int rc = call(f, params, mid, &fv, evals, err);
-        if (rc != MM_OK)
-            return rc;
-        double p = wgl[0] * fv, ap = wgl[0] * fabs(fv);
-        for (int j = 1; j < 3; j++)
-            for (int sg = -1; sg <= 1; sg += 2) {
-                if ((rc = call(f, params, mid + sg * hh * xgl[j], &fv, evals, err)) != MM_OK)
-                    return rc;
-                p += wgl[j] * fv;
-                ap += wgl[j] * fabs(fv);
-            }
+        double mid = 0.5 * (lo + hi), hh = 0.5 * (hi - lo), p = 0, ap = 0;
+        for (int j = 0; j < 5; j++) {
+            double fv;
+            int rc = call(f, params, mid + hh * node[j], &fv, evals, err);
+            if (rc != MM_OK)
+                return rc;
+            p += wgl[weight[j]] * fv;
+            ap += wgl[weight[j]] * fabs(fv);
+            if (!isnan(prev))
+                tv += fabs(fv - prev);
+            prev = fv;
+        }
         cadd(&s, p * hh);
         cadd(&as, ap * hh);
     }
     *value = cval(&s);
     *abs_value = cval(&as);
+    *floor = floor_of(*abs_value, tv, a, b);
     return MM_OK;
 }
 
@@ -238,8 +265,8 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
     if (m0 < 1 || max_panels < m0 || max_panels > MM_QUAD_MAX_PANELS || !(tol >= 0))
         return mm_error_set(err, MM_EVALUE, "max_panels", "bad panel counts (1 <= m0 = %d <= max_panels = %d "
                             "<= %d) or tol (%g)", m0, max_panels, MM_QUAD_MAX_PANELS, tol);
-    double prev, cur, abs_value;
-    int rc = gauss_panels(f, params, a, b, m0, &prev, &abs_value, &r->evals, err);
+    double prev, cur, abs_value, fl;
+    int rc = gauss_panels(f, params, a, b, m0, &prev, &abs_value, &fl, &r->evals, err);
     if (rc != MM_OK)
         return rc;
     int agree = 0;
@@ -248,9 +275,9 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
     r->pieces = m0;
     r->abs_value = abs_value;
     for (int m = 2 * m0; m <= max_panels; m *= 2) {
-        if ((rc = gauss_panels(f, params, a, b, m, &cur, &abs_value, &r->evals, err)) != MM_OK)
+        if ((rc = gauss_panels(f, params, a, b, m, &cur, &abs_value, &fl, &r->evals, err)) != MM_OK)
             return rc;
-        r->err = fmax(fabs(cur - prev), FLOOR_EPS * DBL_EPSILON * abs_value);
+        r->err = fmax(fabs(cur - prev), fl);
         r->value = cur;
         r->pieces = m;
         r->abs_value = abs_value;

@@ -50,6 +50,8 @@ typedef struct mm_quad_piece {
     double value;      /* K15 on it */
     double err;        /* its error estimate */
     double abs_value;  /* K15 of |f| on it */
+    double floor;      /* the rounding floor of err: a few eps of abs_value, and
+                          u max |x| times the variation of f across the nodes */
 } mm_quad_piece;
 
 typedef struct mm_quad_result {

@@ -203,12 +203,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     mm_res_check_abs(res, "printed x: ||b - A x|| <= || |A| (u |x| + x_err) ||, the rounding of x to double", rnorm, 0,
                      1.01 * norm2(n, w) + rerr);
-    /* check: MATLAB's svd (LAPACK dgesdd, double) within its bound n eps sigma_max */
+    /* check: MATLAB's svd (LAPACK dgesdd, double) within its normwise bound
+     * p(n) eps sigma_max (LAPACK Users' Guide 4.9; p(n) = 4n here: the
+     * largest seen over 200 random 3 x 3 draws was 0.96 n) */
     double sdev = 0;
     for (int i = 0; i < n; i++)
         sdev = fmax(sdev, fabs(sl[i] - s[i]) - se[i]);
     mm_res_check_abs(res, "svd(A) in double (LAPACK dgesdd) vs the accurate sigma_i: worst |difference| <= "
-                     "n eps sigma_max", fmax(sdev, 0), 0, n * DBL_EPSILON * s[0]);
+                     "4 n eps sigma_max", fmax(sdev, 0), 0, 4 * n * DBL_EPSILON * s[0]);
 
     mm_res_method(res, "A\\b: LU with partial pivoting, equilibrated, iterative refinement (LAPACK dgesvx); "
                        "x and sigma to the last digit in double-double arithmetic", 0);

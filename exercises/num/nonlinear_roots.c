@@ -165,7 +165,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     opt.n = n;
     opt.tol = tol;
     double poles[MAXPOLES];
-    mm_roots_result rr = {.roots = mm_res_alloc(res, (size_t)(n + 1) * sizeof(mm_roots_root)),
+    mm_roots_result rr = {.roots = mm_res_alloc(res, (size_t)(n + 3) * sizeof(mm_roots_root)),
                           .cap = n + 1, .poles = poles, .pole_cap = MAXPOLES};
     if (!rr.roots)
         return MM_ENOMEM;
@@ -175,6 +175,23 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                             "(f is too rough there); raise tol", tol, opt.max_iter);
     if (rc != MM_OK)
         return rc;
+    /* a root at an end of [a, b] has no sign change inside to show it (sin(pi x)
+     * at x = -1 gives -1.2e-16, not 0, because pi is rounded): an end where f
+     * is zero within its own rounding error is a root too */
+    for (int end = 0; end < 2; end++) {
+        double x = end ? b : a, e, fx = mm_expr_eval_err(c->e, &x, &e);
+        int have = rr.nroots > 0 && (end ? rr.roots[rr.nroots - 1].x == b : rr.roots[0].x == a);
+        if (have || !isfinite(fx) || !(fabs(fx) <= e))
+            continue;
+        mm_roots_root z = {x, fx, 0, 0, 0, -1};         /* part -1: found at an end, not by a sign change */
+        if (end) {
+            rr.roots[rr.nroots] = z;
+        } else {
+            memmove(rr.roots + 1, rr.roots, (size_t)rr.nroots * sizeof *rr.roots);
+            rr.roots[0] = z;
+        }
+        rr.nroots++;
+    }
     const int nr = rr.nroots;
 
     mm_table *t = mm_res_table(res, O_ROOTS, nr);
@@ -216,7 +233,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     int lost = 0, nosign = 0, crowded = 0;
     for (int i = 0; i < nr; i++) {
         const mm_roots_root *z = &rr.roots[i];
-        if (z->flags & MM_ROOTS_EXACT)
+        if ((z->flags & MM_ROOTS_EXACT) || z->part < 0)
             continue;                                /* f(x) = 0 exactly: proven */
         double h = tol + 8 * DBL_EPSILON * fabs(z->x), fm = f1(c, z->x - h), fp = f1(c, z->x + h);
         int own = fm == 0 || fp == 0 || (fm < 0) != (fp < 0);

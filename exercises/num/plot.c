@@ -91,32 +91,42 @@ static double f1(fctx *c, double x)
 }
 
 /* The extreme of s f (s = +1 largest, -1 smallest) near the candidate x0
- * (spacing h to its neighbours), within [a, b]: golden section on
- * [x0 - h, x0 + h] (eq. 6).  *xe estimates the error of x: the bracket, or
- * the flat band sqrt(2 err_f / |f''|) where the rounding of f hides the
- * peak; *fe the error of the value, err_f + |f''| xe^2 / 2. */
+ * (spacing h to its neighbours), within [a, b]: a finer scan of
+ * [x0 - h, x0 + h] (the window may hold more than one bump), then golden
+ * section between the best point's neighbours (eq. 6).  *xe estimates the
+ * error of x: the bracket, or the flat band where the rounding of f hides
+ * the peak: golden section compares two values, each off by up to err_f
+ * (never less than an ulp), so it cannot tell points apart where
+ * |f''| dx^2 / 2 < 2 err_f, dx = sqrt(4 err_f / |f''|); *fe the error of
+ * the value, err_f + |f''| xe^2 / 2. */
 static void extreme(fctx *c, double s, double x0, double h, double a, double b, double *x, double *fx,
                     double *xe, double *fe)
 {
-    double lo = fmax(a, x0 - h), hi = fmin(b, x0 + h);
-    mm_opt_result r = {x0, s * f1(c, x0), 0, 0};
+    enum { FINE = 32 };
+    double lo = fmax(a, x0 - h), hi = fmin(b, x0 + h), best = x0, fbest = s * f1(c, x0);
+    for (int k = 0; k <= FINE && hi > lo; k++) {
+        double y = k == FINE ? hi : lo + (hi - lo) * k / FINE, v = s * f1(c, y);
+        if (isfinite(v) && v > fbest)
+            best = y, fbest = v;
+    }
+    h = (hi - lo) / FINE;
+    lo = fmax(a, best - h), hi = fmin(b, best + h);
+    mm_opt_result r = {best, fbest, 0, 0};
     c->sign = s;
     if (hi > lo)
         mm_opt_golden_max(feval, c, lo, hi, 4 * DBL_EPSILON * fmax(fabs(lo), fabs(hi)) + DBL_MIN, 200, &r, NULL);
     c->sign = 1;
+    if (!(r.fx >= fbest))                           /* golden section lost to the scan (an end maximum) */
+        r.x = best, r.bracket = 0;
     double ef, v = mm_expr_eval_err(c->e, &r.x, &ef);
-    if (s * v < s * f1(c, x0)) {                    /* golden section lost to the candidate */
-        r.x = x0;
-        v = mm_expr_eval_err(c->e, &r.x, &ef);
-    }
+    ef = fmax(ef, v != 0 ? ldexp(1, ilogb(v) - 52) : 0);
     /* f'' by a second difference on a scale H well above the noise */
-    double H = fmax(h / 64, 1e-6 * fmax(fabs(r.x), h)), fl = f1(c, r.x - H), fr = f1(c, r.x + H);
+    double H = fmax(h / 4, 1e-6 * fmax(fabs(r.x), h)), fl = f1(c, r.x - H), fr = f1(c, r.x + H);
     double f2 = fabs(fl - 2 * v + fr) / (H * H);
-    double band = f2 > 0 ? sqrt(2 * ef / f2) : (hi - lo);
-    int at_end = r.x <= a || r.x >= b;
+    double band = f2 > 0 ? sqrt(4 * ef / f2) : (hi - lo);
     *x = r.x;
     *fx = v;
-    *xe = at_end && r.bracket == 0 ? 0 : fmax(r.bracket, fmin(band, hi - lo)) + 2 * DBL_EPSILON * fabs(r.x);
+    *xe = fmax(r.bracket, fmin(band, hi - lo)) + 2 * DBL_EPSILON * fabs(r.x);
     *fe = ef + 0.5 * f2 * (*xe) * (*xe);
 }
 
@@ -221,6 +231,9 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                         "there (a pole)", w == 0 ? "largest" : "smallest", w == 0 ? "largest" : "smallest", xs[k]);
             continue;
         }
+        for (int p = 0; have_int && p < gk.pieces; p++)    /* the finest spacing known around xb */
+            if (xb >= pieces[p].a && xb <= pieces[p].b)
+                hb = fmin(hb, 2 * (pieces[p].b - pieces[p].a) / SCAN);
         double x, v, xe, ve;
         extreme(c, sg, xb, hb, a, b, &x, &v, &xe, &ve);
         mm_res_scalar_err(res, w == 0 ? O_MAX : O_MIN, v, ve, MM_ERR_ESTIMATE);

@@ -331,6 +331,49 @@ static void polyfit_degree_too_high_should_name_the_parameter(void **state)
     assert_string_equal(err.param, "y");
 }
 
+/* ==== the fit in double-double ===================================================== */
+
+static void polyfit_dd_should_give_the_exact_least_squares_line(void **state)
+{
+    (void)state;
+    /* the book's line: 196/67 x + 537/67 (exact rationals by hand) */
+    const double x[3] = {1, 3, 10}, y[3] = {10, 18, 37};
+    double c[2], ce[2], fit[3], fe[3], se[2];
+    mm_poly_fit_dd_info info;
+    assert_int_equal(mm_poly_fit_dd(3, x, y, 1, c, ce, fit, fe, se, NULL, &info, NULL), MM_OK);
+    check_rel(c[0], 196.0 / 67, EPS / 2, "slope, correctly rounded");
+    check_rel(c[1], 537.0 / 67, EPS / 2, "intercept, correctly rounded");
+    assert_true(fabs(c[0] - 196.0 / 67) <= ce[0] + EPS * c[0]);
+    /* rms with the exact line: sqrt(sum r^2 / 3), r = (-63, 81, -18) / 67 */
+    check_rel(info.rms, sqrt((63.0 * 63 + 81.0 * 81 + 18.0 * 18) / (3 * 67.0 * 67)), 2 * EPS, "rms");
+    check_rel(fit[1], 1125.0 / 67, EPS, "fitted value at x = 3");
+    assert_int_equal(info.dof, 1);
+    assert_true(se[0] > 0 && se[1] > 0);
+}
+
+static void polyfit_dd_should_survive_powers_that_cancel(void **state)
+{
+    (void)state;
+    /* exact data of (x - 1000)^3 sampled at 1000..1005: the coefficients of
+     * powers of x are 1, -3000, 3e6, -1e9, which cancel to 0..125 at the
+     * data; in double-double they come out exact */
+    double x[6], y[6], c[4], ce[4], fit[6], fe[6];
+    for (int i = 0; i < 6; i++) {
+        x[i] = 1000 + i;
+        y[i] = (double)i * i * i;
+    }
+    mm_poly_fit_dd_info info;
+    assert_int_equal(mm_poly_fit_dd(6, x, y, 3, c, ce, fit, fe, NULL, NULL, &info, NULL), MM_OK);
+    const double want[4] = {1, -3000, 3e6, -1e9};
+    for (int k = 0; k < 4; k++) {
+        check_rel(c[k], want[k], EPS, "coefficient of (x - 1000)^3");
+        assert_true(fabs(c[k] - want[k]) <= ce[k] + EPS * fabs(want[k]) / 2);
+    }
+    for (int i = 0; i < 6; i++)
+        check_abs(fit[i], y[i], fe[i], "interpolates exact data");
+    check_abs(info.rms, 0, info.rms_err, "rms 0 within its bound");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -345,6 +388,8 @@ int main(void)
         cmocka_unit_test(polyfit_should_recover_a_cubic_from_exact_data),
         cmocka_unit_test(polyfit_rms_should_match_a_hand_computation),
         cmocka_unit_test(polyfit_degree_too_high_should_name_the_parameter),
+        cmocka_unit_test(polyfit_dd_should_give_the_exact_least_squares_line),
+        cmocka_unit_test(polyfit_dd_should_survive_powers_that_cancel),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
