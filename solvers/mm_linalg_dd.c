@@ -41,6 +41,30 @@ static int all_finite(const char *param, size_t count, const double *a, mm_error
     return a ? mm_linalg_check_finite(param, count, a, err) : MM_OK;
 }
 
+/* 2^-e for the largest |a|: the scaled matrix has entries below 2 in size,
+ * exactly (so nothing squared in the bounds can overflow or underflow);
+ * 1 for a zero matrix.  even: an even power, whose square root is exact. */
+static double pow2_scale(size_t count, const double *a, int even)
+{
+    double big = 0;
+    for (size_t k = 0; k < count; k++)
+        big = fmax(big, fabs(a[k]));
+    if (!(big > 0))
+        return 1;
+    int e = ilogb(big);
+    if (even && (e & 1))
+        e++;
+    return ldexp(1, -e);
+}
+
+static double *scaled_copy(size_t count, const double *a, double s)
+{
+    double *c = malloc((count ? count : 1) * sizeof *c);
+    for (size_t k = 0; c && k < count; k++)
+        c[k] = a[k] * s;
+    return c;
+}
+
 /* ---- Jacobi ------------------------------------------------------------------ */
 
 /* Diagonalise the symmetric n x n c (row-major, dd) by cyclic Jacobi: on
@@ -352,21 +376,31 @@ int mm_linalg_sygv_dd(int n, const double *K, const double *M, double *lambda, d
     if (rc)
         return rc;
     size_t nn = (size_t)n * (size_t)n;
+    /* K and M scaled by powers of 2 (exact): lambda scales by sk / sm, the
+     * M-normalised modes by sqrt(sm) (sm an even power: exact too) */
+    double sk = pow2_scale(nn, K, 0), sm = M ? pow2_scale(nn, M, 1) : 1, back = sm / sk, vback = sqrt(sm);
+    double *Ks = scaled_copy(nn, K, sk), *Ms = M ? scaled_copy(nn, M, sm) : NULL;
     mm_dd *theta = malloc((size_t)n * sizeof *theta), *v = malloc(nn * sizeof *v);
     double *bound = malloc((size_t)n * sizeof *bound);
-    if (!theta || !v || !bound) {
+    if (!Ks || (M && !Ms) || !theta || !v || !bound) {
         rc = mm_error_set(err, MM_ENOMEM, "", "out of memory for a double-double eigenproblem");
         goto out;
     }
-    if ((rc = pencil(n, K, M, theta, v, bound, err)))
+    if ((rc = pencil(n, Ks, Ms, theta, v, bound, err)))
         goto out;
     for (int j = 0; j < n; j++) {
-        lambda[j] = mm_dd_val(theta[j]);
-        lambda_err[j] = bound[j] + mm_dd_abs(mm_dd_sub(theta[j], mm_dd_from(lambda[j])));
+        mm_dd t = mm_dd_mul_d(theta[j], back);
+        lambda[j] = mm_dd_val(t);
+        lambda_err[j] = bound[j] * back + mm_dd_abs(mm_dd_sub(t, mm_dd_from(lambda[j])));
+        if (!isfinite(lambda[j]) || !isfinite(lambda_err[j])) {
+            rc = mm_error_set(err, MM_ENONFINITE, "K", "the eigenvalues overflow the doubles (K / M beyond "
+                              "1e308): choose other units for K and M");
+            goto out;
+        }
     }
     if (V) {
         for (size_t k = 0; k < nn; k++)
-            V[k] = mm_dd_val(v[k]);
+            V[k] = mm_dd_val(v[k]) * vback;
         for (int j = 0; j < n; j++) {             /* mm_linalg.h's sign convention */
             double vmax = 0;
             for (int i = 0; i < n; i++)
@@ -381,7 +415,7 @@ int mm_linalg_sygv_dd(int n, const double *K, const double *M, double *lambda, d
         }
     }
 out:
-    free(bound); free(v); free(theta);
+    free(bound); free(v); free(theta); free(Ms); free(Ks);
     return rc;
 }
 
@@ -394,6 +428,7 @@ int mm_linalg_svdvals_dd(int m, int n, const double *A, double *s, double *s_err
                             "got %d x %d)", MM_LINALG_DD_MAX_N, m, n);
     if ((rc = all_finite("A", (size_t)m * (size_t)n, A, err)))
         return rc;
+    double sa = pow2_scale((size_t)m * (size_t)n, A, 0);   /* exact: singular values scale by sa */
     double *H = calloc((size_t)N * (size_t)N, sizeof *H), *bound = malloc((size_t)N * sizeof *bound);
     mm_dd *theta = malloc((size_t)N * sizeof *theta), *v = malloc((size_t)N * (size_t)N * sizeof *v);
     if (!H || !bound || !theta || !v) {
@@ -402,14 +437,14 @@ int mm_linalg_svdvals_dd(int m, int n, const double *A, double *s, double *s_err
     }
     for (int i = 0; i < m; i++)                   /* H = [0 A; A^T 0] */
         for (int j = 0; j < n; j++)
-            H[(size_t)i * N + (size_t)(m + j)] = H[(size_t)(m + j) * N + (size_t)i] = A[(size_t)i * n + j];
+            H[(size_t)i * N + (size_t)(m + j)] = H[(size_t)(m + j) * N + (size_t)i] = A[(size_t)i * n + j] * sa;
     if ((rc = pencil(N, H, NULL, theta, v, bound, err)))
         goto out;
     for (int i = 0; i < k; i++) {                 /* the k largest, descending */
-        mm_dd t = theta[N - 1 - i];
+        mm_dd t = mm_dd_mul_d(theta[N - 1 - i], 1 / sa);
         double val = mm_dd_val(t);
         s[i] = val > 0 ? val : 0;
-        s_err[i] = bound[N - 1 - i] + mm_dd_abs(mm_dd_sub(t, mm_dd_from(s[i])));
+        s_err[i] = bound[N - 1 - i] / sa + mm_dd_abs(mm_dd_sub(t, mm_dd_from(s[i])));
     }
 out:
     free(v); free(theta); free(bound); free(H);
@@ -461,26 +496,30 @@ int mm_linalg_solve_dd(int n, const double *A, const double *b, double sigma_min
     if (!(sigma_min > 0))
         return mm_error_set(err, MM_ESINGULAR, "A", "the matrix 'A' is singular to the precision of the "
                             "computation: no bound of its smallest singular value above 0");
+    /* A and b scaled by powers of 2 (exact): x = x' sa / sb */
+    double sa = pow2_scale((size_t)n * (size_t)n, A, 0), sb = pow2_scale((size_t)n, b, 0), xs = sa / sb;
+    double *As = scaled_copy((size_t)n * (size_t)n, A, sa), *bs = scaled_copy((size_t)n, b, sb);
+    sigma_min *= sa;
     mm_dd *lu = malloc((size_t)n * (size_t)(n + 1) * sizeof *lu);
     mm_dd *xd = malloc((size_t)n * sizeof *xd), *d = malloc((size_t)n * sizeof *d);
     mm_dd *r = malloc((size_t)n * sizeof *r);
-    if (!lu || !xd || !d || !r) {
+    if (!As || !bs || !lu || !xd || !d || !r) {
         rc = mm_error_set(err, MM_ENOMEM, "", "out of memory for a double-double solve");
         goto out;
     }
     double rn = 0, size = 0;
     for (int step = 0; step < 2; step++) {        /* solve, then refine once */
         for (int i = 0; i < n; i++) {
-            mm_dd t = mm_dd_from(b[i]);
-            double a = fabs(b[i]);
+            mm_dd t = mm_dd_from(bs[i]);
+            double a = fabs(bs[i]);
             for (int k = 0; k < n && step > 0; k++) {
-                t = mm_dd_sub(t, mm_dd_mul_d(xd[k], A[(size_t)i * n + k]));
-                a += fabs(A[(size_t)i * n + k] * xd[k].hi);
+                t = mm_dd_sub(t, mm_dd_mul_d(xd[k], As[(size_t)i * n + k]));
+                a += fabs(As[(size_t)i * n + k] * xd[k].hi);
             }
             r[i] = t;
             size += step > 0 ? a * a : 0;
             for (int k = 0; k < n; k++)
-                lu[i * (n + 1) + k] = mm_dd_from(A[(size_t)i * n + k]);
+                lu[i * (n + 1) + k] = mm_dd_from(As[(size_t)i * n + k]);
             lu[i * (n + 1) + n] = t;
         }
         if (gepp(n, lu, d) != 0) {
@@ -493,11 +532,11 @@ int mm_linalg_solve_dd(int n, const double *A, const double *b, double sigma_min
     }
     size = 0;                                     /* the final residual b - A x */
     for (int i = 0; i < n; i++) {
-        mm_dd t = mm_dd_from(b[i]);
-        double a = fabs(b[i]);
+        mm_dd t = mm_dd_from(bs[i]);
+        double a = fabs(bs[i]);
         for (int k = 0; k < n; k++) {
-            t = mm_dd_sub(t, mm_dd_mul_d(xd[k], A[(size_t)i * n + k]));
-            a += fabs(A[(size_t)i * n + k] * xd[k].hi);
+            t = mm_dd_sub(t, mm_dd_mul_d(xd[k], As[(size_t)i * n + k]));
+            a += fabs(As[(size_t)i * n + k] * xd[k].hi);
         }
         r[i] = t;
         size += a * a;
@@ -505,17 +544,18 @@ int mm_linalg_solve_dd(int n, const double *A, const double *b, double sigma_min
     rn = norm2(n, r) + (2.0 * n + 2) * MM_DD_EPS * sqrt(size);
     double fe = 1.01 * rn / sigma_min;            /* ||x - x_true||_2 <= ||r|| ||A^-1|| */
     for (int i = 0; i < n; i++) {
+        xd[i] = mm_dd_mul_d(xd[i], xs);
         x[i] = mm_dd_val(xd[i]);
         if (!isfinite(x[i])) {
             rc = mm_error_set(err, MM_ENONFINITE, "b", "the solution overflows (entries of 'A' or 'b' too "
                               "large or too small)");
             goto out;
         }
-        x_err[i] = fe + mm_dd_abs(mm_dd_sub(xd[i], mm_dd_from(x[i])));
+        x_err[i] = fe * xs + mm_dd_abs(mm_dd_sub(xd[i], mm_dd_from(x[i])));
     }
     if (residual)
-        *residual = rn;
+        *residual = rn / sb;
 out:
-    free(r); free(d); free(xd); free(lu);
+    free(r); free(d); free(xd); free(lu); free(bs); free(As);
     return rc;
 }

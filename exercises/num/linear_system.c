@@ -41,7 +41,7 @@ static const mm_param params[] = {
                      "the size a learner types (each extra row costs n^2 work in 32-digit arithmetic); entries "
                      "of any size a double holds (to 1e300): accuracy depends on cond(A), not on size"},
     [P_B] = {"b", "right-hand side", "", MM_VECTOR, 0, -1e300, 1e300, "10,0,1000", NULL, 0, MAXN,
-             .help = "one number per row of A"},
+             .help = "one number per row of A, of any size a double holds (to 1e300)"},
 };
 
 enum { O_X, O_COND, O_RESIDUAL, O_BERR, O_DIGITS, O_LU_ERROR, O_SOLUTION, O_SIGMAS, O_XS, O_SIGMA };

@@ -38,7 +38,8 @@ enum { P_F, P_A, P_B, P_N, P_TOL };
 
 static const mm_param params[] = {
     [P_F] = {"f", "function f(x)", "", MM_EXPR, 0, 0, 0, "x^3+sin(x)-2", .vars = "x",
-             .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e"},
+             .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e; at most 512 characters, "
+                     "so that one evaluation stays within microseconds"},
     [P_A] = {"a", "left end of the interval", "", MM_REAL, -1, -1e6, 1e6,
              .help = "search from x = a; |a| <= 1e6 keeps (b - a) / n and tol on one scale"},
     [P_B] = {"b", "right end of the interval", "", MM_REAL, 10, -1e6, 1e6, .help = "to x = b > a; |b| <= 1e6"},
@@ -212,6 +213,8 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         double e = fmax(w, band);
         double *row = t->cell + 5 * i;
         row[0] = z->x, row[1] = e, row[2] = fx, row[3] = fe, row[4] = z->iterations;
+        if (!isfinite(fe))                    /* f overflows in another rounding mode or beside x */
+            t->text[5 * i + 3] = "not estimated: f is not finite beside x";
         sr->x[i] = z->x;
         sr->y[i] = 0;
         nsuspect += (z->flags & MM_ROOTS_SUSPECT) != 0;

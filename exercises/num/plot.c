@@ -24,6 +24,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "mm_exhelp.h"
 #include "mm_expr.h"
@@ -33,14 +34,21 @@
 #define MAXPTS 2001
 #define GK_MAX 400             /* most subintervals of the adaptive rule */
 #define GL_MAX 2048            /* most panels of the composite Gauss rule */
-#define SCAN 16                /* points per adaptive piece searched for extremes */
+#define SCAN 8                 /* points per adaptive piece searched for extremes */
+/* The work beyond the samples, in evaluations of f: an evaluation costs
+ * about 0.06 us per character of f (30 us for a 511-character power
+ * tower), so WORK / length evaluations take about 60 ms whatever f is.  The
+ * quadratures and the search for extremes share it (the defaults, 14
+ * characters, stay at 400 pieces and 2048 panels). */
+#define WORK 1.0e6
 #define U (DBL_EPSILON / 2)
 
 enum { P_F, P_A, P_B, P_POINTS };
 
 static const mm_param params[] = {
     [P_F] = {"f", "function f(x)", "", MM_EXPR, 0, 0, 0, "sin(x)/(x^2+1)", .vars = "x",
-             .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e"},
+             .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e; at most 512 characters, "
+                     "so that one evaluation stays within microseconds"},
     [P_A] = {"a", "left end of the plot", "", MM_REAL, -5, -1e3, 1e3,
              .help = "the plot starts at x = a; |a| <= 1000, so that 400 adaptive pieces resolve a wave of "
                      "period 1 over the whole interval"},
@@ -134,11 +142,11 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
 {
     const double a = in[P_A].x, b = in[P_B].x;
     const int n = (int)in[P_POINTS].x;
-    double *xs = mm_res_alloc(res, 3 * (size_t)n * sizeof *xs);
+    double *xs = mm_res_alloc(res, 2 * (size_t)n * sizeof *xs);
     mm_quad_piece *pieces = mm_res_alloc(res, GK_MAX * sizeof *pieces);
     if (!xs || !pieces)
         return MM_ENOMEM;
-    double *ys = xs + n, *es = ys + n;
+    double *ys = xs + n;
     mm_linspace(a, b, n, xs);
     mm_expr_eval_bulk(c->e, xs, (size_t)n, ys);
     c->evals += n;
@@ -189,20 +197,24 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                     "the plot's height: the plot misses detail; raise points", dev, xdev,
                     height > 0 ? 100 * dev / height : 100.0);
 
-    /* the area, two ways (eqs. 4-5) */
+    /* the area, two ways (eqs. 4-5), within the work budget */
+    double budget = WORK / fmax(16, (double)strlen(in[P_F].text));
     mm_quad_options qo;
     mm_quad_options_init(&qo);
-    qo.max_pieces = GK_MAX;
+    qo.max_pieces = (int)fmax(16, fmin(GK_MAX, 0.4 * budget / 30));   /* 15 evaluations, twice, a piece */
+    int gl_max = 16;
+    while (2 * gl_max <= GL_MAX && 2 * gl_max * 10 <= 0.4 * budget)  /* the doubling costs ~ 2 m 5 */
+        gl_max *= 2;
     mm_quad_result gk = {0}, gl = {0};
     mm_error qerr;
     int have_int = 0;
     if (!bad) {
         int rc = mm_quad_gk(feval, c, a, b, &qo, pieces, &gk, &qerr);
         int m0 = 8;
-        while (5 * m0 < n)                           /* start at least as fine as the plot */
+        while (5 * m0 < n && 2 * m0 <= gl_max / 4)   /* start at least as fine as the plot */
             m0 *= 2;
         if (rc == MM_OK)
-            rc = mm_quad_gl(feval, c, a, b, m0, GL_MAX, 1e-11 * gk.abs_value, &gl, &qerr);
+            rc = mm_quad_gl(feval, c, a, b, m0, gl_max, 1e-11 * gk.abs_value, &gl, &qerr);
         if (rc == MM_ENONFINITE)
             mm_res_warn(res, "the integral of f over [%g, %g] is not computed: f is not finite between the plot "
                         "samples (a pole or a domain error the plot does not show)", a, b);
@@ -213,32 +225,34 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
 
     /* extremes: the best sample or point of the adaptive partition, refined
      * between its neighbours (eq. 6) */
-    for (int w = 0; w < 2; w++) {
-        double sg = w == 0 ? 1 : -1, best = ys[w == 0 ? imax : imin], xb = xs[w == 0 ? imax : imin];
-        double hb = (b - a) / (n - 1);
-        int from_plot = 1;
-        for (int p = 0; have_int && p < gk.pieces; p++)
-            for (int k = 0; k <= SCAN; k++) {
-                double x = pieces[p].a + (pieces[p].b - pieces[p].a) * k / SCAN, v = f1(c, x);
-                if (isfinite(v) && sg * v > sg * best) {
-                    best = v, xb = x, hb = (pieces[p].b - pieces[p].a) / SCAN;
-                    from_plot = 0;
+    double best[2] = {ys[imax], ys[imin]}, xb[2] = {xs[imax], xs[imin]}, hb[2];
+    int from_plot[2] = {1, 1};
+    hb[0] = hb[1] = (b - a) / (n - 1);
+    for (int p = 0; have_int && p < gk.pieces; p++)
+        for (int k = 0; k <= SCAN; k++) {
+            double x = pieces[p].a + (pieces[p].b - pieces[p].a) * k / SCAN, v = f1(c, x);
+            for (int w = 0; w < 2 && isfinite(v); w++)
+                if ((w == 0 ? v > best[0] : v < best[1])) {
+                    best[w] = v, xb[w] = x, hb[w] = (pieces[p].b - pieces[p].a) / SCAN;
+                    from_plot[w] = 0;
                 }
-            }
+        }
+    for (int w = 0; w < 2; w++) {
+        double sg = w == 0 ? 1 : -1;
         int k = w == 0 ? imax : imin;
-        if (from_plot && ((k > 0 && !isfinite(ys[k - 1])) || (k < n - 1 && !isfinite(ys[k + 1])))) {
+        if (from_plot[w] && ((k > 0 && !isfinite(ys[k - 1])) || (k < n - 1 && !isfinite(ys[k + 1])))) {
             mm_res_warn(res, "no %s value: f is not finite next to its %s sample (x = %.6g), so it is not bounded "
                         "there (a pole)", w == 0 ? "largest" : "smallest", w == 0 ? "largest" : "smallest", xs[k]);
             continue;
         }
         for (int p = 0; have_int && p < gk.pieces; p++)    /* the finest spacing known around xb */
-            if (xb >= pieces[p].a && xb <= pieces[p].b)
-                hb = fmin(hb, 2 * (pieces[p].b - pieces[p].a) / SCAN);
+            if (xb[w] >= pieces[p].a && xb[w] <= pieces[p].b)
+                hb[w] = fmin(hb[w], 2 * (pieces[p].b - pieces[p].a) / SCAN);
         double x, v, xe, ve;
-        extreme(c, sg, xb, hb, a, b, &x, &v, &xe, &ve);
+        extreme(c, sg, xb[w], hb[w], a, b, &x, &v, &xe, &ve);
         mm_res_scalar_err(res, w == 0 ? O_MAX : O_MIN, v, ve, MM_ERR_ESTIMATE);
         mm_res_scalar_err(res, w == 0 ? O_XMAX : O_XMIN, x, xe, MM_ERR_ESTIMATE);
-        if (!from_plot && sg * (v - ys[w == 0 ? imax : imin]) > 0.02 * height)
+        if (!from_plot[w] && sg * (v - ys[k]) > 0.02 * height)
             mm_res_warn(res, "the plotted samples miss the %s value: between them f reaches %.6g at x = %.6g; raise "
                         "points to see it", w == 0 ? "largest" : "smallest", v, x);
     }
@@ -258,14 +272,19 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                          "estimates, eqs. (4)-(5)", gk.value, gl.value, gk.err + gl.err);
         /* eq. (3): the trapezoid rule on the plot's samples, with the rounding
          * of f at each sample (mm_expr_eval_err) and of the compensated sum */
-        double hstep = (b - a) / (n - 1), tr = 0, trc = 0, tre = 0;
+        double hstep = (b - a) / (n - 1), tr = 0, trc = 0, tre = 0, ef = 0;
+        for (int i = 0; i < n; i += (n + 31) / 32) {       /* f's rounding, at 33 samples at most */
+            double e;
+            mm_expr_eval_err(c->e, &xs[i], &e);
+            ef = fmax(ef, e);
+        }
         for (int i = 0; i < n; i++) {
-            mm_expr_eval_err(c->e, &xs[i], &es[i]);
             double wgt = (i == 0 || i == n - 1 ? 0.5 : 1) * hstep, term = wgt * ys[i], t = tr + term;
             trc += fabs(tr) >= fabs(term) ? (tr - t) + term : (term - t) + tr;
             tr = t;
-            tre += wgt * es[i] + 2 * U * fabs(term);
+            tre += 2 * U * fabs(term);
         }
+        tre += 2 * ef * (b - a);                          /* twice the largest rounding of f seen */
         mm_res_scalar_err(res, O_INT_PLOT, tr + trc, tre, MM_ERR_ESTIMATE);
         if (!gk.converged)
             mm_res_warn(res, "the integral is uncertain: %.6g with an error estimate of %.2g (f changes too fast "
