@@ -326,7 +326,6 @@ const mm_exercise mm_ex_num_complex = {
     .summary = "Square, multiply, divide, raise to a power or take roots of complex numbers, on the Argand plane.",
     .tags = "complex numbers, polar form, de Moivre, Argand plane",
     .theory = "exercises/num/complex.md",
-    .script = "exercises/num/complex.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -368,7 +368,6 @@ const mm_exercise mm_ex_num_nonlinear_roots = {
     .summary = "Every root of f(x) = 0 on an interval: subdivide, keep the sign changes, refine each by Brent's method.",
     .tags = "nonlinear equation, roots, bisection, Brent, sign change",
     .theory = "exercises/num/nonlinear_roots.md",
-    .script = "exercises/num/nonlinear_roots.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -7,7 +7,7 @@ for i = 1:n
     if fs(i) == 0                            % a root on the grid, counted once
         x(end + 1) = xs(i);
     elseif fs(i) * fs(i + 1) < 0
-        r = fzero(f, [xs(i), xs(i + 1)], optimset('TolX', tol));
+        r = fzero(f, [xs(i), xs(i + 1)], optimset('TolX', tol / 8));   % well within tol
         if abs(f(r)) <= max(abs(fs(i)), abs(fs(i + 1)))   % |f| grew: a pole, not a root
             x(end + 1) = r;
         end

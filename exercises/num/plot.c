@@ -329,7 +329,6 @@ const mm_exercise mm_ex_num_plot = {
     .summary = "Plot any f(x) on an interval; read off its extremes and the area under it, and see what sampling hides.",
     .tags = "plotting, sampling, extrema, quadrature, Gauss-Kronrod, Gauss-Legendre",
     .theory = "exercises/num/plot.md",
-    .script = "exercises/num/plot.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

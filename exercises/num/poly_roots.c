@@ -46,7 +46,7 @@ static const mm_output outputs[] = {
     [O_DEGREE] = MM_SCALAR("degree", "degree of p", "", .flags = MM_ANSWER | MM_EXACT),
     [O_REAL] = MM_SCALAR("real_roots", "number of real roots (a root whose error disc meets the real axis counts "
                          "as real)", "", .flags = MM_ANSWER),
-    [O_MAXERR] = MM_SCALAR("max_err", "largest error bound of a root", "", .flags = MM_EXACT),
+    [O_MAXERR] = MM_SCALAR("max_err", "largest error bound of a root (a size: known to a factor of 2)", ""),
     [O_ROOTS] = MM_TABLE("roots", "the roots, each within err of an exact root of p", root_cols, root_units),
     [O_PLANE] = MM_SERIES("roots", "roots on the complex plane", "", "Re", "", .mark = "dots", .aspect = "equal"),
     [O_P] = MM_SERIES("p", "p(x) on the real axis", "", "x", ""),
@@ -169,7 +169,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                                  unsure, nreal - (unsure - unsure % 2), nreal);
     else
         sr->exact = 1;
-    mm_res_scalar(res, O_MAXERR, max_err);
+    mm_res_scalar_err(res, O_MAXERR, max_err, 0.5 * max_err, MM_ERR_ESTIMATE);
 
     if (d == 0) {
         mm_res_warn(res, "p is a nonzero constant: it has no roots");
@@ -254,7 +254,6 @@ const mm_exercise mm_ex_num_poly_roots = {
     .summary = "All real and complex roots of a polynomial like MATLAB's roots(p), each with its error estimate.",
     .tags = "polynomial, roots, companion matrix, conditioning, multiple roots",
     .theory = "exercises/num/poly_roots.md",
-    .script = "exercises/num/poly_roots.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -7,7 +7,7 @@ d = numel(q) - 1;
 dq = q(1:end-1) .* (d:-1:1);                 % p'
 % a change of eps/2 in every coefficient moves a simple root by about this
 % (a cluster of m roots moves by about eps^(1/m): more than this says)
-err = (abs(polyval(q, z)) + eps/2 * polyval(abs(q), abs(z))) ./ abs(polyval(dq, z));
+err = eps/2 * polyval(abs(q), abs(z)) ./ abs(polyval(dq, z));
 out.real_roots = sum(abs(imag(z)) <= err);   % a root whose error disc meets the real axis is real
 if isempty(err)
     out.max_err = 0;

@@ -140,7 +140,23 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (info.dof == 0)
             tc->text[5 * k + 3] = "no data left over";
     }
-    mm_res_scalar_err(res, O_RMS, info.rms, info.rms_err, MM_ERR_BOUND);
+    /* the rms of the exact fit, to its bound; when the data are fitted
+     * exactly (interpolation) it is 0 to rounding, and a fit in double
+     * (MATLAB's, evaluated by polyval in powers of x) leaves residuals of
+     * about (2d + 2) u sum |c_k| |x|^k + (n + d) u max |y|: that is its
+     * error then */
+    double terms = 0;
+    for (int i = 0; i < n; i++) {
+        double tk = 0;
+        for (int k = 0; k <= d; k++)
+            tk = tk * fabs(x[i]) + fabs(c[k]);
+        terms = fmax(terms, tk);
+    }
+    double ylevel = (2.0 * d + 2) * U * terms + (n + m) * U * mm_maxabs(y, n);
+    if (info.rms <= ylevel)
+        mm_res_scalar_err(res, O_RMS, info.rms, info.rms_err + ylevel, MM_ERR_ESTIMATE);
+    else
+        mm_res_scalar_err(res, O_RMS, info.rms, info.rms_err, MM_ERR_BOUND);
     mm_res_scalar_err(res, O_COND, info.cond, info.cond_err, MM_ERR_BOUND);
 
     double ymax = mm_maxabs(y, n), xlo = x[0], xhi = x[0], magmax = 0, cdev = 0, ctol = 0;
@@ -344,7 +360,6 @@ const mm_exercise mm_ex_num_polyfit = {
     .summary = "The polynomial of a given degree closest to data points in the least-squares sense, like MATLAB's polyfit.",
     .tags = "least squares, regression, polynomial fit, normal equations",
     .theory = "exercises/num/polyfit.md",
-    .script = "exercises/num/polyfit.m",
     .params = params,
     .n_params = MM_COUNT(params),
     .outputs = outputs,

@@ -746,7 +746,10 @@ static void eigen_ill_conditioned_mass_should_give_true_eigenvalues_and_warn(voi
         check_rel(v, lam[j], 1e-14, "lambda with M = Hilbert-12");
     }
     assert_true(warned(&a, "cond(M) = 1.68e+16"));
-    assert_true(scalar(&a, "matlab_error") > 1e-4);
+    double worst = 0;                              /* eig in double, beside: off by up to 1e-3 of lambda_max */
+    for (int j = 0; j < 12; j++)
+        worst = fmax(worst, fabs(cell(&a, "eigen", j, column(&a, "eigen", "lambda_matlab"), NULL) - lam[j]));
+    assert_true(worst > 1e-4 * lam[11]);
     done(&a);
 }
 
