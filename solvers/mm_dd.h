@@ -10,7 +10,8 @@
  * operation has a relative error below 4 u^2 (u = 2^-53, so ~5e-32), the
  * bound the error analyses built on it use (MM_DD_EPS).
  *
- * Header only, pure functions: no state, safe from any thread.
+ * Pure functions: no state, safe from any thread.  The real operations are
+ * inline here; the complex ones, with their error bounds, in mm_dd.c.
  */
 #ifndef MM_DD_H
 #define MM_DD_H
@@ -94,5 +95,42 @@ static inline double mm_dd_abs(mm_dd a) { return fabs(a.hi + a.lo); }
 
 /* a rounded to the nearest double (|result - a| <= ulp/2) */
 static inline double mm_dd_val(mm_dd a) { return a.hi + a.lo; }
+
+/* ---- complex numbers in double-double, each with a bound of its error --------- */
+
+/* re + i im, and err: |this - the exact value it stands for| <= err (the
+ * modulus of the error), carried through every operation (a running error
+ * analysis: each operation adds its own rounding, a few MM_DD_EPS of its
+ * size, to the errors its operands bring). */
+typedef struct mm_cdd {
+    mm_dd re, im;
+    double err;
+} mm_cdd;
+
+/* x + i y exactly (err 0); -0 becomes +0. */
+static inline mm_cdd mm_cdd_exact(double x, double y)
+{
+    return (mm_cdd){mm_dd_from(x + 0.0), mm_dd_from(y + 0.0), 0};
+}
+
+/* |z| of the value rounded to double (a size for the bounds). */
+double mm_cdd_abs(mm_cdd z);
+
+/* a b (multiplied out: (ac - bd) + i (ad + bc)). */
+mm_cdd mm_cdd_mul(mm_cdd a, mm_cdd b);
+
+/* a / b = a conj(b) / |b|^2, b scaled by a power of 2 first so that |b|^2
+ * cannot overflow or underflow.  b != 0. */
+mm_cdd mm_cdd_div(mm_cdd a, mm_cdd b);
+
+/* a^n by repeated squaring, n >= 0. */
+mm_cdd mm_cdd_pow(mm_cdd a, int n);
+
+/* Root k (0 <= k < n) of a^(1/n), r^(1/n) e^(i (theta + 2 pi k) / n) with
+ * r = |a| and theta = arg a as given in double: from that polar form, two
+ * Newton steps on w^n = a; err = 2 |w^n - a| / |n w^(n-1)| (Kantorovich, a
+ * simple root).  When a lies on an axis the angle is a rational multiple of
+ * pi, and a root on an axis gets its zero part exactly.  a = 0 gives 0. */
+mm_cdd mm_cdd_root(mm_cdd a, double r, double theta, int n, int k);
 
 #endif

@@ -264,4 +264,24 @@ int mm_linalg_svdvals_dd(int m, int n, const double *A, double *s, double *s_err
 int mm_linalg_solve_dd(int n, const double *A, const double *b, double sigma_min, double *x,
                        double *x_err, double *residual, mm_error *err);
 
+/* r = b - A x for the n x n A, computed in double-double and rounded: the
+ * true residual of the stored x to ~1e-32 of mag, where mag[i] =
+ * sum_j |A_ij x_j| + |b_i| (also returned: the size of the terms, the
+ * scale of every rounding bound).  Cannot fail. */
+void mm_linalg_residual_dd(int n, const double *A, const double *x, const double *b, double *r, double *mag);
+
+/* ||v||_2 without overflow or underflow in the squares.  Cannot fail. */
+double mm_linalg_norm2(int n, const double *v);
+
+/* For eigenpairs printed in double (lambda with its bound lambda_err, V the
+ * M-normalised modes of the pencil K, M, n x n): how far they are from
+ * eq. K v = lambda M v and from V^T M V = I, each relative to what rounding
+ * the modes and eigenvalues to 16 digits explains (computed in
+ * double-double, component by component):
+ *   *res  = max |K v - lambda M v|_i / (u (|K||v| + |lambda||M||v|)_i + lambda_err (|M||v|)_i),
+ *   *orth = max |v_j^T M v_l - delta_jl| / (2 u |v_j|^T |M| |v_l|);
+ * both at most 1 for modes right to their last digit.  Cannot fail. */
+void mm_linalg_sygv_rounding(int n, const double *K, const double *M, const double *lambda,
+                             const double *lambda_err, const double *V, double *res, double *orth);
+
 #endif

@@ -559,3 +559,66 @@ out:
     free(r); free(d); free(xd); free(lu); free(bs); free(As);
     return rc;
 }
+
+/* ---- rounding of results printed in double -------------------------------------- */
+
+void mm_linalg_residual_dd(int n, const double *A, const double *x, const double *b, double *r, double *mag)
+{
+    assert(A && x && b && r && mag);
+    for (int i = 0; i < n; i++) {
+        mm_dd s = mm_dd_from(b[i]);
+        mag[i] = fabs(b[i]);
+        for (int j = 0; j < n; j++) {
+            s = mm_dd_sub(s, mm_dd_two_prod(A[(size_t)i * n + j], x[j]));
+            mag[i] += fabs(A[(size_t)i * n + j] * x[j]);
+        }
+        r[i] = mm_dd_val(s);
+    }
+}
+
+double mm_linalg_norm2(int n, const double *v)
+{
+    double big = 0, s = 0;
+    for (int i = 0; i < n; i++)
+        big = fmax(big, fabs(v[i]));
+    if (big == 0 || !isfinite(big))
+        return big;
+    for (int i = 0; i < n; i++)
+        s += (v[i] / big) * (v[i] / big);
+    return big * sqrt(s);
+}
+
+void mm_linalg_sygv_rounding(int n, const double *K, const double *M, const double *lambda,
+                             const double *lambda_err, const double *V, double *res, double *orth)
+{
+    const double u = DBL_EPSILON / 2;
+    double wres = 0, wort = 0;
+    for (int j = 0; j < n; j++) {
+        for (int i = 0; i < n; i++) {
+            mm_dd r = mm_dd_from(0);
+            double a = 0, m = 0;
+            for (int k = 0; k < n; k++) {
+                double v = V[k * n + j];
+                r = mm_dd_add(r, mm_dd_two_prod(K[i * n + k], v));
+                r = mm_dd_sub(r, mm_dd_mul_d(mm_dd_two_prod(M[i * n + k], v), lambda[j]));
+                a += fabs(K[i * n + k] * v) + fabs(lambda[j]) * fabs(M[i * n + k] * v);
+                m += fabs(M[i * n + k] * v);
+            }
+            double bi = u * a + lambda_err[j] * m + 8 * n * MM_DD_EPS * a;
+            wres = fmax(wres, mm_dd_abs(r) / (1.01 * bi + DBL_MIN));
+        }
+        for (int l = 0; l <= j; l++) {                  /* v_j^T M v_l - delta_jl */
+            mm_dd g = mm_dd_from(0);
+            double a = 0;
+            for (int i = 0; i < n; i++)
+                for (int k = 0; k < n; k++) {
+                    g = mm_dd_add(g, mm_dd_mul_d(mm_dd_two_prod(V[i * n + j], M[i * n + k]), V[k * n + l]));
+                    a += fabs(V[i * n + j] * M[i * n + k] * V[k * n + l]);
+                }
+            double dev = mm_dd_abs(mm_dd_sub(g, mm_dd_from(j == l)));
+            wort = fmax(wort, dev / (1.01 * (2 * u + 4 * n * n * MM_DD_EPS) * a + DBL_MIN));
+        }
+    }
+    *res = wres;
+    *orth = wort;
+}

@@ -399,6 +399,60 @@ out:
     return rc;
 }
 
+int mm_poly_fit_values(int npts, const double *x, const double *y, int degree, double mu, double scale,
+                       double *fit_svd, double *fit_ne, double *bnorm_svd, double *bnorm_ne, mm_error *err)
+{
+    int rc;
+    assert(x && y && fit_svd && fit_ne && bnorm_svd && bnorm_ne);
+    if (npts < 1 || npts > MM_POLY_MAX_POINTS || degree < 0 || degree > MM_POLY_MAX_FIT_DEGREE || !(scale > 0))
+        return mm_error_set(err, MM_ERANGE, "degree", "bad sizes for a fit (%d points, degree %d)", npts, degree);
+    const int n = npts, m = degree + 1;
+    double *t = malloc((size_t)n * sizeof *t), *V = malloc((size_t)n * (size_t)m * sizeof *V);
+    double *N = calloc((size_t)m * (size_t)m, sizeof *N), *rhs = calloc((size_t)m, sizeof *rhs);
+    double *a = malloc((size_t)m * sizeof *a), *b = malloc((size_t)m * sizeof *b), *pw = malloc(2 * (size_t)m * sizeof *pw);
+    if (!t || !V || !N || !rhs || !a || !b || !pw) {
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory for polyfit");
+        goto out;
+    }
+    for (int i = 0; i < n; i++) {                    /* V (highest power first), A^T A and A^T y */
+        t[i] = (x[i] - mu) / scale;
+        pw[0] = 1;
+        for (int k = 1; k <= 2 * degree; k++)
+            pw[k] = pw[k - 1] * t[i];
+        for (int k = 0; k <= degree; k++)
+            V[(size_t)i * m + (size_t)(degree - k)] = pw[k];
+        for (int j = 0; j <= degree; j++) {
+            rhs[j] += pw[j] * y[i];
+            for (int k = 0; k <= degree; k++)
+                N[j * m + k] += pw[j + k];
+        }
+    }
+    mm_linalg_solve_info si;
+    if ((rc = mm_linalg_lstsq(n, m, 1, V, y, 0.0, b, NULL, NULL, NULL, err)) ||
+        (rc = mm_linalg_solve(m, 1, N, rhs, a, &si, err)))
+        goto out;
+    *bnorm_svd = *bnorm_ne = 0;
+    for (int k = 0; k < m; k++) {
+        *bnorm_svd += b[k] * b[k];
+        *bnorm_ne += a[k] * a[k];
+    }
+    *bnorm_svd = sqrt(*bnorm_svd);
+    *bnorm_ne = sqrt(*bnorm_ne);
+    for (int i = 0; i < n; i++) {                    /* Horner in t; a is lowest power first */
+        double vs = 0, vn = 0;
+        for (int k = 0; k <= degree; k++) {
+            vs = vs * t[i] + b[k];
+            vn = vn * t[i] + a[degree - k];
+        }
+        fit_svd[i] = vs;
+        fit_ne[i] = vn;
+    }
+    rc = MM_OK;
+out:
+    free(pw); free(b); free(a); free(rhs); free(N); free(V); free(t);
+    return rc;
+}
+
 /* ==== the same fit in double-double ============================================ */
 
 /* |x| of a dd as a double */

@@ -105,6 +105,17 @@ typedef struct mm_poly_fit_info {
 int mm_poly_fit(int npts, const double *x, const double *y, int degree,
                 double *p, mm_poly_fit_info *info, mm_error *err);
 
+/* The fitted values p(x_i) of the least-squares polynomial, in double, two
+ * ways in t = (x - mu) / scale: fit_svd by the SVD (as mm_poly_fit does),
+ * fit_ne by the normal equations (A^T A) a = A^T y solved by LU, whose
+ * error grows with cond(A)^2 instead of cond(A).  *bnorm_svd, *bnorm_ne
+ * receive the 2-norms of the two coefficient vectors in t (for error
+ * bounds).  A second solution for checks; npts, degree as mm_poly_fit
+ * (degree <= MM_POLY_MAX_FIT_DEGREE).  Fails with MM_ERANGE, MM_EVALUE,
+ * MM_ESINGULAR (A^T A singular in double), MM_ENOMEM. */
+int mm_poly_fit_values(int npts, const double *x, const double *y, int degree, double mu, double scale,
+                       double *fit_svd, double *fit_ne, double *bnorm_svd, double *bnorm_ne, mm_error *err);
+
 /* ---- the same fit, every digit: double-double ----------------------------- */
 
 #define MM_POLY_MAX_FIT_DD_DEGREE 15   /* largest degree for mm_poly_fit_dd */

@@ -249,3 +249,47 @@ full:
                         "more than %d roots found; give more room or a shorter "
                         "interval", res->cap);
 }
+
+/* ==== bisection and the rounding band ============================================ */
+
+int mm_roots_bisect(mm_roots_fn f, void *params, double xl, double xr, double fl, double w, double *x,
+                    mm_error *err)
+{
+    assert(f && x);
+    for (int it = 0; it < 200 && xr - xl > w && xr - xl > 4 * DBL_EPSILON * fmax(fabs(xl), fabs(xr)); it++) {
+        double xm = xl + 0.5 * (xr - xl), fm;
+        int rc = call(f, params, xm, &fm, NULL, err);
+        if (rc)
+            return rc;
+        if (!isfinite(fm))
+            return mm_error_set(err, MM_ENONFINITE, "f", "the function is not finite at x = %.17g", xm);
+        if (fm == 0) {
+            *x = xm;
+            return MM_OK;
+        }
+        if ((fm < 0) == (fl < 0)) {
+            xl = xm;
+            fl = fm;
+        } else {
+            xr = xm;
+        }
+    }
+    *x = xl + 0.5 * (xr - xl);
+    return MM_OK;
+}
+
+double mm_roots_band(mm_roots_fn_err f, void *params, double x, double w, double lo, double hi)
+{
+    assert(f);
+    double worst = 0;
+    for (int side = -1; side <= 1; side += 2) {
+        double h = fmax(w, 4 * DBL_EPSILON * fabs(x) + DBL_MIN);
+        for (int it = 0; it < 80; it++, h *= 2) {
+            double y = x + side * h, fy, e;
+            if (y < lo || y > hi || f(y, &fy, &e, params) != 0 || !isfinite(fy) || fabs(fy) > e)
+                break;
+        }
+        worst = fmax(worst, h);
+    }
+    return worst;
+}

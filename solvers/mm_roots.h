@@ -121,4 +121,26 @@ int mm_roots_brent(mm_roots_fn f, void *params, double a, double b,
                    double *x, double *fx, double *width, int *iter,
                    long *nevals, mm_error *err);
 
+/* Plain bisection of [xl, xr], where f changes sign (fl = f(xl)), down to
+ * width w or to the spacing of doubles: a sign change of f is then within
+ * w of *x (the final midpoint), whatever f does (eq. 3 of the theory of
+ * num-nonlinear-roots: after k halvings the bracket is (xr - xl) / 2^k).
+ * At most 200 halvings.  Fails with MM_ENONFINITE when f is not finite at
+ * a midpoint, or f's own code. */
+int mm_roots_bisect(mm_roots_fn f, void *params, double xl, double xr, double fl, double w, double *x,
+                    mm_error *err);
+
+/* f with an estimate of its rounding error at x: *fx, and *err >= 0 (inf
+ * when unknown).  Return 0, or nonzero to stop. */
+typedef int (*mm_roots_fn_err)(double x, double *fx, double *err, void *params);
+
+/* Where the sign of f is blurred by its rounding error around a root x:
+ * step out from x by h = max(w, 4 eps |x|), doubling, until f is
+ * certainly nonzero (|f| above its error) on each side, staying inside
+ * [lo, hi].  Returns the larger of the two distances reached: an estimate
+ * of how far the root of the exact f can be from x (at a root of
+ * multiplicity m, about (error of f)^(1/m)).  At most 80 doublings a side.
+ * Cannot fail (a stop or a non-finite value ends that side). */
+double mm_roots_band(mm_roots_fn_err f, void *params, double x, double w, double lo, double hi);
+
 #endif

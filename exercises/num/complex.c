@@ -65,86 +65,6 @@ static const mm_output outputs[] = {
                            .mark = "dots"),
 };
 
-/* a complex number in double-double with a bound of its error (modulus) */
-typedef struct cdd {
-    mm_dd re, im;
-    double err;
-} cdd;
-
-static double cabs_dd(cdd z) { return hypot(mm_dd_val(z.re), mm_dd_val(z.im)); }
-
-static cdd cmul_dd(cdd a, cdd b)                    /* eq. (4), |error| <= 8 eps_dd |a||b| + propagated */
-{
-    double ma = cabs_dd(a), mb = cabs_dd(b);
-    return (cdd){mm_dd_sub(mm_dd_mul(a.re, b.re), mm_dd_mul(a.im, b.im)),
-                 mm_dd_add(mm_dd_mul(a.re, b.im), mm_dd_mul(a.im, b.re)),
-                 (ma * b.err + mb * a.err + a.err * b.err + 8 * MM_DD_EPS * ma * mb) * (1 + 4 * U)};
-}
-
-/* a / b = a conj(b) / |b|^2 (eq. 5), with b scaled by a power of 2 so that
- * |b|^2 cannot overflow or underflow (exact).  b != 0. */
-static cdd cdiv_dd(cdd a, cdd b)
-{
-    double mb = cabs_dd(b), s = ldexp(1, -ilogb(mb));
-    cdd bs = {mm_dd_mul_d(b.re, s), mm_dd_mul_d(b.im, s), b.err * s};
-    mm_dd den = mm_dd_add(mm_dd_mul(bs.re, bs.re), mm_dd_mul(bs.im, bs.im));
-    cdd num = cmul_dd(a, (cdd){bs.re, mm_dd_neg(bs.im), bs.err});
-    double ma = cabs_dd(a), q = ma / mb, rel_b = b.err / (mb - b.err);
-    return (cdd){mm_dd_mul_d(mm_dd_div(num.re, den), s), mm_dd_mul_d(mm_dd_div(num.im, den), s),
-                 (q * (a.err / ma + 2 * rel_b) + 16 * MM_DD_EPS * q) * (1 + 4 * U) + (ma == 0 ? a.err / mb : 0)};
-}
-
-static cdd cpow_dd(cdd a, int n)                    /* a^n by repeated squaring (n >= 0) */
-{
-    cdd z = {mm_dd_from(1), mm_dd_from(0), 0};
-    while (n > 0) {
-        if (n & 1)
-            z = cmul_dd(z, a);
-        a = cmul_dd(a, a);
-        n >>= 1;
-    }
-    return z;
-}
-
-static cdd cexact(double re, double im) { return (cdd){mm_dd_from(re + 0.0), mm_dd_from(im + 0.0), 0}; }
-
-/* Root k of a^(1/n) (eq. 8), r^(1/n) e^(i (theta + 2 pi k) / n): from the
- * polar form in double, refined by two Newton steps on w^n = a in
- * double-double; its bound is 2 |w^n - a| / |n w^(n-1)| (Kantorovich: a
- * simple root, the quadratic term negligible).  When a lies on an axis the
- * root's angle is a rational multiple of pi and its zero part is exact. */
-static cdd root(cdd a, double ra, double ta, int n, int k)
-{
-    double r1 = pow(ra, 1.0 / n), phi = (ta + 2 * M_PI * k) / n;
-    cdd w = cexact(r1 * cos(phi), r1 * sin(phi));
-    if (ra == 0)
-        return w;
-    for (int it = 0; it < 2; it++) {
-        cdd f = cpow_dd(w, n), d = cpow_dd(w, n - 1);
-        f.re = mm_dd_sub(f.re, a.re);
-        f.im = mm_dd_sub(f.im, a.im);
-        d.re = mm_dd_mul_d(d.re, n);
-        d.im = mm_dd_mul_d(d.im, n);
-        cdd step = cdiv_dd(f, d);
-        w.re = mm_dd_sub(w.re, step.re);
-        w.im = mm_dd_sub(w.im, step.im);
-    }
-    cdd f = cpow_dd(w, n);
-    f.re = mm_dd_sub(f.re, a.re);
-    f.im = mm_dd_sub(f.im, a.im);
-    double mw = cabs_dd(w);
-    w.err = 2 * (cabs_dd(f) + f.err) / (n * pow(mw, n - 1)) + 4 * MM_DD_EPS * mw;
-    double a2 = mm_dd_val(a.im) == 0 ? (mm_dd_val(a.re) > 0 ? 0 : 2) : mm_dd_val(a.re) == 0 ? (mm_dd_val(a.im) > 0 ? 1 : -1) : NAN;
-    if (!isnan(a2)) {                            /* angle / pi = (a2 / 2 + 2k) / n = q / (2n) */
-        long q = (long)a2 + 4L * k, m = 2L * n;
-        if (q % m == 0)
-            w.im = mm_dd_from(0);                /* on the real axis */
-        else if (((q - n) % m + m) % m == 0)
-            w.re = mm_dd_from(0);                /* on the imaginary axis */
-    }
-    return w;
-}
-
 /* A printed number from a dd value with the error bound e of the dd value. */
 static void print_err(mm_result *res, int out, mm_dd v, double e)
 {
@@ -181,7 +101,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* + 0.0 turns a typed -0 into +0, so that atan2 gives pi, not -pi, on
      * the negative real axis: the argument stays in (-pi, pi] */
     double are = in[P_ARE].x + 0.0, aim = in[P_AIM].x + 0.0, bre = in[P_BRE].x + 0.0, bim = in[P_BIM].x + 0.0;
-    cdd a = cexact(are, aim), b = cexact(bre, bim);
+    mm_cdd a = mm_cdd_exact(are, aim), b = mm_cdd_exact(bre, bim);
     int op = (int)in[P_OP].x, n = op == OP_SQUARE ? 2 : (int)in[P_N].x;
     double ra = hypot(are, aim), ta = atan2(aim, are), rb = hypot(bre, bim), tb = atan2(bim, bre);
 
@@ -192,23 +112,23 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return mm_error_set(err, MM_ESINGULAR, "a_re", "a^%d = 1 / a^%d needs a != 0", n, -n);
 
     /* the result twice: rectangular in double-double, polar in double */
-    cdd z;
+    mm_cdd z;
     double rp, tp;                               /* polar: modulus and angle */
     switch (op) {
     case OP_MULTIPLY:
-        z = cmul_dd(a, b);
+        z = mm_cdd_mul(a, b);
         rp = ra * rb, tp = ta + tb;              /* eq. (6) */
         break;
     case OP_DIVIDE:
-        z = cdiv_dd(a, b);
+        z = mm_cdd_div(a, b);
         rp = ra / rb, tp = ta - tb;
         break;
     case OP_ROOTS:                               /* the principal root, eq. (8) with k = 0 */
-        z = root(a, ra, ta, n, 0);
+        z = mm_cdd_root(a, ra, ta, n, 0);
         rp = pow(ra, 1.0 / n), tp = ta / n;
         break;
     default:                                     /* square, power: eq. (7) */
-        z = n >= 0 ? cpow_dd(a, n) : cdiv_dd(cexact(1, 0), cpow_dd(a, -n));
+        z = n >= 0 ? mm_cdd_pow(a, n) : mm_cdd_div(mm_cdd_exact(1, 0), mm_cdd_pow(a, -n));
         rp = pow(ra, n), tp = n * ta;
         break;
     }
@@ -255,9 +175,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             return MM_ENOMEM;
         double back = 0, back_tol = 0, sre = 0, sim = 0, stol = 0;
         for (int k = 0; k < n; k++) {
-            cdd w = root(a, ra, ta, n, k);
+            mm_cdd w = mm_cdd_root(a, ra, ta, n, k);
             s->x[k] = mm_dd_val(w.re), s->y[k] = mm_dd_val(w.im);
-            cdd wn = cpow_dd(cexact(s->x[k], s->y[k]), n);
+            mm_cdd wn = mm_cdd_pow(mm_cdd_exact(s->x[k], s->y[k]), n);
             double mw = hypot(s->x[k], s->y[k]), dw = w.err + M_SQRT2 * U * mw;
             back = fmax(back, hypot(mm_dd_val(mm_dd_sub(wn.re, a.re)), mm_dd_val(mm_dd_sub(wn.im, a.im))));
             back_tol = fmax(back_tol, 1.01 * n * pow(mw + dw, n - 1) * dw + wn.err);
@@ -283,7 +203,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (op == OP_MULTIPLY) {
         mm_res_check_abs(res, "|a b| = |a| |b|", mz, ra * rb, zerr + 3 * U * ra * rb);
     } else if (op == OP_DIVIDE) {
-        cdd back = cmul_dd(cexact(zre, zim), b);
+        mm_cdd back = mm_cdd_mul(mm_cdd_exact(zre, zim), b);
         mm_res_check_abs(res, "(a / b) b = a: |(a / b) b - a| for the printed a / b",
                          hypot(mm_dd_val(mm_dd_sub(back.re, a.re)), mm_dd_val(mm_dd_sub(back.im, a.im))), 0,
                          1.01 * (zerr + U * mz) * rb + back.err);
@@ -296,11 +216,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_series *s = mm_res_series(res, O_POWERS, m);
         if (!s)
             return MM_ENOMEM;
-        cdd step = n >= 0 ? a : cdiv_dd(cexact(1, 0), a), p = cexact(1, 0);
+        mm_cdd step = n >= 0 ? a : mm_cdd_div(mm_cdd_exact(1, 0), a), p = mm_cdd_exact(1, 0);
         for (int j = 0; j < m; j++) {
             s->x[j] = mm_dd_val(p.re);
             s->y[j] = mm_dd_val(p.im);
-            p = cmul_dd(p, step);
+            p = mm_cdd_mul(p, step);
         }
     }
     mm_res_method(res, "rectangular arithmetic in double-double, checked in polar form", 0);

@@ -176,33 +176,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* the printed modes in eq. (1) and eq. (4), in double-double: what the
      * rounding of v and lambda to double leaves (u |K||v| + u |lambda||M||v|
      * + lambda_err |M v|, and 2 u |v_j|^T |M| |v_l|) */
-    double wres = 0, wort = 0;
-    for (int j = 0; j < n; j++) {
-        for (int i = 0; i < n; i++) {
-            mm_dd r = mm_dd_from(0);
-            double a = 0, m = 0;
-            for (int k = 0; k < n; k++) {
-                double v = V[k * n + j];
-                r = mm_dd_add(r, mm_dd_two_prod(K[i * n + k], v));
-                r = mm_dd_sub(r, mm_dd_mul_d(mm_dd_two_prod(M[i * n + k], v), lam[j]));
-                a += fabs(K[i * n + k] * v) + fabs(lam[j]) * fabs(M[i * n + k] * v);
-                m += fabs(M[i * n + k] * v);
-            }
-            double ri = mm_dd_val(r), bi = U * a + le[j] * m + 8 * n * MM_DD_EPS * a;
-            wres = fmax(wres, fabs(ri) / (1.01 * bi + DBL_MIN));   /* component by component */
-        }
-        for (int l = 0; l <= j; l++) {                  /* v_j^T M v_l - delta_jl */
-            mm_dd g = mm_dd_from(0);
-            double a = 0;
-            for (int i = 0; i < n; i++)
-                for (int k = 0; k < n; k++) {
-                    g = mm_dd_add(g, mm_dd_mul_d(mm_dd_two_prod(V[i * n + j], M[i * n + k]), V[k * n + l]));
-                    a += fabs(V[i * n + j] * M[i * n + k] * V[k * n + l]);
-                }
-            double dev = mm_dd_abs(mm_dd_sub(g, mm_dd_from(j == l)));
-            wort = fmax(wort, dev / (1.01 * (2 * U + 4 * n * n * MM_DD_EPS) * a + DBL_MIN));
-        }
-    }
+    double wres, wort;
+    mm_linalg_sygv_rounding(n, K, M, lam, le, V, &wres, &wort);
     mm_res_check_abs(res, "printed modes in eq. (1): worst |K v - lambda M v|_i / (its rounding bound) <= 1", wres, 0,
                      1);
     mm_res_check_abs(res, "printed modes M-orthonormal, eq. (4): worst |v_j^T M v_l - delta_jl| / (its rounding "

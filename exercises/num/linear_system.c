@@ -77,31 +77,6 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* r = b - A x in double-double (eq. 3): the true residual of the stored x;
- * |r_i| is then right to ~1e-32 of sum_j |A_ij x_j| + |b_i| (in mag[i]). */
-static void residual(int n, const double *A, const double *x, const double *b, double *r, double *mag)
-{
-    for (int i = 0; i < n; i++) {
-        mm_dd s = mm_dd_from(b[i]);
-        mag[i] = fabs(b[i]);
-        for (int j = 0; j < n; j++) {
-            s = mm_dd_sub(s, mm_dd_two_prod(A[i * n + j], x[j]));
-            mag[i] += fabs(A[i * n + j] * x[j]);
-        }
-        r[i] = mm_dd_val(s);
-    }
-}
-
-static double norm2(int n, const double *v)
-{
-    double big = mm_maxabs(v, n), s = 0;
-    if (big == 0)
-        return 0;
-    for (int i = 0; i < n; i++)
-        s += (v[i] / big) * (v[i] / big);
-    return big * sqrt(s);
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int n = in[P_A].rows;
@@ -141,10 +116,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * is rounding-level: the exact solution has residual 0, and rounding it
      * to double, or any backward-stable solve in double (MATLAB's), leaves
      * up to about (2n + 2) u || |A| |x| + |b| ||, so that is its error */
-    residual(n, A, x, b, r, mag);
-    double rnorm = norm2(n, r), xnorm = norm2(n, x), bnorm = norm2(n, b);
-    double rerr = 4 * MM_DD_EPS * n * norm2(n, mag) + U * rnorm;
-    double rlevel = (2.0 * n + 2) * U * norm2(n, mag);
+    mm_linalg_residual_dd(n, A, x, b, r, mag);
+    double rnorm = mm_linalg_norm2(n, r), xnorm = mm_linalg_norm2(n, x), bnorm = mm_linalg_norm2(n, b);
+    double rerr = 4 * MM_DD_EPS * n * mm_linalg_norm2(n, mag) + U * rnorm;
+    double rlevel = (2.0 * n + 2) * U * mm_linalg_norm2(n, mag);
     mm_res_scalar_err(res, O_RESIDUAL, rnorm, rerr + rlevel, MM_ERR_ESTIMATE);
     double scale = s[0] * xnorm + bnorm;                    /* ||A|| ||x|| + ||b|| */
     mm_res_scalar_err(res, O_BERR, rnorm / scale, (rerr + rlevel + rnorm * (se[0] / s[0] + 4 * U)) / scale,
@@ -182,12 +157,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         /* check: the forward error of A \ b is at most ||A^-1|| ||b - A x_lu||
          * (eq. 7) with its residual computed in double-double; the accurate x
          * carries its own bound */
-        residual(n, A, xl, b, rl, magl);
-        double bound = (norm2(n, rl) + 4 * MM_DD_EPS * n * norm2(n, magl)) / smin_lo;
+        mm_linalg_residual_dd(n, A, xl, b, rl, magl);
+        double bound = (mm_linalg_norm2(n, rl) + 4 * MM_DD_EPS * n * mm_linalg_norm2(n, magl)) / smin_lo;
         for (int i = 0; i < n; i++)
             w[i] = xl[i] - x[i];
-        mm_res_check_abs(res, "A\\b: ||x_matlab - x|| <= ||b - A x_matlab|| / sigma_min, eq. (7)", norm2(n, w), 0,
-                         1.01 * bound + norm2(n, xe));
+        mm_res_check_abs(res, "A\\b: ||x_matlab - x|| <= ||b - A x_matlab|| / sigma_min, eq. (7)", mm_linalg_norm2(n, w), 0,
+                         1.01 * bound + mm_linalg_norm2(n, xe));
         /* check: componentwise backward error of A \ b, max |r_i| / (|A| |x| + |b|)_i
          * (eq. 4): LU with refinement leaves a few eps */
         double omega = 0;
@@ -205,7 +180,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         w[i] = acc;
     }
     mm_res_check_abs(res, "printed x: ||b - A x|| <= || |A| (u |x| + x_err) ||, the rounding of x to double", rnorm, 0,
-                     1.01 * norm2(n, w) + rerr);
+                     1.01 * mm_linalg_norm2(n, w) + rerr);
     /* check: MATLAB's svd (LAPACK dgesdd, double) within its normwise bound
      * p(n) eps sigma_max (LAPACK Users' Guide 4.9; p(n) = 4n here: the
      * largest seen over 200 random 3 x 3 draws was 0.96 n) */

@@ -104,52 +104,13 @@ static double f1(fctx *c, double x)
     return y;
 }
 
-/* Plain bisection of the part [xl, xr] (f changes sign across it) down to
- * width w: a sign change of f is then within w of the midpoint *x,
- * whatever f does.  Returns 0, or -1 if f stops being finite. */
-static int bisect(fctx *c, double xl, double xr, double fl, double w, double *x)
+/* f with the estimate of its rounding error (mm_expr_eval_err), for mm_roots_band */
+static int feval_err(double x, double *fx, double *err, void *ctx)
 {
-    for (int it = 0; it < 200 && xr - xl > w && xr - xl > 4 * DBL_EPSILON * fmax(fabs(xl), fabs(xr)); it++) {
-        double xm = xl + 0.5 * (xr - xl), fm = f1(c, xm);
-        if (!isfinite(fm))
-            return -1;
-        if (fm == 0) {
-            *x = xm;
-            return 0;
-        }
-        if ((fm < 0) == (fl < 0)) {
-            xl = xm;
-            fl = fm;
-        } else {
-            xr = xm;
-        }
-    }
-    *x = xl + 0.5 * (xr - xl);
+    fctx *c = ctx;
+    c->evals += 7;
+    *fx = mm_expr_eval_err(c->e, &x, err);
     return 0;
-}
-
-/* Where the sign of f is blurred by its rounding error around the root x:
- * step out from x, doubling, until f is certainly nonzero (|f| above its
- * error estimate) on each side, within [lo, hi].  The larger of the two
- * distances is the root's error estimate when it exceeds the bracket: near
- * a root of multiplicity m the band is about (error of f)^(1/m) wide. */
-static double blur(fctx *c, double x, double w, double lo, double hi)
-{
-    double worst = 0;
-    for (int side = -1; side <= 1; side += 2) {
-        double h = fmax(w, 4 * DBL_EPSILON * fabs(x) + DBL_MIN);
-        for (int it = 0; it < 80; it++, h *= 2) {
-            double y = x + side * h, e;
-            if (y < lo || y > hi)
-                break;
-            c->evals += 7;
-            double fy = mm_expr_eval_err(c->e, &y, &e);
-            if (!isfinite(fy) || fabs(fy) > e)
-                break;
-        }
-        worst = fmax(worst, h);
-    }
-    return worst;
 }
 
 /* x by the scan's own formula (mm_roots.c), so the parts are the same. */
@@ -208,7 +169,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         /* the root's error: its final bracket (plus the rounding of x), or
          * the band where rounding blurs the sign of f, if wider */
         double w = z->width + 2 * DBL_EPSILON * fabs(z->x);
-        double band = blur(c, z->x, w, z->x - part, z->x + part);
+        double band = mm_roots_band(feval_err, c, z->x, w, z->x - part, z->x + part);
         nblur += band > fmax(w, tol);
         double e = fmax(w, band);
         double *row = t->cell + 5 * i;
@@ -250,7 +211,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                 (fl < 0) == (fr < 0))
                 continue;
             found = 1;
-            if (bisect(c, xl, xr, fl, 0.25 * tol, &xb) != 0)
+            if (mm_roots_bisect(feval, c, xl, xr, fl, 0.25 * tol, &xb, NULL) != MM_OK)
                 lost++;
             else if (fabs(z->x - xb) > allowed && own)
                 crowded++;

@@ -105,7 +105,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int n = in[P_X].cols, d = (int)in[P_DEGREE].x, m = d + 1;
     const double *x = in[P_X].data, *y = in[P_Y].data;
-    double c[MAXDEG + 1], ce[MAXDEG + 1], se[MAXDEG + 1], bt[MAXDEG + 1], cm[MAXDEG + 1], am[MAXDEG + 1];
+    double c[MAXDEG + 1], ce[MAXDEG + 1], se[MAXDEG + 1], bt[MAXDEG + 1], cm[MAXDEG + 1];
     double *fit = mm_res_alloc(res, 4 * (size_t)n * sizeof *fit);
     if (!fit)
         return MM_ENOMEM;
@@ -211,62 +211,28 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* check: two solutions in double, by the SVD (MATLAB's route, in t) and
      * by the normal equations (A^T A) a = A^T y (LU), each within its forward
      * error bound from the exact fit (eq. 4): kappa eps and kappa^2 eps */
-    double N[(MAXDEG + 1) * (MAXDEG + 1)] = {0}, rhs[MAXDEG + 1] = {0}, ts[MAXPTS];
-    for (int i = 0; i < n; i++) {
-        double pw[2 * MAXDEG + 1];
-        ts[i] = (x[i] - mi.mu) / mi.scale;
-        pw[0] = 1;
-        for (int k = 1; k <= 2 * d; k++)
-            pw[k] = pw[k - 1] * ts[i];
-        for (int j = 0; j <= d; j++) {
-            rhs[j] += pw[j] * y[i];
-            for (int k = 0; k <= d; k++)
-                N[j * m + k] += pw[j + k];
+    double *fs = mm_res_alloc(res, 2 * (size_t)n * sizeof *fs), *fn = fs + n, bsv, bne;
+    if (!fs)
+        return MM_ENOMEM;
+    if (mm_poly_fit_values(n, x, y, d, mi.mu, mi.scale, fs, fn, &bsv, &bne, NULL) == MM_OK) {
+        double kappa = mi.cond, anorm = sqrt((double)n * m), rn = info.rms * sqrt((double)n), yn = 0;
+        double dsvd = 0, dne = 0, g = 2.0 * m * n * U;      /* backward error of Householder QR / SVD, ~ m n u */
+        for (int i = 0; i < n; i++) {
+            yn += y[i] * y[i];
+            dsvd = fmax(dsvd, fabs(fs[i] - fit[i]) - fe[i]);
+            dne = fmax(dne, fabs(fn[i] - fit[i]) - fe[i]);
         }
-    }
-    mm_linalg_solve_info si;
-    mm_error local;
-    double kappa = mi.cond, anorm = sqrt((double)n * m), rn = info.rms * sqrt((double)n), yn = 0, bn = 0, an = 0;
-    for (int i = 0; i < n; i++)
-        yn += y[i] * y[i];
-    yn = sqrt(yn);
-    if (mm_linalg_solve(m, 1, N, rhs, am, &si, &local) == MM_OK) {
-        double dsvd = 0, dne = 0, esvd = 0, ene = 0;
-        for (int k = 0; k <= d; k++)
-            an += am[k] * am[k];
-        an = sqrt(an);
-        /* MATLAB's b in t = (x - mu) / scale: evaluate the expanded c in that t
-         * would cancel; refit instead (the same SVD as mm_poly_fit) */
-        double bsv[MAXDEG + 1], V[MAXPTS * (MAXDEG + 1)];
-        for (int i = 0; i < n; i++)
-            for (int k = 0; k <= d; k++)
-                V[i * m + (d - k)] = pow(ts[i], k);
-        if (mm_linalg_lstsq(n, m, 1, V, y, 0.0, bsv, NULL, NULL, NULL, &local) == MM_OK) {
-            for (int k = 0; k <= d; k++)
-                bn += bsv[k] * bsv[k];
-            bn = sqrt(bn);
-            double g = 2.0 * m * n * U;                     /* backward error of Householder QR / SVD, ~ m n u */
-            for (int i = 0; i < n; i++) {
-                double vs = 0, vn = 0;
-                for (int k = 0; k <= d; k++) {
-                    vs = vs * ts[i] + bsv[k];
-                    vn = vn * ts[i] + am[d - k];
-                }
-                dsvd = fmax(dsvd, fabs(vs - fit[i]) - fe[i]);
-                dne = fmax(dne, fabs(vn - fit[i]) - fe[i]);
-            }
-            esvd = fit_bound(g, kappa, anorm, bn, rn, yn, 0);
-            ene = fit_bound(g, kappa, anorm, an, rn, yn, 1);
-            if (ene < 1e-2 * ymax) {
-                mm_res_check_abs(res, "fitted values: SVD vs normal equations, both in double: worst |error| / (its "
-                                 "bound, kappa eps and kappa^2 eps), eq. (4), <= 1",
-                                 fmax(fmax(dsvd, 0) / esvd, fmax(dne, 0) / ene), 0, 1);
-                mm_res_method_stat(res, "svd_fit_error", fmax(dsvd, 0));
-                mm_res_method_stat(res, "normal_equations_fit_error", fmax(dne, 0));
-            } else {
-                mm_res_warn(res, "the normal equations A^T A a = A^T y are too ill-conditioned here (cond^2 = %.2g) "
-                            "to serve as a second solution: this is why polyfit works on A itself", kappa * kappa);
-            }
+        yn = sqrt(yn);
+        double esvd = fit_bound(g, kappa, anorm, bsv, rn, yn, 0), ene = fit_bound(g, kappa, anorm, bne, rn, yn, 1);
+        if (ene < 1e-2 * ymax) {
+            mm_res_check_abs(res, "fitted values: SVD vs normal equations, both in double: worst |error| / (its "
+                             "bound, kappa eps and kappa^2 eps), eq. (4), <= 1",
+                             fmax(fmax(dsvd, 0) / esvd, fmax(dne, 0) / ene), 0, 1);
+            mm_res_method_stat(res, "svd_fit_error", fmax(dsvd, 0));
+            mm_res_method_stat(res, "normal_equations_fit_error", fmax(dne, 0));
+        } else {
+            mm_res_warn(res, "the normal equations A^T A a = A^T y are too ill-conditioned here (cond^2 = %.2g) "
+                        "to serve as a second solution: this is why polyfit works on A itself", kappa * kappa);
         }
     }
 

@@ -889,6 +889,33 @@ static void blas3_from_many_threads_should_give_identical_answers(void **state)
     free(jobs); free(ref); free(B); free(A);
 }
 
+static void printed_modes_and_residuals_should_be_checked_to_their_rounding(void **state)
+{
+    (void)state;
+    enum { N = 8 };
+    double K[N * N], M[N * N], lam[N], le[N], V[N * N], r[N], mag[N], x[N], b[N];
+    chain(N, 100, 2, 1, K, M);
+    assert_int_equal(mm_linalg_sygv_dd(N, K, M, lam, le, V, NULL), MM_OK);
+    double res, orth;
+    mm_linalg_sygv_rounding(N, K, M, lam, le, V, &res, &orth);
+    assert_true(res <= 1 && orth <= 1);              /* modes right to their last digit */
+    V[3] *= 1 + 1e-12;                               /* one component off in its 12th digit */
+    mm_linalg_sygv_rounding(N, K, M, lam, le, V, &res, &orth);
+    assert_true(res > 10 && orth > 10);
+    /* b = K x for integer x: the residual is exactly 0, and mag |K||x| + |b| */
+    for (int i = 0; i < N; i++)
+        x[i] = i + 1;
+    for (int i = 0; i < N; i++) {
+        b[i] = 0;
+        for (int j = 0; j < N; j++)
+            b[i] += K[i * N + j] * x[j];
+    }
+    mm_linalg_residual_dd(N, K, x, b, r, mag);
+    for (int i = 0; i < N; i++)
+        check_abs(r[i], 0, 0, "exact residual");
+    check_rel(mm_linalg_norm2(2, (double[]){3e200, 4e200}), 5e200, EPS, "no overflow in the squares");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -919,6 +946,7 @@ int main(void)
         cmocka_unit_test(dd_should_reject_what_the_lapack_routines_reject),
         cmocka_unit_test(dd_singular_values_and_solve_should_be_right_for_hilbert_12),
         cmocka_unit_test(one_symmetry_rule_should_serve_every_module),
+        cmocka_unit_test(printed_modes_and_residuals_should_be_checked_to_their_rounding),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -374,6 +374,20 @@ static void polyfit_dd_should_survive_powers_that_cancel(void **state)
     check_abs(info.rms, 0, info.rms_err, "rms 0 within its bound");
 }
 
+static void fitted_values_in_double_should_agree_by_both_routes(void **state)
+{
+    (void)state;
+    /* the book's line: fitted values 733/67, 1125/67, 2497/67 */
+    const double x[3] = {1, 3, 10}, y[3] = {10, 18, 37}, want[3] = {733.0 / 67, 1125.0 / 67, 2497.0 / 67};
+    double fs[3], fn[3], bs, bn;
+    assert_int_equal(mm_poly_fit_values(3, x, y, 1, 14.0 / 3, 16.0 / 3, fs, fn, &bs, &bn, NULL), MM_OK);
+    for (int i = 0; i < 3; i++) {
+        check_rel(fs[i], want[i], 8 * EPS, "fitted value by the SVD");
+        check_rel(fn[i], want[i], 8 * EPS, "fitted value by the normal equations (cond^2 ~ 2)");
+    }
+    assert_true(bs > 0 && bn > 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -390,6 +404,7 @@ int main(void)
         cmocka_unit_test(polyfit_degree_too_high_should_name_the_parameter),
         cmocka_unit_test(polyfit_dd_should_give_the_exact_least_squares_line),
         cmocka_unit_test(polyfit_dd_should_survive_powers_that_cancel),
+        cmocka_unit_test(fitted_values_in_double_should_agree_by_both_routes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

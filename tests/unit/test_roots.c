@@ -343,6 +343,27 @@ static void roots_beside_rounding_noise_should_not_be_suspect(void **state)
     }
 }
 
+static int f_cube_err(double x, double *fx, double *err, void *params)
+{
+    (void)params;
+    *fx = (x - 1) * (x - 1) * (x - 1);
+    *err = 1e-16;                                   /* a rounding level for f */
+    return 0;
+}
+
+static void bisection_and_the_rounding_band_should_bound_the_root(void **state)
+{
+    (void)state;
+    double x, f0;
+    f_book(0, &f0, NULL);
+    assert_int_equal(mm_roots_bisect(f_book, NULL, 0, 2, f0, 1e-10, &x, NULL), MM_OK);
+    check_abs(x, 1.0433859882095546576, 1e-10, "bisection to 1e-10");
+    /* a triple root with f known to 1e-16: its sign is blurred within about
+     * (1e-16)^(1/3) = 4.6e-6 of the root */
+    double band = mm_roots_band(f_cube_err, NULL, 1, 1e-12, 0, 2);
+    assert_true(band >= 4.6e-6 && band <= 4 * 4.6e-6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -354,6 +375,7 @@ int main(void)
         cmocka_unit_test(jump_should_be_flagged_suspect),
         cmocka_unit_test(multiple_roots_should_converge_within_the_bisection_bound),
         cmocka_unit_test(roots_beside_rounding_noise_should_not_be_suspect),
+        cmocka_unit_test(bisection_and_the_rounding_band_should_bound_the_root),
         cmocka_unit_test(touching_root_should_not_be_found),
         cmocka_unit_test(non_finite_values_should_skip_parts),
         cmocka_unit_test(bad_input_should_name_the_parameter),
