@@ -20,7 +20,11 @@ mm_cdd mm_cdd_mul(mm_cdd a, mm_cdd b)
 
 mm_cdd mm_cdd_div(mm_cdd a, mm_cdd b)
 {
-    double mb = mm_cdd_abs(b), s = ldexp(1, -ilogb(mb));
+    double mb = mm_cdd_abs(b);
+    if (!(mb > 0) || !isfinite(mb))                  /* b = 0 (or underflowed to 0): no quotient */
+        return (mm_cdd){mm_dd_from(INFINITY), mm_dd_from(INFINITY), INFINITY};
+    int e = ilogb(mb);
+    double s = ldexp(1, e < -1000 ? 1000 : -e);      /* 2^-e, kept finite for a subnormal |b| */
     mm_cdd bs = {mm_dd_mul_d(b.re, s), mm_dd_mul_d(b.im, s), b.err * s};
     mm_dd den = mm_dd_add(mm_dd_mul(bs.re, bs.re), mm_dd_mul(bs.im, bs.im));
     mm_cdd num = mm_cdd_mul(a, (mm_cdd){bs.re, mm_dd_neg(bs.im), bs.err});

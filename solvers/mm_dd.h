@@ -120,7 +120,8 @@ double mm_cdd_abs(mm_cdd z);
 mm_cdd mm_cdd_mul(mm_cdd a, mm_cdd b);
 
 /* a / b = a conj(b) / |b|^2, b scaled by a power of 2 first so that |b|^2
- * cannot overflow or underflow.  b != 0. */
+ * cannot overflow or underflow.  b = 0 gives infinities (the caller checks
+ * isfinite). */
 mm_cdd mm_cdd_div(mm_cdd a, mm_cdd b);
 
 /* a^n by repeated squaring, n >= 0. */

@@ -52,6 +52,8 @@ static double pow2_scale(size_t count, const double *a, int even)
     if (!(big > 0))
         return 1;
     int e = ilogb(big);
+    if (e < -1000)                                   /* subnormal: 2^-e would overflow */
+        e = -1000;
     if (even && (e & 1))
         e++;
     return ldexp(1, -e);

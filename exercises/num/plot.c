@@ -138,6 +138,30 @@ static void extreme(fctx *c, double s, double x0, double h, double a, double b, 
     *fe = ef + 0.5 * f2 * (*xe) * (*xe);
 }
 
+/* A candidate for an extreme: a local extreme of the scan at x, with
+ * the spacing h of the scan there. */
+#define NCAND 4
+typedef struct cand {
+    double x, v, h;
+    int from_plot;
+} cand;
+
+/* Keep the NCAND best local extremes of s f (s = +1 largest, -1 smallest):
+ * v at x is one if no neighbour (vl, vr; NaN at an end) beats it. */
+static void offer(cand *cd, double s, double x, double v, double vl, double vr, double h, int from_plot)
+{
+    if ((!isnan(vl) && s * vl > s * v) || (!isnan(vr) && s * vr > s * v))
+        return;
+    int j = NCAND - 1;
+    if (cd[j].h > 0 && s * cd[j].v >= s * v)
+        return;
+    while (j > 0 && (cd[j - 1].h == 0 || s * cd[j - 1].v < s * v)) {
+        cd[j] = cd[j - 1];
+        j--;
+    }
+    cd[j] = (cand){x, v, h, from_plot};
+}
+
 static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
 {
     const double a = in[P_A].x, b = in[P_B].x;
@@ -223,36 +247,44 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         have_int = rc == MM_OK;
     }
 
-    /* extremes: the best sample or point of the adaptive partition, refined
-     * between its neighbours (eq. 6) */
-    double best[2] = {ys[imax], ys[imin]}, xb[2] = {xs[imax], xs[imin]}, hb[2];
-    int from_plot[2] = {1, 1};
-    hb[0] = hb[1] = (b - a) / (n - 1);
-    for (int p = 0; have_int && p < gk.pieces; p++)
-        for (int k = 0; k <= SCAN; k++) {
-            double x = pieces[p].a + (pieces[p].b - pieces[p].a) * k / SCAN, v = f1(c, x);
-            for (int w = 0; w < 2 && isfinite(v); w++)
-                if ((w == 0 ? v > best[0] : v < best[1])) {
-                    best[w] = v, xb[w] = x, hb[w] = (pieces[p].b - pieces[p].a) / SCAN;
-                    from_plot[w] = 0;
-                }
-        }
+    /* extremes: the best few local extremes among the samples and on the
+     * adaptive partition (neighbouring bumps of a decaying wave differ by
+     * less than the sampling misses them by), each refined between its
+     * neighbours (eq. 6); the best refined one wins */
+    cand cd[2][NCAND] = {{{0}}};
+    for (int i = 0; i < n; i++)                      /* the plot's samples, step (b - a) / (n - 1) */
+        if (isfinite(ys[i]))
+            for (int w = 0; w < 2; w++)
+                offer(cd[w], w ? -1 : 1, xs[i], ys[i], i > 0 ? ys[i - 1] : NAN, i < n - 1 ? ys[i + 1] : NAN,
+                      (b - a) / (n - 1), 1);
+    for (int p = 0; have_int && p < gk.pieces; p++) {
+        double v[SCAN + 1], h = (pieces[p].b - pieces[p].a) / SCAN;
+        for (int k = 0; k <= SCAN; k++)
+            v[k] = f1(c, pieces[p].a + h * k);
+        for (int k = 0; k <= SCAN; k++)
+            for (int w = 0; w < 2 && isfinite(v[k]); w++)
+                offer(cd[w], w ? -1 : 1, pieces[p].a + h * k, v[k], k > 0 ? v[k - 1] : NAN, k < SCAN ? v[k + 1] : NAN,
+                      h, 0);
+    }
     for (int w = 0; w < 2; w++) {
         double sg = w == 0 ? 1 : -1;
         int k = w == 0 ? imax : imin;
-        if (from_plot[w] && ((k > 0 && !isfinite(ys[k - 1])) || (k < n - 1 && !isfinite(ys[k + 1])))) {
+        if ((k > 0 && !isfinite(ys[k - 1])) || (k < n - 1 && !isfinite(ys[k + 1]))) {
             mm_res_warn(res, "no %s value: f is not finite next to its %s sample (x = %.6g), so it is not bounded "
                         "there (a pole)", w == 0 ? "largest" : "smallest", w == 0 ? "largest" : "smallest", xs[k]);
             continue;
         }
-        for (int p = 0; have_int && p < gk.pieces; p++)    /* the finest spacing known around xb */
-            if (xb[w] >= pieces[p].a && xb[w] <= pieces[p].b)
-                hb[w] = fmin(hb[w], 2 * (pieces[p].b - pieces[p].a) / SCAN);
-        double x, v, xe, ve;
-        extreme(c, sg, xb[w], hb[w], a, b, &x, &v, &xe, &ve);
+        double x = xs[k], v = ys[k], xe = 0, ve = 0;
+        int from_plot = 1;
+        for (int j = 0; j < NCAND && cd[w][j].h > 0; j++) {
+            double xj, vj, xej, vej;
+            extreme(c, sg, cd[w][j].x, cd[w][j].h, a, b, &xj, &vj, &xej, &vej);
+            if (j == 0 || sg * vj > sg * v)
+                x = xj, v = vj, xe = xej, ve = vej, from_plot = cd[w][j].from_plot;
+        }
         mm_res_scalar_err(res, w == 0 ? O_MAX : O_MIN, v, ve, MM_ERR_ESTIMATE);
         mm_res_scalar_err(res, w == 0 ? O_XMAX : O_XMIN, x, xe, MM_ERR_ESTIMATE);
-        if (!from_plot[w] && sg * (v - ys[k]) > 0.02 * height)
+        if (!from_plot && sg * (v - ys[k]) > 0.02 * height)
             mm_res_warn(res, "the plotted samples miss the %s value: between them f reaches %.6g at x = %.6g; raise "
                         "points to see it", w == 0 ? "largest" : "smallest", v, x);
     }
