@@ -6,6 +6,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
 import { readFile } from 'node:fs/promises';
 import { nextRender, openExercise, startBrowser, startServer, stopBrowser, stopServer } from './common.mjs';
+import { staTrussTests } from './sta-truss.mjs';
 
 const shots = 'test-output/screenshots';
 mkdirSync(shots, { recursive: true });
@@ -255,6 +256,8 @@ try {
       assert.ok(await page.$('#checks'), `${e.id} shows its checks`);
     }
   });
+
+  await staTrussTests(test, server.origin);
 
   await test('screenshots of the catalog and an exercise at desktop and phone widths', async (page) => {
     for (const [w, h, tag] of [[1280, 800, 'desktop'], [375, 740, 'phone']]) {
