@@ -43,6 +43,10 @@ extern const mm_exercise mm_ex_sta_virtual_work;
 /* ==== end of 3 ==== */
 
 /* ==== 4 Dynamics ==== */
+extern const mm_exercise mm_ex_dyn_pendulum;
+extern const mm_exercise mm_ex_dyn_double_pendulum;
+extern const mm_exercise mm_ex_dyn_robot_2link;
+extern const mm_exercise mm_ex_dyn_slider_crank;
 /* ==== end of 4 ==== */
 
 /* ==== 5 Vibrations, 5.2-5.9 ==== */
@@ -98,6 +102,10 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 3 ==== */
 
     /* ==== 4 Dynamics ==== */
+    &mm_ex_dyn_pendulum,
+    &mm_ex_dyn_double_pendulum,
+    &mm_ex_dyn_robot_2link,
+    &mm_ex_dyn_slider_crank,
     /* ==== end of 4 ==== */
 
     /* ==== 5 Vibrations, 5.2-5.9 ==== */
