@@ -37,6 +37,35 @@ double mm_poly_eval(int ncoef, const double *p, double x, double *err_bound)
     return y;
 }
 
+double mm_poly_backward_error(int ncoef, const double *p, double zr, double zi)
+{
+    assert(ncoef >= 1 && p);
+    const int d = ncoef - 1;
+    double r = hypot(zr, zi), yr, yi = 0, s;
+    if (r <= 1) {
+        yr = p[0];
+        s = fabs(p[0]);
+        for (int k = 1; k <= d; k++) {
+            double tr = yr * zr - yi * zi + p[k];
+            yi = yr * zi + yi * zr;
+            yr = tr;
+            s = s * r + fabs(p[k]);
+        }
+    } else {
+        double wr = zr / r / r, wi = -zi / r / r;  /* 1/z, without forming r^2 */
+        yr = p[d];
+        s = fabs(p[d]);
+        for (int k = d - 1; k >= 0; k--) {
+            double tr = yr * wr - yi * wi + p[k];
+            yi = yr * wi + yi * wr;
+            yr = tr;
+            s = s / r + fabs(p[k]);
+        }
+    }
+    double pz = hypot(yr, yi);
+    return s > 0 ? pz / s : pz;
+}
+
 /* p(z) for complex z = zr + i zi, Horner in double-double: the result is
  * as accurate as if computed with ~32 digits, so near a root it tells the
  * true size of |p(z)| instead of rounding noise. */

@@ -31,6 +31,14 @@
  * (non-finite input gives a non-finite result). */
 double mm_poly_eval(int ncoef, const double *p, double x, double *err_bound);
 
+/* The backward error of z = zr + i zi as a root of p: |p(z)| divided by
+ * sum |p_k| |z|^(d-k) (the most a relative change of eps in every p_k can
+ * move p(z)), both computed divided by max(1, |z|)^d so that nothing
+ * overflows for large roots (for |z| > 1 Horner runs on the reversed
+ * coefficients in 1/z).  0 <= result; a few eps for a root computed to
+ * working precision.  |p(z)| itself when every coefficient is zero. */
+double mm_poly_backward_error(int ncoef, const double *p, double zr, double zi);
+
 /* ---- roots ------------------------------------------------------------------ */
 
 enum {

@@ -81,14 +81,13 @@ static int check(const mm_value *in, mm_error *err)
 typedef struct fctx {
     mm_expr *e;
     long evals;
-    double sign;                /* +1: f, -1: -f (golden section maximises) */
 } fctx;
 
 static int feval(double x, double *fx, void *p)
 {
     fctx *c = p;
     c->evals++;
-    *fx = c->sign * mm_expr_eval(c->e, &x);
+    *fx = mm_expr_eval(c->e, &x);
     return 0;
 }
 
@@ -98,44 +97,14 @@ static double f1(fctx *c, double x)
     return mm_expr_eval(c->e, &x);
 }
 
-/* The extreme of s f (s = +1 largest, -1 smallest) near the candidate x0
- * (spacing h to its neighbours), within [a, b]: a finer scan of
- * [x0 - h, x0 + h] (the window may hold more than one bump), then golden
- * section between the best point's neighbours (eq. 6).  *xe estimates the
- * error of x: the bracket, or the flat band where the rounding of f hides
- * the peak: golden section compares two values, each off by up to err_f
- * (never less than an ulp), so it cannot tell points apart where
- * |f''| dx^2 / 2 < 2 err_f, dx = sqrt(4 err_f / |f''|); *fe the error of
- * the value, err_f + |f''| xe^2 / 2. */
-static void extreme(fctx *c, double s, double x0, double h, double a, double b, double *x, double *fx,
-                    double *xe, double *fe)
+/* f for mm_opt_refine_extreme: the value with its rounding bound (that one
+ * not counted as an evaluation, it repeats the last) */
+static double f_err(double x, double *err, void *p)
 {
-    enum { FINE = 32 };
-    double lo = fmax(a, x0 - h), hi = fmin(b, x0 + h), best = x0, fbest = s * f1(c, x0);
-    for (int k = 0; k <= FINE && hi > lo; k++) {
-        double y = k == FINE ? hi : lo + (hi - lo) * k / FINE, v = s * f1(c, y);
-        if (isfinite(v) && v > fbest)
-            best = y, fbest = v;
-    }
-    h = (hi - lo) / FINE;
-    lo = fmax(a, best - h), hi = fmin(b, best + h);
-    mm_opt_result r = {best, fbest, 0, 0};
-    c->sign = s;
-    if (hi > lo)
-        mm_opt_golden_max(feval, c, lo, hi, 4 * DBL_EPSILON * fmax(fabs(lo), fabs(hi)) + DBL_MIN, 200, &r, NULL);
-    c->sign = 1;
-    if (!(r.fx >= fbest))                           /* golden section lost to the scan (an end maximum) */
-        r.x = best, r.bracket = 0;
-    double ef, v = mm_expr_eval_err(c->e, &r.x, &ef);
-    ef = fmax(ef, v != 0 ? ldexp(1, ilogb(v) - 52) : 0);
-    /* f'' by a second difference on a scale H well above the noise */
-    double H = fmax(h / 4, 1e-6 * fmax(fabs(r.x), h)), fl = f1(c, r.x - H), fr = f1(c, r.x + H);
-    double f2 = fabs(fl - 2 * v + fr) / (H * H);
-    double band = f2 > 0 ? sqrt(4 * ef / f2) : (hi - lo);
-    *x = r.x;
-    *fx = v;
-    *xe = fmax(r.bracket, fmin(band, hi - lo)) + 2 * DBL_EPSILON * fabs(r.x);
-    *fe = ef + 0.5 * f2 * (*xe) * (*xe);
+    fctx *c = p;
+    if (err)
+        return mm_expr_eval_err(c->e, &x, err);
+    return f1(c, x);
 }
 
 /* A candidate for an extreme: a local extreme of the scan at x, with
@@ -277,10 +246,10 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         double x = xs[k], v = ys[k], xe = 0, ve = 0;
         int from_plot = 1;
         for (int j = 0; j < NCAND && cd[w][j].h > 0; j++) {
-            double xj, vj, xej, vej;
-            extreme(c, sg, cd[w][j].x, cd[w][j].h, a, b, &xj, &vj, &xej, &vej);
-            if (j == 0 || sg * vj > sg * v)
-                x = xj, v = vj, xe = xej, ve = vej, from_plot = cd[w][j].from_plot;
+            mm_opt_extreme q;                 /* finer scan, then golden section (eq. 6) */
+            mm_opt_refine_extreme(f_err, c, sg, cd[w][j].x, cd[w][j].h, a, b, &q);
+            if (j == 0 || sg * q.fx > sg * v)
+                x = q.x, v = q.fx, xe = q.x_err, ve = q.fx_err, from_plot = cd[w][j].from_plot;
         }
         mm_res_scalar_err(res, w == 0 ? O_MAX : O_MIN, v, ve, MM_ERR_ESTIMATE);
         mm_res_scalar_err(res, w == 0 ? O_XMAX : O_XMIN, x, xe, MM_ERR_ESTIMATE);
@@ -334,7 +303,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     static const char *const vars[] = {"x"};
-    fctx c = {NULL, 0, 1};
+    fctx c = {NULL, 0};
     int rc = mm_expr_compile(in[P_F].text, vars, 1, &c.e, err);
     if (rc != MM_OK) {
         if (err)

@@ -52,41 +52,6 @@ static const mm_output outputs[] = {
     [O_P] = MM_SERIES("p", "p(x) on the real axis", "", "x", ""),
 };
 
-typedef struct cplx {
-    double re, im;
-} cplx;
-
-/* |p(z)| and sum |p_k| |z|^(d-k), both divided by max(1, |z|)^d so that
- * nothing overflows for large roots: for |z| > 1 Horner runs on the
- * reversed coefficients in 1/z.  The ratio is what the check needs. */
-static void backward(int d, const double *q, cplx z, double *pz, double *scale)
-{
-    double r = hypot(z.re, z.im);
-    double yr, yi = 0, s;
-    if (r <= 1) {
-        yr = q[0];
-        s = fabs(q[0]);
-        for (int k = 1; k <= d; k++) {
-            double tr = yr * z.re - yi * z.im + q[k];
-            yi = yr * z.im + yi * z.re;
-            yr = tr;
-            s = s * r + fabs(q[k]);
-        }
-    } else {
-        cplx w = {z.re / r / r, -z.im / r / r};       /* 1/z, without forming r^2 */
-        yr = q[d];
-        s = fabs(q[d]);
-        for (int k = d - 1; k >= 0; k--) {
-            double tr = yr * w.re - yi * w.im + q[k];
-            yi = yr * w.im + yi * w.re;
-            yr = tr;
-            s = s / r + fabs(q[k]);
-        }
-    }
-    *pz = hypot(yr, yi);
-    *scale = s;
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     int nc = in[P_P].cols;
@@ -145,9 +110,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             nill++;
             ill_err = fmax(ill_err, z->err);
         }
-        double pz, scale;
-        backward(d, q, (cplx){z->re, z->im}, &pz, &scale);
-        worst_b = fmax(worst_b, scale > 0 ? pz / scale : pz);
+        worst_b = fmax(worst_b, mm_poly_backward_error(d + 1, q, z->re, z->im));
         sre += z->re;
         serr += z->err;
         sabs += mod;

@@ -11,6 +11,25 @@
 #define EPS DBL_EPSILON
 
 /* ==== evaluation ================================================================= */
+/* Hand values: the ratio |p(z)| / sum |p_k| |z|^(d-k) does not depend on the
+ * scaling by max(1, |z|)^d the routine uses, so it is known exactly. */
+static void backward_error_should_match_hand_values_without_overflow(void **state)
+{
+    (void)state;
+    const double q1[] = {1, 0, 1};                       /* x^2 + 1 */
+    assert_true(mm_poly_backward_error(3, q1, 0, 1) == 0.0);        /* i is exact */
+    /* at 1 + i: p = 1 + 2i, |p| = sqrt 5; scale |z|^2 + 1 = 3 */
+    check_rel(mm_poly_backward_error(3, q1, 1, 1), sqrt(5.0) / 3, 8 * EPS, "x^2 + 1 at 1 + i");
+    /* at 0.5 (|z| < 1, the other branch): p = 1.25, scale 1.25: 1 */
+    check_rel(mm_poly_backward_error(3, q1, 0.5, 0), 1.0, 4 * EPS, "x^2 + 1 at 0.5");
+    /* x^2 - 1e300 x at 3e300 (p(z) = 6e600 would overflow unscaled): divided
+     * by |z|^2, |p| = 2/3 and the scale 1 + 1/3, so the ratio is 1/2 */
+    const double q2[] = {1, -1e300, 0};
+    check_rel(mm_poly_backward_error(3, q2, 3e300, 0), 2.0 / 4.0, 8 * EPS, "x^2 - 1e300 x at 3e300");
+    const double q3[] = {0, 0};
+    assert_true(mm_poly_backward_error(2, q3, 5, 0) == 0.0);        /* the zero polynomial */
+}
+
 
 static void horner_bound_should_cover_the_actual_error(void **state)
 {
@@ -392,6 +411,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(horner_bound_should_cover_the_actual_error),
+        cmocka_unit_test(backward_error_should_match_hand_values_without_overflow),
         cmocka_unit_test(book_cubic_should_have_the_published_roots),
         cmocka_unit_test(wilkinson_roots_should_come_with_error_bounds_that_hold),
         cmocka_unit_test(triple_root_should_report_eps_to_the_one_third),
