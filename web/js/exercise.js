@@ -138,9 +138,11 @@ async function solve(query, edit) {
   const ac = new AbortController();
   state.inflight = ac;
   $('#answer').setAttribute('aria-busy', 'true');
+  performance.mark(`mm-solve-${seq}`);
   let res, body;
   try {
     res = await fetchAnswer(query, ac.signal);
+    performance.mark(`mm-answer-${seq}`);
   } catch (e) {
     if (e.name === 'AbortError') return;
     body = { error: { code: 'network', param: '', message: t('net_error', { msg: e.message }) } };
@@ -171,6 +173,9 @@ async function solve(query, edit) {
     renderAnswer();
     if (edit !== undefined) announceAnswer();
   }
+  performance.mark(`mm-drawn-${seq}`);
+  // after the frame that shows it (the benchmark measures to here)
+  requestAnimationFrame(() => setTimeout(() => performance.mark(`mm-painted-${seq}`), 0));
   document.documentElement.dataset.rendered = String(seq);
   window.dispatchEvent(new CustomEvent('mm:rendered', { detail: { seq, ok: !state.error } }));
 }
@@ -229,7 +234,9 @@ function announceAnswer() {
 function showError() {
   const err = state.error;
   const box = $('#answer-error');
-  for (const f of document.querySelectorAll('.field')) {
+  if (!err && !state.errorShown) return;      // nothing shown, nothing to show
+  state.errorShown = !!err;
+  for (const f of document.querySelectorAll('.field.invalid, .field:has(.field-error:not([hidden]))')) {
     f.classList.remove('invalid');
     const input = $('.input', f);
     input.removeAttribute('aria-invalid');
@@ -477,7 +484,8 @@ function renderTables(tables) {
 
 /** Digits that show where value and reference part: the agreeing ones and two more. */
 function checkDigits(c) {
-  const rel = typeof c.rel_error === 'number' && c.rel_error > 0 ? c.rel_error : c.abs_error > 0 && c.reference !== 0 ? c.abs_error / Math.abs(c.reference) : 1e-16;
+  if (!c.reference) return 4;                 // against zero, the error says it all
+  const rel = typeof c.rel_error === 'number' && c.rel_error > 0 ? c.rel_error : c.abs_error > 0 ? c.abs_error / Math.abs(c.reference) : 1e-16;
   return Math.max(4, Math.min(17, Math.ceil(-Math.log10(rel)) + 2));
 }
 
@@ -542,13 +550,43 @@ function renderPrintParams() {
     el('tbody', {}, rows)));
 }
 
-/** Tables that do not fit their box are laid out as one card per row. */
-function fitTables() {
-  for (const wrap of document.querySelectorAll('.answer .table-wrap')) {
-    const table = $('table', wrap);
-    if (!table) continue;
-    wrap.classList.remove('stacked');
-    if (table.scrollWidth > wrap.clientWidth + 1) wrap.classList.add('stacked');
+/** Tables that do not fit their box are laid out as one card per row.
+ *  A table keeps the layout it had for the last answer at this width (no
+ *  layout is forced while an answer is drawn); whether it still fits is
+ *  measured after the frame, and changed only if it does not. */
+const stackedAt = new Map();     // table key → whether stacked, at state.colWidth
+function tableKey(wrap) {
+  return `${state.colWidth}|${wrap.dataset.table || wrap.closest('[id]').id}|${$('table', wrap).rows[0]?.cells.length}`;
+}
+function fitTables(now) {
+  const wraps = [...document.querySelectorAll('.answer .table-wrap')].filter((w) => $('table', w));
+  for (const w of wraps) {
+    const known = stackedAt.get(tableKey(w));
+    if (known !== undefined) setStacked(w, known);
+  }
+  const measure = () => {
+    for (const w of wraps) {
+      if (!w.isConnected) continue;
+      const table = $('table', w);
+      setStacked(w, false);
+      const stacked = table.scrollWidth > w.clientWidth + 1;
+      setStacked(w, stacked);
+      stackedAt.set(tableKey(w), stacked);
+    }
+  };
+  if (now) measure(); else requestAnimationFrame(measure);
+}
+/** Stacked rows lose a table's meaning to a screen reader unless they say it. */
+function setStacked(w, on) {
+  if (w.classList.contains('stacked') === on) return;
+  w.classList.toggle('stacked', on);
+  const table = $('table', w);
+  const role = (e, r) => (on ? e.setAttribute('role', r) : e.removeAttribute('role'));
+  role(table, 'table');
+  for (const g of table.querySelectorAll('thead, tbody')) role(g, 'rowgroup');
+  for (const r of table.rows) {
+    role(r, 'row');
+    for (const c of r.cells) role(c, c.tagName === 'TH' ? (c.scope === 'row' ? 'rowheader' : 'columnheader') : 'cell');
   }
 }
 
@@ -631,11 +669,10 @@ function fillDataTable(node) {
   if (!v) return;
   for (const tb of figureTables(v.fig)) {
     body.append(el('p', { class: 'muted', text: tb.k > 1 ? t('data_every', { k: tb.k, n: tb.n }) : t('data_all', { n: tb.n }) }),
-      el('div', { class: 'table-wrap' }, el('table', { class: 'data' },
+      el('div', { class: 'data-wrap', tabindex: '0', role: 'region', 'aria-label': t('data_table') }, el('table', { class: 'data' },
         el('thead', {}, el('tr', {}, tb.head.map((h) => el('th', { scope: 'col', text: h })))),
         el('tbody', {}, tb.rows.map((r) => el('tr', {}, r.map((x) => el('td', { class: 'n' }, num(x)))))))));
   }
-  fitTables();
 }
 
 /** Pointer and keyboard on a figure: a cursor reads values; on a figure
@@ -740,9 +777,16 @@ function renderViews() {
   stage.hidden = !anim && !want;
   box.hidden = boxWant === 0;
 
-  // widths first (one layout), then the drawing
-  const widths = all.map((n) => Math.floor($('.plot-svg', n).clientWidth));
-  const stageWidth = anim ? Math.floor($('.anim-svg', stage).clientWidth) : 0;
+  // the width of the answer's column, measured once (a layout) and again
+  // only when the page is resized; every figure is drawn at it
+  if (!state.colWidth) {
+    const n = all[0] || null;
+    state.colWidth = Math.floor(n ? $('.plot-svg', n).clientWidth : box.clientWidth);
+    state.animWidth = anim ? Math.floor($('.anim-svg', stage).clientWidth) : 0;
+  }
+  if (anim && !state.animWidth) state.animWidth = Math.floor($('.anim-svg', stage).clientWidth);
+  const widths = all.map(() => state.colWidth);
+  const stageWidth = anim ? state.animWidth : 0;
   state.views = figs.map((fig, i) => {
     const node = all[i];
     node._index = i;
@@ -777,7 +821,9 @@ function renderViews() {
     for (const v of state.views) if (v.linked) v.view.setMarker(tt);
     if (state.autoplay) { state.autoplay = false; startWhenVisible(state.player); }
   }
-  document.documentElement.style.setProperty('--stage-h', `${stage.hidden ? 0 : Math.ceil(stage.getBoundingClientRect().height)}px`);
+  if (narrowMq.matches) {
+    requestAnimationFrame(() => document.documentElement.style.setProperty('--stage-h', `${stage.hidden ? 0 : Math.ceil(stage.getBoundingClientRect().height)}px`));
+  }
 }
 
 /** Play the animation once it is on screen (never with reduced motion). */
@@ -802,8 +848,10 @@ function animTheme(light) {
 /** Redraw at a new width or in new colours, without asking the server. */
 function redraw() {
   if (!state.answer) return;
+  state.colWidth = 0;
+  state.animWidth = 0;
   renderViews();
-  fitTables();
+  fitTables(true);
 }
 
 let resizeFrame = 0;

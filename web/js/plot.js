@@ -114,6 +114,25 @@ function isPartner(ref, s) {
   return s.name === stem || (stem !== ref.name && s.name.startsWith(stem) && s.name.length > stem.length && /[_\-]/.test(s.name[stem.length]));
 }
 
+/** Whether two curves run on top of each other over a good part of their
+ *  common x range: within 1.5 % of the y range at a third of 100 samples. */
+function overlaps(a, b) {
+  const [a0, a1] = span(a.x), [b0, b1] = span(b.x);
+  const lo = Math.max(a0, b0), hi = Math.min(a1, b1);
+  if (!(hi > lo) || !monotonic(a.x) || !monotonic(b.x)) return false;
+  const [ya0, ya1] = span(a.y), [yb0, yb1] = span(b.y);
+  const tol = 0.015 * (Math.max(ya1, yb1) - Math.min(ya0, yb0) || 1);
+  let close = 0, n = 0;
+  for (let k = 0; k <= 100; k++) {
+    const x = lo + (hi - lo) * k / 100;
+    const ya = interp(a.x, a.y, x), yb = interp(b.x, b.y, x);
+    if (!Number.isFinite(ya) || !Number.isFinite(yb)) continue;
+    n++;
+    if (Math.abs(ya - yb) <= tol) close++;
+  }
+  return n > 0 && close >= n / 3;
+}
+
 function commonPrefix(strings) {
   let p = strings[0] || '';
   for (const t of strings) while (!t.startsWith(p)) p = p.slice(0, -1);
@@ -154,7 +173,8 @@ export function figureNames(items) {
     const pre = wordPrefix(labels), suf = wordSuffix(labels);
     if (pre.length >= 4) {
       quantity = pre;
-      cut = (l) => l.slice(pre.length).replace(/^[\s,;:]+/, '') || l;
+      // "mode shape 1" → "1" says too little: a bare number keeps its label
+      cut = (l) => { const r = l.slice(pre.length).replace(/^[\s,;:]+/, ''); return r && !/^[\d.+\-−]+$/.test(r) ? r : l; };
     } else if (suf.length >= 4) {
       quantity = suf;
       cut = (l) => l.slice(0, l.length - suf.length).replace(/[\s,;:]+$/, '') || l;
@@ -244,9 +264,12 @@ function makeFigure(key, items, hinted, colours, pinned) {
     used.add(c % 8);
     s.colour = c % 8;
   }
+  // a curve that lies on an earlier one is dashed, so that both stay in sight
   const lineMains = mains.filter((s) => s.mark.includes('line') || s.mark === 'step');
-  // three or more curves may lie on each other: dashes keep each in sight
-  lineMains.forEach((s, j) => { s.dash = lineMains.length >= 3 ? DASHES[j % DASHES.length] : ''; });
+  let nd = 0;
+  lineMains.forEach((s, j) => {
+    s.dash = lineMains.slice(0, j).some((q) => overlaps(q.raw, s.raw)) ? DASHES[1 + (nd++ % (DASHES.length - 1))] : '';
+  });
   for (const s of items.filter((x) => x.role === 'reference')) {
     const partner = mains.find((m) => isPartner(s, m));
     s.colour = partner ? partner.colour : -1;
