@@ -118,6 +118,14 @@ $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(LIBS)
 
 fuzz-bins: $(FUZZ_BINS)
 
+# README's example exercise, compiled and run by tests/unit/test_readme.c
+$(BUILD)/readme/readme_example.c: README.md
+	@mkdir -p $(dir $@)
+	awk '/<!-- readme-example: end -->/ {f = 0} f && !/^```/ {print} /<!-- readme-example: begin -->/ {f = 1}' $< > $@
+
+$(BUILD)/obj/tests/unit/test_readme.o: $(BUILD)/readme/readme_example.c
+$(BUILD)/obj/tests/unit/test_readme.o: CPPFLAGS += -I$(BUILD)/readme
+
 $(BUILD)/load/loadtool: $(BUILD)/obj/tests/load/loadtool.o $(LIBS)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS) $(TEST_LIBS)
@@ -134,7 +142,8 @@ run: deps
 	@$(MAKE) --no-print-directory all
 	$(SERVER_BIN) --host $(HOST) --port $(PORT)
 
-test: deps
+test:
+	@scripts/deps.sh --test
 	@$(MAKE) --no-print-directory tests
 	@BUILD=$(BUILD) tests/run.sh
 

@@ -306,8 +306,9 @@ typedef struct mm_exercise {
     const char *title;
     const char *summary;   /* one line for the catalog */
     const char *tags;      /* comma-separated */
-    const char *theory;    /* path of the Markdown file from the source root */
-    const char *script;    /* path of the Octave/MATLAB body (<name>.m), or NULL */
+    const char *theory;    /* path of the Markdown file from the source root; the
+                              Octave/MATLAB body of its script is beside it, with
+                              the extension .m instead of .md */
     const mm_param *params;
     int n_params;
     const mm_output *outputs;   /* every output an answer can carry */
@@ -329,6 +330,12 @@ const mm_exercise *mm_exercise_find(const char *id);
  * "" when there is none.  Cannot fail. */
 const char *mm_chapter_title(int chapter);
 const char *mm_section_title(const char *section);
+
+/* Check one exercise: id matching its chapter, a section of the book's
+ * contents, the required texts, an output table well formed (names unique
+ * identifiers, families sane, tables with columns and units, one
+ * animation at most).  Returns MM_OK or MM_EINTERNAL saying what is wrong. */
+int mm_exercise_check(const mm_exercise *ex, mm_error *err);
 
 /* Check the registry: ids unique and well formed, every section titled,
  * parameter and output tables well formed (names unique, families sane,

@@ -267,29 +267,33 @@ static int check_outputs(const mm_exercise *ex, mm_error *err)
     return MM_OK;
 }
 
-int mm_registry_check(mm_error *err)
+int mm_exercise_check(const mm_exercise *ex, mm_error *err)
 {
     static const char *const prefix[] = {"", "num-", "kin-", "sta-", "dyn-", "vib-"};
+    if (!ex->id || ex->chapter < 1 || ex->chapter > 5 ||
+        strncmp(ex->id, prefix[ex->chapter], 4) != 0 || strlen(ex->id) > 40)
+        return mm_error_set(err, MM_EINTERNAL, "", "id '%s' does not match its chapter %d",
+                            ex->id ? ex->id : "(null)", ex->chapter);
+    if (!ex->section || ex->section[0] != '0' + ex->chapter || !mm_section_title(ex->section)[0])
+        return mm_error_set(err, MM_EINTERNAL, "", "%s: section '%s' is not in chapter %d's contents",
+                            ex->id, ex->section ? ex->section : "(null)", ex->chapter);
+    if (!ex->title || !ex->summary || !ex->theory || !ex->solve)
+        return mm_error_set(err, MM_EINTERNAL, "", "%s: title, summary, theory and solve are required", ex->id);
+    return check_outputs(ex, err);
+}
+
+int mm_registry_check(mm_error *err)
+{
     for (int i = 0; i < mm_exercise_count; i++) {
         const mm_exercise *ex = mm_exercises[i];
-        if (!ex->id || ex->chapter < 1 || ex->chapter > 5 ||
-            strncmp(ex->id, prefix[ex->chapter], 4) != 0 || strlen(ex->id) > 40)
-            return mm_error_set(err, MM_EINTERNAL, "", "exercise %d: id '%s' does not match its chapter %d",
-                                i, ex->id ? ex->id : "(null)", ex->chapter);
+        int rc = mm_exercise_check(ex, err);
+        if (rc != MM_OK)
+            return rc;
         for (int j = 0; j < i; j++)
             if (strcmp(mm_exercises[j]->id, ex->id) == 0)
                 return mm_error_set(err, MM_EINTERNAL, "", "%s is registered twice", ex->id);
-        if (!ex->section || ex->section[0] != '0' + ex->chapter || !mm_section_title(ex->section)[0])
-            return mm_error_set(err, MM_EINTERNAL, "", "%s: section '%s' is not in chapter %d's contents",
-                                ex->id, ex->section ? ex->section : "(null)", ex->chapter);
         if (i > 0 && mm_exercises[i - 1]->chapter > ex->chapter)
             return mm_error_set(err, MM_EINTERNAL, "", "%s: not in book order", ex->id);
-        if (!ex->title || !ex->summary || !ex->theory || !ex->solve)
-            return mm_error_set(err, MM_EINTERNAL, "", "%s: title, summary, theory and solve are required",
-                                ex->id);
-        int rc = check_outputs(ex, err);
-        if (rc != MM_OK)
-            return rc;
     }
     return MM_OK;
 }

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Install what mechmat needs and is missing; quick when everything is there.
+# scripts/deps.sh --test adds what only the tests need (Octave, nginx).
 # Debian packages through apt-get (as root, or with sudo), browser-side
 # packages through npm from the committed package-lock.json.
 set -euo pipefail
@@ -12,8 +13,11 @@ debs=(
   libcmocka-dev libcurl4-openssl-dev curl
   libgsl-dev wrk valgrind
   chromium
-  octave nginx
 )
+# only for `make test`: the Octave scripts' test, nginx in front of two instances
+if [[ "${1:-}" == "--test" ]]; then
+  debs+=(octave nginx)
+fi
 
 missing=()
 for p in "${debs[@]}"; do
