@@ -558,6 +558,20 @@ try {
     assert.equal((await page.textContent('[data-scalar="zeta"] .val')).trim(), '0,1', 'a decimal comma in the page');
     assert.match(await page.textContent('#curl'), /solve'$/, 'the API is untouched');
     assert.equal(await page.getAttribute('#theory', 'lang'), 'en', 'the theory is English, and says so');
+    // …until a translated theory file is listed for the exercise
+    const p3 = await browser.newPage();
+    await p3.route('**/i18n/cs.js', async (route) => {
+      const body = (await (await route.fetch()).text()).replace('theory: [],', "theory: ['vib-sdof-free'],");
+      await route.fulfill({ contentType: 'text/javascript', body });
+    });
+    await p3.route('**/i18n/theory/cs/vib-sdof-free.html', (route) => route.fulfill({
+      contentType: 'text/html', body: '<h1>Volné kmitání</h1><h2>Model</h2><p>Hmota <span class="math math-inline">m</span> na pružině.</p>',
+    }));
+    await openExercise(p3, server.origin, 'id=vib-sdof-free&lang=cs');
+    await p3.waitForFunction(() => document.querySelector('#theory h3') && document.querySelector('#theory h3').textContent === 'Model');
+    assert.equal(await p3.getAttribute('#theory', 'lang'), null, 'a Czech theory in a Czech page');
+    await p3.waitForSelector('#theory .katex');
+    await p3.close();
     // every interface string exists in every language
     const missing = await page.evaluate(async () => {
       const { EN } = await import('/js/i18n.js');

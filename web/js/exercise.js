@@ -411,6 +411,7 @@ function renderAnswer() {
   renderChecks(a.checks || []);
   renderMethod(a.method || {}, a.elapsed_us);
   renderPrintParams();
+  $('#print-source').textContent = t('printed_from', { url: location.href });
   updateCurl();
   $('#takeaway').hidden = false;
   fitTables();
