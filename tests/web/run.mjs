@@ -419,7 +419,7 @@ try {
 
   // ---- the animation ------------------------------------------------------------------------
 
-  await test('the animation player: scrubber, linked marker, scrubbing the plot, play, single frame', async (page) => {
+  await test('the animation player: scrubber, speed, loop, play, a marker on the time plot, scrubbing the plot, touch', async (page) => {
     await openExercise(page, server.origin, 'id=vib-sdof-forced');
     const answer = await solveJson('vib-sdof-forced/solve');
     const ts = answer.animation.t;
@@ -458,6 +458,17 @@ try {
     assert.equal(await page.getAttribute('.anim-play', 'aria-label'), 'Pause');
     await page.click('.anim-play');
     assert.equal(await page.getAttribute('.anim-play', 'aria-label'), 'Play');
+    // speed: the note says how it relates to real time
+    assert.equal(await page.textContent('.anim-rate'), 'real time');
+    await page.selectOption('.anim-speed', '0.5');
+    assert.equal(await page.textContent('.anim-rate'), '2× slower than real time');
+    // without loop it stops at the last frame
+    await page.selectOption('.anim-speed', '4');
+    await page.uncheck('.anim-loop');
+    await page.$eval('.anim-scrub', (s) => { s.value = String(Number(s.max) - 6); s.dispatchEvent(new Event('input')); });
+    await page.click('.anim-play');
+    await page.waitForFunction(() => document.querySelector('.anim-play').getAttribute('aria-label') === 'Play');
+    assert.equal(Number(await page.getAttribute('figure.anim', 'data-frame')), ts.length - 1);
   });
 
   await test('every kind and style of shape is drawn; one frame is a static diagram', async (page) => {
@@ -500,6 +511,18 @@ try {
     assert.equal(d.arrow, 'F = 1000 N', 'an arrow with its value and unit');
     assert.equal(d.label, 'A');
     assert.match(d.values, /AB = 1500.*BC = −900/, 'each value shown');
+  });
+
+  await test('an answer with neither series nor animation shows its numbers alone', async (page) => {
+    await rewriteSolve(page, (json) => { json.series = []; delete json.animation; });
+    await openExercise(page, server.origin, 'id=vib-sdof-forced');
+    assert.equal(await page.isVisible('#stage'), false);
+    assert.equal(await page.isVisible('#figures'), false);
+    assert.equal(await scalar(page, 'omega_n'), 10);
+    const rendered = nextRender(page);
+    await page.fill('#p-k', '400');
+    await rendered;
+    assert.equal(await scalar(page, 'omega_n'), 20);
   });
 
   // ---- phone, print, languages, schemes, embed, extensions ----------------------------------------
@@ -671,6 +694,8 @@ try {
       for (const v of await axeSerious(page)) problems.push(`catalog ${tag}: ${v}`);
     }
     for (const e of api) {
+      const meta = await solveJson(e.id);
+      for (const p of meta.params) if (['id', 'lang', 'scheme', 'embed'].includes(p.name)) problems.push(`${e.id}: a parameter named ${p.name}, a name of the page's own`);
       await page.setViewportSize({ width: 1280, height: 800 });
       await openTypeset(page, server.origin, `id=${e.id}`);
       if (await page.$('#answer-error:not([hidden])')) problems.push(`${e.id}: an error at its defaults: ${await page.textContent('#answer-error')}`);

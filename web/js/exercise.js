@@ -783,6 +783,7 @@ function renderViews() {
   if (!state.colWidth) {
     const n = all[0] || null;
     state.colWidth = Math.floor(n ? $('.plot-svg', n).clientWidth : box.clientWidth);
+    lastWidth = $('#workbench').clientWidth;      // the observer need not redraw for this width
     state.animWidth = anim ? Math.floor($('.anim-svg', stage).clientWidth) : 0;
   }
   if (anim && !state.animWidth) state.animWidth = Math.floor($('.anim-svg', stage).clientWidth);
@@ -1129,6 +1130,7 @@ function fatal(message) {
 }
 
 async function main() {
+  performance.mark('mm-main');
   await initLang(boot.dict);
   translateDocument();
   wirePrefs(themeForMedia);

@@ -204,9 +204,10 @@ export function planFigures(series, ctx = {}) {
     const role = s.role || (!hinted && REF_NAME.test(s.name) ? 'reference' : '');
     return {
       raw: s, name: s.name, order: i, role, mark: s.mark || '',
-      label: label(s.name, s.label || decl.label || s.name),
+      // names and units as the exercise declares them (the answer repeats them)
+      label: label(s.name, decl.label || s.label || s.name),
       ckey: familyKey(s.name, outputs),
-      xLabel: s.x_label || decl.x_label || 'x', xUnit: s.x_unit ?? decl.x_unit ?? '', unit: s.unit ?? decl.unit ?? '',
+      xLabel: decl.x_label || s.x_label || 'x', xUnit: decl.x_unit ?? s.x_unit ?? '', unit: decl.unit ?? s.unit ?? '',
     };
   });
   // groups: by the figure hint, else by the x quantity, its unit and the y unit
