@@ -159,7 +159,7 @@ export default {
     '5.12.1': 'Tyče', '5.12.2': 'Nosníky',
   },
   exercises: {
-    'num-complex': { title: 'Komplexní čísla: algebraický a goniometrický tvar', summary: 'Umocnit, násobit, dělit, mocnit a odmocňovat komplexní čísla v Gaussově rovině.' },
+    'num-complex': { title: 'Komplexní čísla: algebraický a goniometrický tvar', summary: 'Umocnit na druhou, násobit, dělit, umocňovat a odmocňovat komplexní čísla v Gaussově rovině.' },
     'num-linear-system': { title: 'Soustava lineárních rovnic A x = b', summary: 'Řešení A x = b jako A\\b v MATLABu; číslo podmíněnosti říká, kolika číslicím x lze věřit.' },
     'num-eigen': { title: 'Vlastní čísla: vlastní frekvence a tvary kmitů', summary: 'Řešení K v = lambda M v jako eig(K, M) v MATLABu: vlastní frekvence a vlastní tvary řetězce hmot a pružin.' },
     'num-poly-roots': { title: 'Kořeny polynomu', summary: 'Všechny reálné i komplexní kořeny polynomu jako roots(p) v MATLABu, každý s odhadem chyby.' },

@@ -140,11 +140,6 @@ export function unitText(u) {
   return (u || '').replace(/\^\(?(-?\d+)\)?/g, (_, n) => supText(n));
 }
 
-/** "label [unit]", or just the label for a pure number. */
-export function withUnit(label, unit) {
-  return unit ? `${label} [${unitText(unit)}]` : label;
-}
-
 export function escapeHtml(s) {
   return String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 }

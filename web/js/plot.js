@@ -199,7 +199,7 @@ export function planFigures(series, ctx = {}) {
   const colours = ctx.colours || new Map();
   const label = ctx.label || ((n, l) => l);
   const hinted = (series || []).some((s) => s.figure || s.role || s.mark || s.aspect || s.x_scale || s.y_scale);
-  const items = (series || []).map((s, i) => {
+  const items = (series || []).filter((s) => s.x && s.y && Math.min(s.x.length, s.y.length) > 0).map((s, i) => {
     const decl = outputs.get(s.name) || {};
     const role = s.role || (!hinted && REF_NAME.test(s.name) ? 'reference' : '');
     return {
@@ -802,8 +802,4 @@ export function svgDocument(parts) {
   const total = Math.max(1, y - gap);
   return `<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="${SVGNS}" width="${width}" height="${total}" viewBox="0 0 ${width} ${total}">` +
     `<rect width="100%" height="100%" fill="white"/>${inner}</svg>\n`;
-}
-
-export function serializeSvg(svg) {
-  return '<?xml version="1.0" encoding="UTF-8"?>\n' + new XMLSerializer().serializeToString(svg) + '\n';
 }
