@@ -7,6 +7,7 @@
 // with each split into the wait for the answer (network and server) and the
 // page's own work (parse, draw, lay out).  Goals: first plot < 300 ms,
 // redraw < 50 ms.
+import { loadavg } from 'node:os';
 import { nextRender, openExercise, startBrowser, startServer, stopBrowser, stopServer } from './common.mjs';
 
 const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
@@ -47,6 +48,7 @@ try {
     work.push(m.painted - m.answer);
   }
   const f = (x) => x.toFixed(0);
+  console.log(`browser: load average ${loadavg().map((x) => x.toFixed(1)).join(' ')} on ${(await import('node:os')).cpus().length} cores (a busy machine stretches every figure below)`);
   console.log(`browser: first plot after navigation  median ${f(median(loads))} ms of 7   (goal < 300 ms; the answer arrived at ${f(median(loadWait))} ms)`);
   console.log(`browser: input change to redrawn plot median ${median(redraws).toFixed(1)} ms of 20  (goal < 50 ms; waiting for the answer ${median(waits).toFixed(1)} ms, drawing ${median(work).toFixed(1)} ms)`);
 } finally {

@@ -351,7 +351,7 @@ try {
     const box = await (await page.$('svg.mm-plot')).boundingBox();
     await page.mouse.move(box.x + box.width * 0.55, box.y + box.height * 0.5);
     const tip = await page.waitForSelector('svg.mm-plot .mm-tip');
-    assert.match(await tip.textContent(), /t = [\d.]+ s.*displacement = −?[\d.]+( × 10[⁻\d]+)? m/);
+    assert.match(await tip.textContent(), /t = [\d.\u2009]+ s.*displacement = −?[\d.\u2009]+( × 10[⁻\d]+)? m/);
     await page.focus('.plot-svg');
     assert.equal(await page.getAttribute('.plot-svg', 'role'), 'slider');
     const v0 = Number(await page.getAttribute('.plot-svg', 'aria-valuenow'));

@@ -412,6 +412,7 @@ function renderAnswer() {
   renderMethod(a.method || {}, a.elapsed_us);
   renderPrintParams();
   $('#print-source').textContent = t('printed_from', { url: location.href });
+  if (state.embed) $('#embed-open').href = pageUrl(state.answerQuery).replace(/&embed=[^&]*/, '');
   updateCurl();
   $('#takeaway').hidden = false;
   fitTables();
@@ -440,7 +441,7 @@ function renderScalars(scalars) {
     const k = kept && kept.get(s.name);
     const label = el('span', { text: scalarLabel(s) });
     if (outputLabel(state.id, s.name, null) == null) english(label);
-    dl.append(el('div', { class: 'result', 'data-scalar': s.name },
+    dl.append(el('div', { class: f.text.length > 12 && !s.text ? 'result long' : 'result', 'data-scalar': s.name },
       el('dt', {}, label, ' ', el('code', { text: s.name })),
       el('dd', {},
         s.text
@@ -535,6 +536,13 @@ function renderMethod(m, elapsed) {
   box.append(el('h2', { text: t('method') }), dl);
 }
 
+/** A resolved parameter value as a learner writes it: 1, 2, 3 or 1, 2; 3, 4. */
+function paramValueText(v) {
+  if (typeof v === 'number') return fmtNumber(v, 12).uni;
+  if (Array.isArray(v)) return v.map((r) => (Array.isArray(r) ? r.map((x) => fmtNumber(x, 12).uni).join(', ') : fmtNumber(r, 12).uni)).join(Array.isArray(v[0]) ? '; ' : ', ');
+  return v == null ? '' : String(v);
+}
+
 /** The parameters as a table, for the printed worked solution. */
 function renderPrintParams() {
   const box = $('#print-params');
@@ -542,7 +550,7 @@ function renderPrintParams() {
   const a = state.answer;
   const rows = state.meta.params.map((p) => {
     const v = a.params ? a.params[p.name] : undefined;
-    const text = v === undefined ? '' : typeof v === 'number' ? fmtNumber(v, 12).uni : Array.isArray(v) ? JSON.stringify(v) : String(v);
+    const text = paramValueText(v);
     return el('tr', {}, english(el('td', { text: paramText(state.id, p.name, 'label', p.label) })),
       el('td', {}, el('code', { text: p.name })), el('td', { class: 'n', text }), el('td', { html: unitHtml(p.unit) }));
   });
@@ -597,7 +605,7 @@ function paramDiff(a, b) {
   const out = [];
   for (const p of state.meta.params) {
     const x = a.params ? a.params[p.name] : undefined, y = b.params ? b.params[p.name] : undefined;
-    if (JSON.stringify(x) !== JSON.stringify(y)) out.push(`${p.name} = ${typeof x === 'number' ? fmtNumber(x, 8).uni : Array.isArray(x) ? JSON.stringify(x) : x}`);
+    if (JSON.stringify(x) !== JSON.stringify(y)) out.push(`${p.name} = ${Array.isArray(x) ? `[${paramValueText(x)}]` : paramValueText(x)}`);
   }
   return out.join(', ');
 }

@@ -31,6 +31,16 @@ function digitsOf(v, sig) {
   return { d: m.replace('.', ''), e: Number(e) };
 }
 
+/** Digits in groups of three with a thin space (ISO 80000), from the
+ *  decimal point outwards, when there are more than four of them. */
+const THIN = '\u2009';
+function groupInt(s) {
+  return s.length > 4 ? s.replace(/\B(?=(\d{3})+$)/g, THIN) : s;
+}
+function groupFrac(s) {
+  return s.length > 4 ? s.replace(/(\d{3})(?=\d)/g, `$1${THIN}`) : s;
+}
+
 /** Lay out digits d (first at 10^e) as decimal or scientific. */
 function layout(neg, d, e) {
   const sign = neg ? '-' : '';
@@ -45,12 +55,12 @@ function layout(neg, d, e) {
       frac = '0'.repeat(-e - 1) + d;
     }
     const text = frac ? `${sign}${int}.${frac}` : `${sign}${int}`;
-    const loc = frac ? `${int}${DEC}${frac}` : int;
+    const loc = frac ? `${groupInt(int)}${DEC}${groupFrac(frac)}` : groupInt(int);
     const uni = (neg ? MINUS : '') + loc;
     return { text, uni, html: uni };
   }
   const mant = d.length > 1 ? `${d[0]}.${d.slice(1)}` : d;
-  const mantLoc = d.length > 1 ? `${d[0]}${DEC}${d.slice(1)}` : d;
+  const mantLoc = d.length > 1 ? `${d[0]}${DEC}${groupFrac(d.slice(1))}` : d;
   const m = (neg ? MINUS : '') + mantLoc;
   return {
     text: `${sign}${mant}e${e}`,
