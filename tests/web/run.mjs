@@ -332,9 +332,12 @@ try {
     await openExercise(page, server.origin, 'id=vib-integrators');
     const colours = await page.$$eval('svg.mm-plot', (svgs) => svgs.map((svg) => Object.fromEntries(
       [...svg.querySelectorAll('.mm-plotarea .mm-series')].map((e) => [e.dataset.series, e.getAttribute('stroke') || e.getAttribute('fill')]))));
-    const rk4 = colours.flatMap((c) => Object.entries(c).filter(([n]) => /rk4/i.test(n)).map(([, c2]) => c2));
-    assert.ok(rk4.length >= 3, 'rk4 in three figures');
-    assert.equal(new Set(rk4).size, 1, `rk4 has one colour: ${rk4}`);
+    for (const method of ['central-difference', 'newmark', 'verlet', 'rk4', 'dopri5', 'dop853']) {
+      const c = colours.flatMap((f) => Object.entries(f).filter(([n]) => n.includes(method)).map(([, c2]) => c2));
+      assert.ok(c.length >= 2, `${method} in two figures or more`);
+      assert.equal(new Set(c).size, 1, `${method} has one colour in every figure: ${c}`);
+    }
+    assert.equal(colours[0].x_exact, '#4a525b', 'the reference of all the methods is none of their colours');
   });
 
   await test('whole-number axes have no decimals; a zoom, a different scale or unit gets its own figure', async (page) => {

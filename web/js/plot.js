@@ -98,7 +98,7 @@ function splitByScale(items) {
   }
   if (clusters.length === 1) return [items];
   for (const r of items.filter((s) => s.role === 'reference')) {
-    const partner = clusters.find((c) => c.items.some((s) => isPartner(r, s)));
+    const partner = clusters.find((c) => c.items.some((s) => isPartner(r, s, main)));
     const [a, b] = span(r.raw.x);
     const near = partner || clusters.reduce((best, c) => {
       const d = Math.abs(Math.log(Math.max(maxAbs(r.raw.y), 1e-300) / Math.max(c.m, 1e-300))) + Math.abs(Math.log((b - a + 1e-300) / (c.b - c.a + 1e-300)));
@@ -109,9 +109,12 @@ function splitByScale(items) {
   return clusters.map((c) => items.filter((s) => c.items.includes(s)));
 }
 
-function isPartner(ref, s) {
+function isPartner(ref, s, all) {
   const stem = ref.name.replace(REF_NAME, '');
-  return s.name === stem || (stem !== ref.name && s.name.startsWith(stem) && s.name.length > stem.length && /[_\-]/.test(s.name[stem.length]));
+  if (s.name === stem) return true;
+  const like = (q) => stem !== ref.name && q.name.startsWith(stem) && q.name.length > stem.length && /[_\-]/.test(q.name[stem.length]);
+  // x_exact is the reference of x_rk4 and x_dopri5 alike: of none in particular
+  return like(s) && (!all || all.filter((q) => q.role !== 'reference' && like(q)).length === 1);
 }
 
 /** Whether two curves run on top of each other over a good part of their
@@ -225,6 +228,24 @@ export function planFigures(series, ctx = {}) {
   return figs;
 }
 
+/** "average acceleration" in one figure is "newmark average acceleration"
+ *  in another: whole words at the end or the start of a known name. */
+function colourOfAlias(colours, key) {
+  if (!key.startsWith('@')) return undefined;
+  const w = key.slice(1).split('-');
+  for (const [k, c] of colours) {
+    if (!k.startsWith('@')) continue;
+    const v = k.slice(1).split('-');
+    const [a, b] = w.length <= v.length ? [w, v] : [v, w];
+    if (a.join('-').length < 5 || a.length === b.length) continue;
+    if (a.every((x, i) => x === b[i]) || a.every((x, i) => x === b[b.length - a.length + i])) return c;
+  }
+  return undefined;
+}
+function nextColour(colours) {
+  return colours.size ? Math.max(...colours.values()) + 1 : 0;
+}
+
 function makeFigure(key, items, hinted, colours, pinned) {
   const first = items[0];
   const fig = {
@@ -255,11 +276,17 @@ function makeFigure(key, items, hinted, colours, pinned) {
   // partner's, or the neutral ink when it is the reference of many
   // the key of a colour: a family's member key, else what the legend calls
   // the series ("rk4" in the error figure and in the energy figure alike)
-  for (const s of items) if (!s.ckey.startsWith('#')) s.ckey = items.length > 1 ? `@${s.legend.toLowerCase().replace(/[^\p{L}\p{N}.=]+/gu, '')}` : s.name;
+  // (alone in its figure, a series is named by the last part of its label:
+  // "relative energy error, RK4" is RK4's)
+  const norm = (t) => `@${t.toLowerCase().split(/[^\p{L}\p{N}.=]+/u).filter(Boolean).join('-')}`;
+  for (const s of items) {
+    if (s.ckey.startsWith('#')) continue;
+    s.ckey = items.length > 1 ? norm(s.legend) : s.label.includes(', ') ? norm(s.label.slice(s.label.lastIndexOf(', ') + 2)) : s.name;
+  }
   const used = new Set();
   const mains = items.filter((s) => s.role !== 'reference');
   for (const s of mains) {
-    if (!colours.has(s.ckey)) colours.set(s.ckey, colours.size);
+    if (!colours.has(s.ckey)) colours.set(s.ckey, colourOfAlias(colours, s.ckey) ?? nextColour(colours));
     let c = colours.get(s.ckey);
     while (used.has(c % 8) && used.size < 8) c++;
     used.add(c % 8);
@@ -272,7 +299,7 @@ function makeFigure(key, items, hinted, colours, pinned) {
     s.dash = lineMains.slice(0, j).some((q) => overlaps(q.raw, s.raw)) ? DASHES[1 + (nd++ % (DASHES.length - 1))] : '';
   });
   for (const s of items.filter((x) => x.role === 'reference')) {
-    const partner = mains.find((m) => isPartner(s, m));
+    const partner = mains.find((m) => isPartner(s, m, mains));
     s.colour = partner ? partner.colour : -1;
     s.dash = '7 4';
   }
