@@ -24,9 +24,29 @@ extern const mm_exercise mm_ex_num_plot;
 /* ==== end of 2 ==== */
 
 /* ==== 3 Statics ==== */
+extern const mm_exercise mm_ex_sta_moment;
+extern const mm_exercise mm_ex_sta_force_system;
+extern const mm_exercise mm_ex_sta_particle_cables;
+extern const mm_exercise mm_ex_sta_plane_body;
+extern const mm_exercise mm_ex_sta_space_body;
+extern const mm_exercise mm_ex_sta_frame;
+extern const mm_exercise mm_ex_sta_truss;
+extern const mm_exercise mm_ex_sta_wedge_incline;
+extern const mm_exercise mm_ex_sta_journal_bearing;
+extern const mm_exercise mm_ex_sta_thrust_bearing;
+extern const mm_exercise mm_ex_sta_rolling_resistance;
+extern const mm_exercise mm_ex_sta_belt_friction;
+extern const mm_exercise mm_ex_sta_centroid;
+extern const mm_exercise mm_ex_sta_beam_diagrams;
+extern const mm_exercise mm_ex_sta_stability;
+extern const mm_exercise mm_ex_sta_virtual_work;
 /* ==== end of 3 ==== */
 
 /* ==== 4 Dynamics ==== */
+extern const mm_exercise mm_ex_dyn_pendulum;
+extern const mm_exercise mm_ex_dyn_double_pendulum;
+extern const mm_exercise mm_ex_dyn_robot_2link;
+extern const mm_exercise mm_ex_dyn_slider_crank;
 /* ==== end of 4 ==== */
 
 /* ==== 5 Vibrations, 5.2-5.9 ==== */
@@ -63,9 +83,29 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 2 ==== */
 
     /* ==== 3 Statics ==== */
+    &mm_ex_sta_moment,
+    &mm_ex_sta_force_system,
+    &mm_ex_sta_particle_cables,
+    &mm_ex_sta_plane_body,
+    &mm_ex_sta_space_body,
+    &mm_ex_sta_frame,
+    &mm_ex_sta_truss,
+    &mm_ex_sta_wedge_incline,
+    &mm_ex_sta_journal_bearing,
+    &mm_ex_sta_thrust_bearing,
+    &mm_ex_sta_rolling_resistance,
+    &mm_ex_sta_belt_friction,
+    &mm_ex_sta_centroid,
+    &mm_ex_sta_beam_diagrams,
+    &mm_ex_sta_stability,
+    &mm_ex_sta_virtual_work,
     /* ==== end of 3 ==== */
 
     /* ==== 4 Dynamics ==== */
+    &mm_ex_dyn_pendulum,
+    &mm_ex_dyn_double_pendulum,
+    &mm_ex_dyn_robot_2link,
+    &mm_ex_dyn_slider_crank,
     /* ==== end of 4 ==== */
 
     /* ==== 5 Vibrations, 5.2-5.9 ==== */

@@ -3,21 +3,23 @@
 
 #include <cJSON.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
 #include "mm_dtoa.h"
+#include "mm_hash.h"
+#include "mm_openapi.h"
 #include "mm_params.h"
 #include "mm_result_impl.h"
 #include "mm_theory.h"
 
 struct mm_api {
-    char *health, *catalog;
-    size_t health_len, catalog_len;
-    char **meta;                 /* one document per registry entry */
-    size_t *meta_len;
+    mm_course *course;           /* owned */
+    mm_doc health, catalog, course_doc, openapi;
+    mm_doc *meta;                /* one document per exercise of the course */
 };
 
 static long long now_us(void)
@@ -458,75 +460,174 @@ static int unknown_param(const mm_exercise *ex, const mm_input *in, mm_error *er
                         ex->id, shown, list);
 }
 
-int mm_api_solve(const mm_exercise *ex, const mm_input *in, int n_in, mm_buf *out)
+/* ---- resolve -> run -> write ------------------------------------------------ */
+
+void mm_solve_init(mm_solve *s, const mm_exercise *ex)
 {
-    mm_result res;
-    mm_value vals[MM_MAX_PARAMS];
+    memset(s, 0, sizeof *s);
+    s->ex = ex;
+    mm_error_clear(&s->err);
+    mm_result_init(&s->res, MM_REQ_MEM_CAP);
+    mm_result_bind(&s->res, ex);
+    mm_buf_init(&s->key, MM_BODY_MAX + MM_QUERY_MAX);
+}
+
+void mm_solve_free(mm_solve *s)
+{
+    if (!s)
+        return;
+    mm_result_release(&s->res);
+    mm_buf_free(&s->key);
+    s->ex = NULL;
+}
+
+/* One value of the canonical text: a byte that could be read as a
+ * separator, or that does not print, is written %XX. */
+static void key_text(mm_buf *b, const char *s)
+{
+    static const char hex[] = "0123456789ABCDEF";
+    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
+        if (*c <= 0x20 || *c >= 0x7f || *c == '%' || *c == '&' || *c == '=' || *c == '+' ||
+            *c == '#' || *c == ';' || *c == ',') {
+            char e[3] = {'%', hex[*c >> 4], hex[*c & 15]};
+            mm_buf_put(b, e, 3);
+        } else {
+            mm_buf_char(b, (char)*c);
+        }
+    }
+}
+
+void mm_api_canonical_value(mm_buf *b, const mm_param *p, const mm_value *v)
+{
+    char num[MM_DTOA_BUFSIZE];
+    switch (p->kind) {
+    case MM_REAL:
+    case MM_INT:
+        mm_buf_put(b, num, (size_t)mm_dtoa(v->x, num));
+        break;
+    case MM_CHOICE:
+    case MM_EXPR:
+        key_text(b, v->text ? v->text : "");
+        break;
+    case MM_VECTOR:
+    case MM_MATRIX:
+        for (int i = 0; i < v->rows; i++) {
+            if (i)
+                mm_buf_char(b, ';');
+            for (int j = 0; j < v->cols; j++) {
+                if (j)
+                    mm_buf_char(b, ',');
+                mm_buf_put(b, num, (size_t)mm_dtoa(v->data[i * v->cols + j], num));
+            }
+        }
+        break;
+    }
+}
+
+int mm_api_resolve(mm_solve *s, const mm_input *in, int n_in)
+{
+    const mm_exercise *ex = s->ex;
     int given[MM_MAX_PARAMS] = {0};
-    mm_error err;
-    int status;
-
-    mm_error_clear(&err);
-    mm_result_init(&res, MM_REQ_MEM_CAP);
-    mm_result_bind(&res, ex);
-    mm_buf_reset(out);
-
     int rc = MM_OK;
+    if (n_in > MM_MAX_PARAMS)
+        rc = mm_error_set(&s->err, MM_EPARAM, "", "%d parameters given; %s has %d", n_in, ex->id,
+                          ex->n_params);
     for (int i = 0; i < n_in && rc == MM_OK; i++) {
         int k = find_param(ex, in[i].name, in[i].name_len);
         if (k < 0)
-            rc = unknown_param(ex, &in[i], &err);
+            rc = unknown_param(ex, &in[i], &s->err);
         else if (given[k]++)
-            rc = mm_error_set(&err, MM_EVALUE, ex->params[k].name, "%s is given twice; give it once",
+            rc = mm_error_set(&s->err, MM_EVALUE, ex->params[k].name, "%s is given twice; give it once",
                               ex->params[k].name);
         else
-            rc = mm_param_parse(&ex->params[k], in[i].text, in[i].text_len, &vals[k], &res, &err);
+            rc = mm_param_parse(&ex->params[k], in[i].text, in[i].text_len, &s->vals[k], &s->res, &s->err);
     }
     for (int k = 0; k < ex->n_params && rc == MM_OK; k++)
         if (!given[k])
-            rc = mm_param_default(&ex->params[k], &vals[k], &res, &err);
-
+            rc = mm_param_default(&ex->params[k], &s->vals[k], &s->res, &s->err);
     if (rc == MM_OK && ex->check)
-        rc = ex->check(vals, &err);
-    long long t0 = now_us();
-    if (rc == MM_OK)
-        rc = ex->solve(vals, &res, &err);
-    long long elapsed = now_us() - t0;
+        rc = ex->check(s->vals, &s->err);
+    if (rc == MM_OK) {
+        mm_buf_reset(&s->key);
+        mm_buf_puts(&s->key, ex->id);
+        for (int k = 0; k < ex->n_params; k++) {
+            mm_buf_char(&s->key, k ? '&' : '?');
+            mm_buf_puts(&s->key, ex->params[k].name);
+            mm_buf_char(&s->key, '=');
+            mm_api_canonical_value(&s->key, &ex->params[k], &s->vals[k]);
+        }
+        if (s->key.failed)
+            rc = mm_error_set(&s->err, MM_ETOOBIG, "", "the parameters are too long");
+    }
+    if (rc != MM_OK && s->err.code == MM_OK)
+        s->err.code = rc;
+    s->rc = rc;
+    s->resolved = rc == MM_OK;
+    return rc;
+}
 
-    int failed = mm_result_status(&res);   /* sticky: a builder failed, whatever solve said */
+int mm_api_run(mm_solve *s)
+{
+    if (!s->resolved)
+        return s->rc ? s->rc : mm_error_set(&s->err, MM_EINTERNAL, "", "run before resolve");
+    long long t0 = now_us();
+    int rc = s->ex->solve(s->vals, &s->res, &s->err);
+    s->elapsed_us = now_us() - t0;
+    int failed = mm_result_status(&s->res);   /* sticky: a builder failed, whatever solve said */
     if (failed == MM_ETOOBIG) {
-        mm_error_set(&err, MM_ETOOBIG, "", "this request needs more than %u MB of memory; "
+        mm_error_set(&s->err, MM_ETOOBIG, "", "this request needs more than %u MB of memory; "
                      "choose smaller sizes", MM_REQ_MEM_CAP >> 20);
         rc = MM_ETOOBIG;
     } else if (failed != MM_OK) {
-        mm_error_set(&err, failed, "", "the answer could not be built (%s)", res.failure);
+        mm_error_set(&s->err, failed, "", "the answer could not be built (%s)", s->res.failure);
         rc = failed;
     }
+    if (rc != MM_OK && s->err.code == MM_OK)
+        s->err.code = rc;
+    s->rc = rc;
+    s->ran = 1;
+    return rc;
+}
+
+int mm_api_write(mm_solve *s, mm_buf *out)
+{
+    mm_buf_reset(out);
+    if (s->rc == MM_OK && !s->ran)
+        mm_api_run(s);
+    int rc = s->rc;
     if (rc == MM_OK) {
-        write_answer(out, ex, vals, &res, elapsed);
+        write_answer(out, s->ex, s->vals, &s->res, s->elapsed_us);
         if (out->nonfinite) {
             char where[sizeof out->where];
             memcpy(where, out->where, sizeof where);
-            mm_error_set(&err, MM_ENONFINITE, "", "the result '%s' is not a finite number "
+            mm_error_set(&s->err, MM_ENONFINITE, "", "the result '%s' is not a finite number "
                          "(an overflow or an unstable step); change the parameters", where);
             rc = MM_ENONFINITE;
         } else if (out->failed) {
-            mm_error_set(&err, MM_ETOOBIG, "", "the answer would be over %u MB; choose smaller sizes",
+            mm_error_set(&s->err, MM_ETOOBIG, "", "the answer would be over %u MB; choose smaller sizes",
                          MM_ANSWER_MAX >> 20);
             rc = MM_ETOOBIG;
         }
+        s->rc = rc;
     }
-    if (rc != MM_OK) {
-        if (err.code == MM_OK)
-            err.code = rc;
-        if (mm_http_status(rc) >= 500)
-            fprintf(stderr, "mechmat: %s: internal error: %s (%s)\n", ex->id, err.msg,
-                    mm_strerror(rc));
-        status = mm_api_error(out, &err);
-    } else {
-        status = 200;
-    }
-    mm_result_release(&res);
+    if (rc == MM_OK)
+        return 200;
+    if (s->err.code == MM_OK)
+        s->err.code = rc;
+    if (mm_http_status(rc) >= 500)
+        fprintf(stderr, "mechmat: %s: internal error: %s (%s)\n", s->ex->id, s->err.msg,
+                mm_strerror(rc));
+    return mm_api_error(out, &s->err);
+}
+
+int mm_api_solve(const mm_exercise *ex, const mm_input *in, int n_in, mm_buf *out)
+{
+    mm_solve s;
+    mm_solve_init(&s, ex);
+    if (mm_api_resolve(&s, in, n_in) == MM_OK)
+        mm_api_run(&s);
+    int status = mm_api_write(&s, out);
+    mm_solve_free(&s);
     return status;
 }
 
@@ -616,76 +717,86 @@ static int json_has_nul(const char *s, size_t n, char *param, size_t size)
     return 0;
 }
 
-int mm_api_solve_json(const mm_exercise *ex, const char *body, size_t len, mm_buf *out)
+int mm_api_resolve_json(mm_solve *s, const char *body, size_t len)
 {
-    mm_error err;
-    mm_error_clear(&err);
-    char nul_param[sizeof err.param];
+    const mm_exercise *ex = s->ex;
+    mm_error *err = &s->err;
+    char nul_param[sizeof err->param];
     if (json_has_nul(body, len, nul_param, sizeof nul_param)) {
         if (nul_param[0])
-            mm_error_set(&err, MM_EVALUE, nul_param, "%s contains a NUL character (\\u0000)", nul_param);
+            mm_error_set(err, MM_EVALUE, nul_param, "%s contains a NUL character (\\u0000)", nul_param);
         else
-            mm_error_set(&err, MM_EVALUE, "", "the body contains a NUL character (\\u0000) in a text");
-        return mm_api_error(out, &err);
+            mm_error_set(err, MM_EVALUE, "", "the body contains a NUL character (\\u0000) in a text");
+        return s->rc = err->code;
     }
     const char *end = NULL;
     cJSON *root = cJSON_ParseWithLengthOpts(body, len, &end, 0);
     if (!root) {
         size_t at = end ? (size_t)(end - body) : 0;
-        mm_error_set(&err, MM_EJSON, "", "the body is not valid JSON (at byte %zu); "
+        mm_error_set(err, MM_EJSON, "", "the body is not valid JSON (at byte %zu); "
                      "send {\"params\":{\"name\":value,...}}", at);
-        return mm_api_error(out, &err);
+        return s->rc = err->code;
     }
-    int status = 0;
     const cJSON *params = NULL;
     size_t tail = end ? (size_t)(end - body) : len;   /* only white space may follow */
     while (tail < len && (body[tail] == ' ' || body[tail] == '\t' || body[tail] == '\n' || body[tail] == '\r'))
         tail++;
     if (tail < len) {
-        mm_error_set(&err, MM_EJSON, "", "the body goes on after its JSON value (at byte %zu); "
+        mm_error_set(err, MM_EJSON, "", "the body goes on after its JSON value (at byte %zu); "
                      "send one object {\"params\":{...}}", tail);
     } else if (!cJSON_IsObject(root)) {
-        mm_error_set(&err, MM_EJSON, "", "the body must be an object {\"params\":{...}}");
+        mm_error_set(err, MM_EJSON, "", "the body must be an object {\"params\":{...}}");
     } else {
-        for (const cJSON *e = root->child; e && !err.code; e = e->next) {
+        for (const cJSON *e = root->child; e && !err->code; e = e->next) {
             if (strcmp(e->string, "params") == 0 && cJSON_IsObject(e) && params)
-                mm_error_set(&err, MM_EJSON, "", "\"params\" is given twice; give it once");
+                mm_error_set(err, MM_EJSON, "", "\"params\" is given twice; give it once");
             else if (strcmp(e->string, "params") == 0 && cJSON_IsObject(e))
                 params = e;
             else
-                mm_error_set(&err, MM_EJSON, "", "the body must be {\"params\":{...}}; "
+                mm_error_set(err, MM_EJSON, "", "the body must be {\"params\":{...}}; "
                              "'%.40s' is not expected there", e->string);
         }
     }
-    if (err.code) {
+    if (err->code) {
         cJSON_Delete(root);
-        return mm_api_error(out, &err);
+        return s->rc = err->code;
     }
 
     int n = cJSON_GetArraySize(params);
     if (n > MM_MAX_PARAMS) {
         cJSON_Delete(root);
-        mm_error_set(&err, MM_EPARAM, "", "%d parameters given; %s has %d", n, ex->id, ex->n_params);
-        return mm_api_error(out, &err);
+        mm_error_set(err, MM_EPARAM, "", "%d parameters given; %s has %d", n, ex->id, ex->n_params);
+        return s->rc = err->code;
     }
     mm_input in[MM_MAX_PARAMS] = {{0}};
     mm_buf text[MM_MAX_PARAMS];
     int k = 0, rc = MM_OK;
     for (const cJSON *e = params ? params->child : NULL; e && rc == MM_OK; e = e->next, k++) {
         mm_buf_init(&text[k], MM_BODY_MAX);
-        rc = json_to_text(e, &text[k], 0, e->string, &err);
+        rc = json_to_text(e, &text[k], 0, e->string, err);
         in[k].name = e->string;
         in[k].name_len = strlen(e->string);
         in[k].text = text[k].p ? text[k].p : "";
         in[k].text_len = text[k].len;
     }
     if (rc == MM_OK)
-        status = mm_api_solve(ex, in, k, out);
+        rc = mm_api_resolve(s, in, k);
     else
-        status = mm_api_error(out, &err);
+        s->rc = rc;
     for (int i = 0; i < k; i++)
         mm_buf_free(&text[i]);
     cJSON_Delete(root);
+    return rc;
+}
+
+int mm_api_solve_json(const mm_exercise *ex, const char *body, size_t len, mm_buf *out)
+{
+    mm_solve s;
+    mm_solve_init(&s, ex);
+    if (mm_api_resolve_json(&s, body, len) == MM_OK)
+        mm_api_run(&s);
+    int status = mm_api_write(&s, out);
+    mm_solve_free(&s);
     return status;
 }
 
@@ -860,29 +971,110 @@ static char *build_meta(const mm_exercise *ex, const char *root, size_t *len)
     return mm_buf_take(&b, len);
 }
 
+/* ---- the build: what an answer's ETag is made from ------------------------------ */
+
+static pthread_once_t build_once = PTHREAD_ONCE_INIT;
+static char build_id[MM_DIGEST_SIZE];
+
+/* The digest of the running binary and MM_VERSION: two instances of the
+ * same build give the same ETags (nginx balancing between them keeps its
+ * validators), a rebuilt exercise never passes for the old one. */
+static void make_build_id(void)
+{
+    mm_hasher h;
+    mm_hash_init(&h);
+    mm_hash_part(&h, MM_VERSION, strlen(MM_VERSION));
+    FILE *f = fopen("/proc/self/exe", "rb");
+    if (f) {
+        char chunk[65536];
+        size_t n;
+        while ((n = fread(chunk, 1, sizeof chunk, f)) > 0)
+            mm_hash_update(&h, chunk, n);
+        fclose(f);
+    }
+    mm_hash_final(&h, build_id);
+}
+
+const char *mm_api_build_id(void)
+{
+    pthread_once(&build_once, make_build_id);
+    return build_id;
+}
+
+void mm_api_answer_etag(const char *key, size_t len, char out[MM_ETAG_SIZE])
+{
+    mm_hasher h;
+    char d[MM_DIGEST_SIZE];
+    const char *b = mm_api_build_id();
+    mm_hash_init(&h);
+    mm_hash_part(&h, b, strlen(b));
+    mm_hash_part(&h, key, len);
+    mm_hash_final(&h, d);
+    snprintf(out, MM_ETAG_SIZE, "\"%s\"", d);
+}
+
+/* ---- the documents of a course ------------------------------------------------------ */
+
+static int set_doc(mm_doc *d, mm_buf *b)
+{
+    if (b->failed || b->nonfinite) {
+        mm_buf_free(b);
+        return MM_ENOMEM;
+    }
+    char *text = mm_buf_take(b, &d->len);
+    if (!text)
+        return MM_ENOMEM;
+    d->text = text;
+    char dg[MM_DIGEST_SIZE];
+    mm_digest(text, d->len, dg);
+    snprintf(d->etag, sizeof d->etag, "\"%s\"", dg);
+    return MM_OK;
+}
+
+static void free_doc(mm_doc *d)
+{
+    free((char *)d->text);
+    d->text = NULL;
+}
+
 mm_api *mm_api_alloc(const char *root, mm_error *err)
 {
-    mm_api *api = calloc(1, sizeof *api);
-    if (!api) {
+    mm_course *c = mm_course_builtin();
+    if (!c) {
         mm_error_set(err, MM_ENOMEM, "", "out of memory");
         return NULL;
     }
-    api->meta = calloc((size_t)mm_exercise_count + 1, sizeof *api->meta);
-    api->meta_len = calloc((size_t)mm_exercise_count + 1, sizeof *api->meta_len);
-    if (!api->meta || !api->meta_len)
-        goto fail;
+    return mm_api_alloc_course(root, c, err);
+}
+
+mm_api *mm_api_alloc_course(const char *root, mm_course *course, mm_error *err)
+{
+    mm_api *api = calloc(1, sizeof *api);
+    if (!api) {
+        mm_course_free(course);
+        mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return NULL;
+    }
+    api->course = course;
+    int n = mm_course_exercise_count(course);
+    api->meta = calloc((size_t)n + 1, sizeof *api->meta);
+    if (!api->meta)
+        goto nomem;
+    mm_api_build_id();
 
     if (mm_registry_check(err) != MM_OK)
         goto fail;
-    for (int i = 0; i < mm_exercise_count; i++) {
-        const mm_exercise *ex = mm_exercises[i];
+    for (int i = 0; i < n; i++) {
+        const mm_exercise *ex = mm_course_exercise(course, i);
         if (ex->n_params > MM_MAX_PARAMS || mm_params_check(ex, err) != MM_OK) {
             if (ex->n_params > MM_MAX_PARAMS)
                 mm_error_set(err, MM_EINTERNAL, "", "%s has over %d parameters", ex->id, MM_MAX_PARAMS);
             goto fail;
         }
-        api->meta[i] = build_meta(ex, root, &api->meta_len[i]);
-        if (!api->meta[i]) {
+        size_t len = 0;
+        char *text = build_meta(ex, root, &len);
+        mm_buf b = {.p = text, .len = len, .cap = len + 1, .max = len + 1};
+        if (!text || set_doc(&api->meta[i], &b) != MM_OK) {
             mm_error_set(err, MM_EINTERNAL, "", "%s: metadata could not be written", ex->id);
             goto fail;
         }
@@ -891,26 +1083,52 @@ mm_api *mm_api_alloc(const char *root, mm_error *err)
     mm_buf b;
     mm_buf_init(&b, 1u << 20);
     mm_buf_puts(&b, "{\"status\":\"ok\",\"version\":\"" MM_VERSION "\",\"exercises\":");
-    mm_buf_int(&b, mm_exercise_count);
+    mm_buf_int(&b, n);
     mm_buf_char(&b, '}');
-    api->health = mm_buf_take(&b, &api->health_len);
+    if (set_doc(&api->health, &b) != MM_OK)
+        goto nomem;
 
     mm_buf_init(&b, 1u << 20);
     mm_buf_char(&b, '[');
-    for (int i = 0; i < mm_exercise_count; i++) {
+    for (int i = 0; i < n; i++) {
         if (i)
             mm_buf_char(&b, ',');
         mm_buf_char(&b, '{');
-        write_catalog_fields(&b, mm_exercises[i]);
+        write_catalog_fields(&b, mm_course_exercise(course, i));
         mm_buf_char(&b, '}');
     }
     mm_buf_char(&b, ']');
-    api->catalog = mm_buf_take(&b, &api->catalog_len);
-    if (!api->health || !api->catalog) {
-        mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    if (set_doc(&api->catalog, &b) != MM_OK)
+        goto nomem;
+
+    mm_buf_init(&b, 1u << 20);
+    mm_buf_puts(&b, "{\"title\":");
+    mm_buf_str(&b, mm_course_title(course));
+    field_str(&b, "language", mm_course_language(course));
+    field_str(&b, "base_path", mm_course_base_path(course));
+    field_str(&b, "digest", mm_course_digest(course));
+    field_str(&b, "build", mm_api_build_id());
+    mm_buf_puts(&b, ",\"exercises\":[");
+    for (int i = 0; i < n; i++) {
+        if (i)
+            mm_buf_char(&b, ',');
+        mm_buf_str(&b, mm_course_exercise(course, i)->id);
+    }
+    mm_buf_puts(&b, "],\"assignments\":");
+    mm_buf_int(&b, mm_course_assignment_count(course));
+    mm_buf_char(&b, '}');
+    if (set_doc(&api->course_doc, &b) != MM_OK)
+        goto nomem;
+
+    mm_buf_init(&b, 64u << 20);
+    mm_openapi_write(&b, course);
+    if (set_doc(&api->openapi, &b) != MM_OK) {
+        mm_error_set(err, MM_EINTERNAL, "", "the OpenAPI document could not be written");
         goto fail;
     }
     return api;
+nomem:
+    mm_error_set(err, MM_ENOMEM, "", "out of memory");
 fail:
     mm_api_free(api);
     return NULL;
@@ -920,33 +1138,56 @@ void mm_api_free(mm_api *api)
 {
     if (!api)
         return;
-    for (int i = 0; api->meta && i < mm_exercise_count; i++)
-        free(api->meta[i]);
+    int n = api->course ? mm_course_exercise_count(api->course) : 0;
+    for (int i = 0; api->meta && i < n; i++)
+        free_doc(&api->meta[i]);
     free(api->meta);
-    free(api->meta_len);
-    free(api->health);
-    free(api->catalog);
+    free_doc(&api->health);
+    free_doc(&api->catalog);
+    free_doc(&api->course_doc);
+    free_doc(&api->openapi);
+    mm_course_free(api->course);
     free(api);
+}
+
+const mm_course *mm_api_course(const mm_api *api) { return api->course; }
+
+const mm_exercise *mm_api_exercise(const mm_api *api, const char *id)
+{
+    return mm_course_find(api->course, id);
+}
+
+const mm_doc *mm_api_doc_health(const mm_api *api) { return &api->health; }
+const mm_doc *mm_api_doc_catalog(const mm_api *api) { return &api->catalog; }
+const mm_doc *mm_api_doc_course(const mm_api *api) { return &api->course_doc; }
+const mm_doc *mm_api_doc_openapi(const mm_api *api) { return &api->openapi; }
+
+const mm_doc *mm_api_doc_meta(const mm_api *api, const char *id)
+{
+    int n = mm_course_exercise_count(api->course);
+    for (int i = 0; i < n; i++)
+        if (strcmp(mm_course_exercise(api->course, i)->id, id) == 0)
+            return &api->meta[i];
+    return NULL;
 }
 
 const char *mm_api_health(const mm_api *api, size_t *len)
 {
-    *len = api->health_len;
-    return api->health;
+    *len = api->health.len;
+    return api->health.text;
 }
 
 const char *mm_api_catalog(const mm_api *api, size_t *len)
 {
-    *len = api->catalog_len;
-    return api->catalog;
+    *len = api->catalog.len;
+    return api->catalog.text;
 }
 
 const char *mm_api_meta(const mm_api *api, const char *id, size_t *len)
 {
-    for (int i = 0; i < mm_exercise_count; i++)
-        if (strcmp(mm_exercises[i]->id, id) == 0) {
-            *len = api->meta_len[i];
-            return api->meta[i];
-        }
-    return NULL;
+    const mm_doc *d = mm_api_doc_meta(api, id);
+    if (!d)
+        return NULL;
+    *len = d->len;
+    return d->text;
 }

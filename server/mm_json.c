@@ -180,6 +180,13 @@ void mm_buf_key(mm_buf *b, const char *key)
     mm_buf_char(b, ':');
 }
 
+void mm_buf_reserve(mm_buf *b, size_t n)
+{
+    if (n > b->max - b->len - 1)
+        n = b->max - b->len - 1;
+    (void)reserve(b, n);
+}
+
 char *mm_buf_take(mm_buf *b, size_t *len)
 {
     if (!b->p && reserve(b, 0))

@@ -38,6 +38,12 @@ void mm_buf_int(mm_buf *b, long long v);
 /* "key": */
 void mm_buf_key(mm_buf *b, const char *key);
 
+/* Make room for n more bytes at once (as one allocation); failed is set
+ * when it cannot be had.  For a writer that knows roughly how much it
+ * will write: a large block is mapped, and its pages cost only once
+ * written. */
+void mm_buf_reserve(mm_buf *b, size_t n);
+
 /* Detach the text (NUL-terminated, malloc'd; caller frees) and its length. */
 char *mm_buf_take(mm_buf *b, size_t *len);
 

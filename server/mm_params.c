@@ -166,6 +166,12 @@ static int parse_array(const mm_param *p, const char *s, size_t n, mm_value *out
         s++, n -= 2;
         trim(&s, &n);
     }
+    if (n == 0 && is_matrix && p->def_text && p->def_text[0] == '\0') {
+        /* a matrix whose default is empty may be empty ("" or "[]"): a list
+         * of loads with nothing in it (API.md's "[empty]") */
+        memset(out, 0, sizeof *out);
+        return MM_OK;
+    }
     if (n == 0)
         return mm_error_set(err, MM_EVALUE, p->name, "%s is empty; give numbers such as %s",
                             p->name, p->def_text ? p->def_text : "1,2,3");

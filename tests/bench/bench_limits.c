@@ -29,21 +29,16 @@
 #include <time.h>
 
 #include "mm_api.h"
+#include "mm_draw.h"
 #include "mm_dtoa.h"
 #include "mm_params.h"
 #include "mm_result_impl.h"
 
 #define TEXT_MAX 8192            /* one value as text: 12x12 matrices and the like */
 
-static unsigned long long rng_state;
+static mm_rng rng;                /* the product's generator (mm_draw.h) */
 
-static double urand(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return (double)((rng_state * 2685821657736338717ULL) >> 11) / 9007199254740992.0;
-}
+static double urand(void) { return mm_rng_uniform(&rng); }
 
 static double now_s(void)
 {
@@ -95,17 +90,7 @@ static int n_choices(const mm_param *p)
 }
 
 /* A number inside p's limits, drawn as test_exercises.c does. */
-static double draw_number(const mm_param *p)
-{
-    double v;
-    if (p->min > 0 && p->max / p->min > 100)
-        v = p->min * pow(p->max / p->min, urand());
-    else
-        v = p->min + (p->max - p->min) * urand();
-    if (p->kind == MM_INT)
-        v = floor(v + 0.5);
-    return fmin(fmax(v, p->min), p->max);
-}
+static double draw_number(const mm_param *p) { return mm_draw_number(p, &rng); }
 
 /* The default of an array parameter as numbers (rows x cols). */
 static int array_default(const mm_param *p, double **data, int *rows, int *cols)
@@ -596,7 +581,7 @@ int main(void)
         const mm_exercise *ex = mm_exercises[i];
         if (only && strcmp(only, ex->id) != 0)
             continue;
-        rng_state = seed ? strtoull(seed, NULL, 10) : 0x9E3779B97F4A7C15ULL ^ (unsigned long long)(i + 1);
+        mm_rng_seed(&rng, seed ? strtoull(seed, NULL, 10) : 0x9E3779B97F4A7C15ULL ^ (unsigned long long)(i + 1));
         flagged += bench_exercise(ex, draws, detail) > 0;
         fflush(stdout);
         n++;

@@ -11,8 +11,28 @@
  *                             first, then again and again for SECONDS while
  *                             the load runs; count answers that differ
  *                             (elapsed_us aside), errors and 5xx.
- * The closing line of verify: "verify: N compared, M differed, E errors". */
+ * The closing line of verify: "verify: N compared, M differed, E errors".
+ *
+ *   loadtool class BASE_URL CLIENTS SPREAD_S EXERCISE
+ *                             a class start: CLIENTS browsers, their starts
+ *                             spread evenly over SPREAD_S seconds, each
+ *                             loading one exercise page as a browser does:
+ *                             the HTML, then (in parallel, up to 6
+ *                             connections) what it links (style sheets,
+ *                             scripts, modules, the icon), KaTeX's module
+ *                             and two of its fonts, the catalog, the
+ *                             exercise's metadata and its default solve;
+ *                             with Accept-Encoding: gzip, each browser its
+ *                             own connections.  EXERCISE "all" gives each
+ *                             browser the next exercise of the catalog.
+ *                             Prints counts and latency percentiles of
+ *                             requests and of whole pages; exit status 1
+ *                             when a request failed or was not a 200. */
+#include <arpa/inet.h>
 #include <curl/curl.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,77 +40,33 @@
 #include <time.h>
 
 #include "mm_api.h"
+#include "mm_draw.h"
 #include "mm_dtoa.h"
 #include "mm_params.h"
 #include "mm_result_impl.h"
 
-static unsigned long long rng = 0x2545F4914F6CDD1DULL;
-
-static double urand(void)
-{
-    rng ^= rng >> 12, rng ^= rng << 25, rng ^= rng >> 27;
-    return (double)((rng * 2685821657736338717ULL) >> 11) / 9007199254740992.0;
-}
+static mm_rng rng = {0x2545F4914F6CDD1DULL};   /* the product's generator (mm_draw.h) */
 
 /* A random value of p as parameter text in buf, and as JSON in json, or
- * NULL to keep the default (expressions keep theirs).  Numbers as in
- * test_exercises.c (log-uniform over wide positive ranges); arrays keep the
- * default's shape, each element scaled by a factor in [0.5, 1.5] (a
- * symmetric matrix stays symmetric), clamped to the limits. */
+ * NULL to keep the default (expressions keep theirs): mm_draw_text, whose
+ * texts are JSON already but for choices (quoted) and arrays ("1,2;3,4"
+ * becomes [[1,2],[3,4]]). */
 static const char *draw(const mm_param *p, char *buf, size_t size, char *json, size_t jsize)
 {
+    if (p->kind == MM_EXPR || mm_draw_text(p, &rng, buf, size) != MM_OK)
+        return NULL;
+    size_t j = 0;
     if (p->kind == MM_CHOICE) {
-        int n = 0;
-        while (p->choices[n])
-            n++;
-        snprintf(buf, size, "%s", p->choices[(int)(urand() * n) % n]);
-        snprintf(json, jsize, "\"%s\"", buf);
-        return buf;
+        j = (size_t)snprintf(json, jsize, "\"%s\"", buf);
+    } else if (p->kind == MM_VECTOR || p->kind == MM_MATRIX) {
+        j += (size_t)snprintf(json + j, jsize - j, p->kind == MM_MATRIX ? "[[" : "[");
+        for (const char *c = buf; *c && j + 4 < jsize; c++)
+            j += (size_t)snprintf(json + j, jsize - j, "%s", *c == ';' ? "],[" : (char[2]){*c, 0});
+        j += (size_t)snprintf(json + j, jsize - j, p->kind == MM_MATRIX ? "]]" : "]");
+    } else {
+        j = (size_t)snprintf(json, jsize, "%s", buf);
     }
-    if (p->kind == MM_REAL || p->kind == MM_INT) {
-        double v = p->min > 0 && p->max / p->min > 100 ? p->min * pow(p->max / p->min, urand())
-                                                        : p->min + (p->max - p->min) * urand();
-        if (p->kind == MM_INT)
-            v = floor(v + 0.5);
-        mm_dtoa(fmin(fmax(v, p->min), p->max), buf);
-        snprintf(json, jsize, "%s", buf);
-        return buf;
-    }
-    if (p->kind != MM_VECTOR && p->kind != MM_MATRIX)
-        return NULL;
-    mm_result arena;
-    mm_value v;
-    mm_error err;
-    mm_result_init(&arena, 1 << 22);
-    if (mm_param_default(p, &v, &arena, &err) != MM_OK || v.rows * v.cols > 1024) {
-        mm_result_release(&arena);
-        return NULL;
-    }
-    int sym = p->kind == MM_MATRIX && v.rows == v.cols;
-    for (int i = 0; sym && i < v.rows; i++)
-        for (int j = 0; j < i; j++)
-            sym &= v.data[i * v.cols + j] == v.data[j * v.cols + i];
-    double f[1024];
-    for (int k = 0; k < v.rows * v.cols; k++)
-        f[k] = 0.5 + urand();
-    size_t len = 0, jlen = 0;
-    char num[MM_DTOA_BUFSIZE];
-    if (p->kind == MM_MATRIX)
-        jlen += (size_t)snprintf(json + jlen, jsize - jlen, "[");
-    for (int i = 0; i < v.rows; i++) {
-        jlen += (size_t)snprintf(json + jlen, jsize - jlen, "%s[", i ? "," : "");
-        for (int j = 0; j < v.cols; j++) {
-            int kf = sym && j < i ? j * v.cols + i : i * v.cols + j;
-            mm_dtoa(fmin(fmax(v.data[i * v.cols + j] * f[kf], p->min), p->max), num);
-            len += (size_t)snprintf(buf + len, size - len, "%s%s", j ? "," : i ? ";" : "", num);
-            jlen += (size_t)snprintf(json + jlen, jsize - jlen, "%s%s", j ? "," : "", num);
-        }
-        jlen += (size_t)snprintf(json + jlen, jsize - jlen, "]");
-    }
-    if (p->kind == MM_MATRIX)
-        snprintf(json + jlen, jsize - jlen, "]");
-    mm_result_release(&arena);
-    return len < size - 1 && jlen < jsize - 2 ? buf : NULL;
+    return j < jsize - 2 ? buf : NULL;
 }
 
 /* Append text to a query, '+' written %2B (a '+' in a query is a space). */
@@ -258,6 +234,203 @@ static int verify(int port, const char *file, double seconds)
     return differed || errors;
 }
 
+/* ---- a class start ------------------------------------------------------------- */
+
+typedef struct client {
+    CURLSH *share;             /* its own connections */
+    double start, end;         /* of its page: first request sent, last answered */
+    int pending;
+    char exercise[80];
+} client;
+
+typedef struct hctx {          /* a request in flight: whose, and its body */
+    int client, phase;
+    body b;
+} hctx;
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double pct(const double *v, int n, double p)
+{
+    if (n == 0)
+        return 0;
+    int k = (int)(p / 100.0 * (n - 1) + 0.5);
+    return v[k < n ? k : n - 1];
+}
+
+/* What a page links: href="/x.y" and src="/x.y" (files, not pages). */
+static int page_links(const char *html, char links[][200], int max)
+{
+    int n = 0;
+    for (const char *p = html; (p = strstr(p, "=\"/")) && n < max; p += 3) {
+        int attr = (p >= html + 4 && strncmp(p - 4, "href", 4) == 0) || (p >= html + 3 && strncmp(p - 3, "src", 3) == 0);
+        const char *e = strchr(p + 2, '"');
+        size_t len = e ? (size_t)(e - (p + 2)) : 0;
+        if (!attr || len <= 1 || len >= 200 || !memchr(p + 2, '.', len))
+            continue;
+        memcpy(links[n], p + 2, len);
+        links[n][len] = '\0';
+        n++;
+    }
+    return n;
+}
+
+/* a body counted, not kept: the client must cost less than the server */
+static size_t discard(char *p, size_t size, size_t n, void *ud)
+{
+    (void)p;
+    ((body *)ud)->n += size * n;
+    return size * n;
+}
+
+static struct curl_slist *gzip_header;
+
+static void add_get(CURLM *m, client *cl, int ci, int phase, const char *base, const char *path)
+{
+    CURL *c = curl_easy_init();
+    char url[600];
+    snprintf(url, sizeof url, "%s%s", base, path);
+    hctx *h = malloc(sizeof *h);
+    *h = (hctx){ci, phase, {calloc(1, 1), 0}};
+    curl_easy_setopt(c, CURLOPT_URL, url);
+    curl_easy_setopt(c, CURLOPT_SHARE, cl[ci].share);
+    curl_easy_setopt(c, CURLOPT_HTTPHEADER, gzip_header);   /* asked for, received as is */
+    curl_easy_setopt(c, CURLOPT_WRITEFUNCTION, discard);
+    curl_easy_setopt(c, CURLOPT_WRITEDATA, &h->b);
+    curl_easy_setopt(c, CURLOPT_PRIVATE, h);
+    curl_easy_setopt(c, CURLOPT_TIMEOUT, 30L);
+    curl_multi_add_handle(m, c);
+    cl[ci].pending++;
+}
+
+static int class_start(const char *base, int n_clients, double spread, const char *exercise)
+{
+    CURL *c = curl_easy_init();                  /* the page once, for what it links */
+    char url[600];
+    body html = {calloc(1, 1), 0};
+    snprintf(url, sizeof url, "%s/exercise.html", base);
+    curl_easy_setopt(c, CURLOPT_URL, url);
+    curl_easy_setopt(c, CURLOPT_WRITEFUNCTION, collect);
+    curl_easy_setopt(c, CURLOPT_WRITEDATA, &html);
+    if (curl_easy_perform(c) != CURLE_OK) {
+        fprintf(stderr, "class: %s does not answer\n", url);
+        return 1;
+    }
+    curl_easy_cleanup(c);
+    static char links[64][200];
+    int n_links = page_links(html.p, links, 56);
+    free(html.p);
+    const char *extra[] = {"/vendor/katex/dist/katex.mjs", "/vendor/katex/dist/fonts/KaTeX_Main-Regular.woff2",
+                           "/vendor/katex/dist/fonts/KaTeX_Math-Italic.woff2", "/api/exercises"};
+    for (size_t i = 0; i < sizeof extra / sizeof extra[0]; i++)
+        snprintf(links[n_links++], sizeof links[0], "%s", extra[i]);
+
+    gzip_header = curl_slist_append(NULL, "Accept-Encoding: gzip");
+    client *cl = calloc((size_t)n_clients, sizeof *cl);
+    for (int i = 0; i < n_clients; i++) {
+        cl[i].share = curl_share_init();
+        curl_share_setopt(cl[i].share, CURLSHOPT_SHARE, CURL_LOCK_DATA_CONNECT);
+        cl[i].start = spread * i / n_clients;
+        const mm_exercise *ex = strcmp(exercise, "all") == 0 ? mm_exercises[i % mm_exercise_count] : NULL;
+        snprintf(cl[i].exercise, sizeof cl[i].exercise, "%s", ex ? ex->id : exercise);
+    }
+    CURLM *m = curl_multi_init();
+    curl_multi_setopt(m, CURLMOPT_MAX_HOST_CONNECTIONS, 6L * n_clients);
+    int per_page = n_links + 3;
+    double *lat = malloc(sizeof(double) * (size_t)n_clients * (size_t)(per_page + 1));
+    double *pages = malloc(sizeof(double) * (size_t)n_clients);
+    int n_lat = 0, n_pages = 0, started = 0, failed = 0, running = 0;
+    double bytes = 0;
+    double t0 = now_s(), slowest = 0;
+    char slowest_url[300] = "";
+    while (started < n_clients || running) {
+        double t = now_s() - t0;
+        while (started < n_clients && cl[started].start <= t) {     /* a browser opens the page */
+            char path[300];
+            snprintf(path, sizeof path, "/exercise.html?id=%s", cl[started].exercise);
+            cl[started].start = now_s();
+            add_get(m, cl, started, 0, base, path);
+            started++;
+        }
+        curl_multi_perform(m, &running);
+        CURLMsg *msg;
+        int left;
+        while ((msg = curl_multi_info_read(m, &left))) {
+            if (msg->msg != CURLMSG_DONE)
+                continue;
+            CURL *e = msg->easy_handle;
+            hctx *h;
+            long status = 0;
+            double total = 0;
+            char *eff = NULL;
+            curl_easy_getinfo(e, CURLINFO_PRIVATE, (char **)&h);
+            curl_easy_getinfo(e, CURLINFO_RESPONSE_CODE, &status);
+            curl_easy_getinfo(e, CURLINFO_TOTAL_TIME, &total);
+            curl_easy_getinfo(e, CURLINFO_EFFECTIVE_URL, &eff);
+            if (msg->data.result != CURLE_OK || status != 200) {
+                failed++;
+                fprintf(stderr, "class: %s: %s, status %ld\n", eff ? eff : "?",
+                        curl_easy_strerror(msg->data.result), status);
+            }
+            lat[n_lat++] = total * 1e3;
+            if (total * 1e3 > slowest) {
+                slowest = total * 1e3;
+                snprintf(slowest_url, sizeof slowest_url, "%s", eff ? eff : "?");
+            }
+            client *k = &cl[h->client];
+            k->pending--;
+            bytes += (double)h->b.n;
+            if (h->phase == 0) {                 /* the HTML came: what it needs, in parallel */
+                for (int i = 0; i < n_links; i++)
+                    add_get(m, cl, h->client, 1, base, links[i]);
+                char path[300];
+                snprintf(path, sizeof path, "/api/exercises/%s", k->exercise);
+                add_get(m, cl, h->client, 1, base, path);
+                snprintf(path, sizeof path, "/api/exercises/%s/solve", k->exercise);
+                add_get(m, cl, h->client, 1, base, path);
+            } else if (k->pending == 0) {
+                k->end = now_s();
+                pages[n_pages++] = (k->end - k->start) * 1e3;
+            }
+            free(h->b.p);
+            free(h);
+            curl_multi_remove_handle(m, e);
+            curl_easy_cleanup(e);
+        }
+        curl_multi_poll(m, NULL, 0, 1, NULL);
+    }
+    double wall = now_s() - t0;
+    qsort(lat, (size_t)n_lat, sizeof *lat, cmp_double);
+    qsort(pages, (size_t)n_pages, sizeof *pages, cmp_double);
+    printf("class: %d browsers over %.1f s (%s), %d requests each, %d requests in %.2f s: %d failed; "
+           "%.0f kB a page as sent (gzip)\n", n_clients, spread, exercise, per_page, n_lat, wall, failed,
+           bytes / n_clients / 1e3);
+    printf("class: request latency ms: p50 %.1f  p90 %.1f  p99 %.1f  max %.1f (%s)\n", pct(lat, n_lat, 50),
+           pct(lat, n_lat, 90), pct(lat, n_lat, 99), lat[n_lat - 1], slowest_url);
+    printf("class: whole page ms:      p50 %.1f  p90 %.1f  p99 %.1f  max %.1f\n", pct(pages, n_pages, 50),
+           pct(pages, n_pages, 90), pct(pages, n_pages, 99), n_pages ? pages[n_pages - 1] : 0);
+    printf("class-figures: answered=%d failed=%d p99_ms=%.1f page_p99_ms=%.1f\n", n_lat - failed, failed,
+           pct(lat, n_lat, 99), pct(pages, n_pages, 99));
+    for (int i = 0; i < n_clients; i++)
+        curl_share_cleanup(cl[i].share);
+    curl_multi_cleanup(m);
+    free(cl);
+    free(lat);
+    free(pages);
+    return failed || n_pages != n_clients ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 4 && strcmp(argv[1], "gen") == 0)
@@ -268,6 +441,25 @@ int main(int argc, char **argv)
         curl_global_cleanup();
         return rc;
     }
-    fprintf(stderr, "usage: loadtool gen N FILE | loadtool verify PORT FILE SECONDS\n");
+    if (argc == 2 && strcmp(argv[1], "freeport") == 0) {    /* a port the OS says is free */
+        int fd = socket(AF_INET, SOCK_STREAM, 0);
+        struct sockaddr_in a = {.sin_family = AF_INET};
+        a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t len = sizeof a;
+        if (fd < 0 || bind(fd, (struct sockaddr *)&a, sizeof a) != 0 ||
+            getsockname(fd, (struct sockaddr *)&a, &len) != 0)
+            return 1;
+        printf("%d\n", ntohs(a.sin_port));
+        close(fd);
+        return 0;
+    }
+    if (argc == 6 && strcmp(argv[1], "class") == 0) {
+        curl_global_init(CURL_GLOBAL_DEFAULT);
+        int rc = class_start(argv[2], atoi(argv[3]), atof(argv[4]), argv[5]);
+        curl_global_cleanup();
+        return rc;
+    }
+    fprintf(stderr, "usage: loadtool gen N FILE | loadtool verify PORT FILE SECONDS\n"
+                    "       loadtool class BASE_URL CLIENTS SPREAD_S EXERCISE|all\n");
     return 2;
 }

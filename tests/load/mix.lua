@@ -1,14 +1,17 @@
 -- wrk script for `make loadtest`: cycle through the requests in the file
 -- named by MM_PATHS (a path to GET, or "POST path json" a line), each
 -- thread from its own offset; count statuses; print the percentiles.
+-- The requests are made here, before wrk has set its Host header: each gets
+-- its own (nginx in front refuses a request without one).
 local reqs = {}
-local json = { ["Content-Type"] = "application/json" }
+local json = { ["Content-Type"] = "application/json", ["Host"] = "127.0.0.1" }
+local plain = { ["Host"] = "127.0.0.1" }
 for line in io.lines(os.getenv("MM_PATHS")) do
   local path, body = line:match("^POST (%S+) (.*)$")
   if path then
     reqs[#reqs + 1] = wrk.format("POST", path, json, body)
   else
-    reqs[#reqs + 1] = wrk.format("GET", line)
+    reqs[#reqs + 1] = wrk.format("GET", line, plain)
   end
 end
 

@@ -40,10 +40,19 @@ trap stop EXIT
 rps() { echo "$1" | awk '/Requests\/sec/ {print $2}'; }
 pct() { echo "$1" | awk -v p="p$2:" '$1 == "latency" && $2 == p {print $3; exit}'; }
 
-echo "== ceiling: /api/health, 10 s"
+echo "== ceiling: /api/health, 10 s, against a bare libmicrohttpd endpoint in the same run"
+"$BUILD/bench/bare_mhd" pool > "$work/bare" 2>&1 &
+bpid=$!
+for _ in $(seq 100); do grep -q listening "$work/bare" && break; sleep 0.1; done
+bport=$(sed -n 's/.*127\.0\.0\.1:\([0-9]*\).*/\1/p' "$work/bare" | head -1)
+bare=$(MM_PATHS="$work/health" wrk -t2 -c"$CONNS" -d10s --timeout 10s -s tests/load/mix.lua \
+       "http://127.0.0.1:$bport" 2>&1)
+kill "$bpid"; wait "$bpid" 2>/dev/null
 health=$(MM_PATHS="$work/health" wrk -t2 -c"$CONNS" -d10s --timeout 10s -s tests/load/mix.lua \
          "http://127.0.0.1:$port" 2>&1)
 echo "$health" | grep -E "Requests/sec|requests in|statuses|socket errors|latency p"
+awk -v h="$(echo "$health" | awk '/Requests\/sec/ {print $2}')" -v b="$(echo "$bare" | awk '/Requests\/sec/ {print $2}')" \
+  'BEGIN{printf "/api/health %.0f req/s, bare libmicrohttpd endpoint %.0f req/s: ratio %.2f (goal >= 0.8)\n", h, b, h / b}'
 
 echo "== warm-up: the mix, 10 s"
 MM_PATHS="$paths" wrk -t2 -c"$CONNS" -d10s --timeout 10s -s tests/load/mix.lua "http://127.0.0.1:$port" \

@@ -14,6 +14,7 @@ import {
   axeSerious, layoutProblems, nextRender, openExercise, openTypeset, settledFigures,
   startBrowser, startServer, stopBrowser, stopServer,
 } from './common.mjs';
+import { staTrussTests } from './sta-truss.mjs';
 
 const shots = 'test-output/screenshots';
 mkdirSync(shots, { recursive: true });
@@ -684,6 +685,8 @@ try {
     assert.deepEqual(await page.evaluate(() => window.zz.answers), [10, 20], 'called now and after every answer');
     assert.match(page.url(), /k=400/, 'as if typed');
   });
+
+  await staTrussTests(test, server.origin);
 
   // ---- every page, at desktop and phone widths -------------------------------------------------
 

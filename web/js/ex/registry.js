@@ -13,5 +13,5 @@
 //   mount may return a function that undoes it (called on page teardown).
 // Extensions talk to the server only through the public API, like the page.
 export const extensions = {
-  // 'sta-truss': () => import('./sta-truss.js'),
+  'sta-truss': () => import('./sta-truss.js'),
 };

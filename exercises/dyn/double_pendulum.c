@@ -1,0 +1,472 @@
+/* double_pendulum.c — dyn-double-pendulum: Lagrange's equations of two
+ * pendulums hung one from the other, how well integrators keep their
+ * energy, and how fast two nearly equal starts part (chaos).
+ *
+ * Goal: derive equations of motion by Lagrange's method (eqs. 1-3), see
+ * that an accurate but non-symplectic integrator (adaptive Dormand–Prince,
+ * "ode45") lets the energy drift while a symplectic one (Gauss–Legendre
+ * collocation on Hamilton's equations) keeps its error bounded, and watch
+ * two trajectories started 1e-9 apart separate exponentially: the slope of
+ * their log distance estimates the largest Lyapunov exponent.
+ * Reference: H. Goldstein, Classical Mechanics, ch. 1-2 and 8; E. Hairer,
+ * C. Lubich, G. Wanner, Geometric Numerical Integration, Springer 2006;
+ * T. Stachowiak, T. Okada, Chaos Solitons Fractals 29 (2006) 417-422.
+ */
+#include <float.h>
+#include <math.h>
+
+#include "mm_dyn.h"
+#include "mm_exhelp.h"
+#include "mm_multibody.h"
+#include "mm_scene.h"
+#include "mm_symplectic.h"
+
+enum {
+    P_M1, P_M2, P_L1, P_L2, P_G, P_TH1, P_TH2, P_W1, P_W2, P_TEND, P_RTOL, P_SYMP, P_H, P_SEP, P_POINTS
+};
+
+static const char *const symp_methods[] = {"gauss4", "midpoint", NULL};
+
+static const mm_param params[] = {
+    [P_M1] = {"m1", "upper bob mass", "kg", MM_REAL, 1, 0.01, 100, .help = "a point mass at the end of rod 1"},
+    [P_M2] = {"m2", "lower bob mass", "kg", MM_REAL, 1, 0.01, 100, .help = "a point mass at the end of rod 2"},
+    [P_L1] = {"l1", "upper rod length", "m", MM_REAL, 1, 0.05, 10, .help = "massless rod from the pivot"},
+    [P_L2] = {"l2", "lower rod length", "m", MM_REAL, 1, 0.05, 10, .help = "massless rod from the upper bob"},
+    [P_G] = {"g", "gravity", "m/s^2", MM_REAL, 9.81, 0.1, 100, .help = "acceleration of gravity"},
+    [P_TH1] = {"theta1_0", "start angle of rod 1", "rad", MM_REAL, M_PI / 2, -M_PI, M_PI,
+               .help = "from the downward vertical, counter-clockwise"},
+    [P_TH2] = {"theta2_0", "start angle of rod 2", "rad", MM_REAL, M_PI / 2, -M_PI, M_PI,
+               .help = "from the downward vertical (not relative to rod 1)"},
+    [P_W1] = {"omega1_0", "start angular velocity of rod 1", "rad/s", MM_REAL, 0, -30, 30, .help = "theta1' at t = 0"},
+    [P_W2] = {"omega2_0", "start angular velocity of rod 2", "rad/s", MM_REAL, 0, -30, 30, .help = "theta2' at t = 0"},
+    [P_TEND] = {"t_end", "duration", "s", MM_REAL, 30, 0.1, 5000,
+                .help = "simulated time; at most 1.6e4 radians of the fastest motion"},
+    [P_RTOL] = {"rtol", "Dormand-Prince tolerance", "", MM_REAL, 1e-6, 1e-9, 1e-3,
+                .help = "relative tolerance of the adaptive Dormand-Prince 5(4) run whose energy is plotted"},
+    [P_SYMP] = {"symplectic", "symplectic method", "", MM_CHOICE, 0, 0, 0, .choices = symp_methods,
+                .help = "gauss4: 2-stage Gauss-Legendre, order 4; midpoint: the implicit midpoint rule, order 2"},
+    [P_H] = {"h", "symplectic step", "s", MM_REAL, 0.01, 1e-4, 0.5,
+             .help = "fixed step of the symplectic method; at most 65536 steps over t_end"},
+    [P_SEP] = {"separation", "initial separation of the twin", "rad", MM_REAL, 1e-9, 1e-13, 1e-3,
+               .help = "the second trajectory starts with theta2 larger by this much"},
+    [P_POINTS] = {"points", "plot points", "", MM_INT, 201, 11, 2001, .help = "samples returned for the plots"},
+};
+
+enum {
+    O_WSLOW, O_WFAST, O_E0, O_LYAP, O_THORIZON,
+    O_TH1, O_TH2, O_DE_DP, O_DE_SY, O_SEP, O_SEP_FIT, O_ANIM
+};
+
+static const mm_output outputs[] = {
+    [O_WSLOW] = MM_SCALAR("omega_slow", "slow small-oscillation frequency", "rad/s", .flags = MM_EXACT),
+    [O_WFAST] = MM_SCALAR("omega_fast", "fast small-oscillation frequency", "rad/s", .flags = MM_EXACT),
+    [O_E0] = MM_SCALAR("E0", "energy (zero with both bobs hanging still)", "J", .flags = MM_ANSWER | MM_EXACT),
+    [O_LYAP] = MM_SCALAR("lyapunov", "growth rate of the separation (largest Lyapunov exponent, estimated)",
+                         "1/s", .flags = MM_ANSWER),
+    [O_THORIZON] = MM_SCALAR("t_horizon", "time the twins are 0.001 apart (the prediction horizon)", "s"),
+    [O_TH1] = MM_SERIES("theta1", "angle of rod 1", "rad", "t", "s", .figure = "angles"),
+    [O_TH2] = MM_SERIES("theta2", "angle of rod 2", "rad", "t", "s", .figure = "angles"),
+    [O_DE_DP] = MM_SERIES("energy_error_dopri", "|E - E0| / E_scale, Dormand-Prince 5(4)", "", "t", "s",
+                          .figure = "energy", .y_scale = "log"),
+    [O_DE_SY] = MM_SERIES("energy_error_symplectic", "|E - E0| / E_scale, symplectic", "", "t", "s",
+                          .figure = "energy", .y_scale = "log"),
+    [O_SEP] = MM_SERIES("separation", "distance between the twins in the state space", "", "t", "s",
+                        .figure = "chaos", .y_scale = "log"),
+    [O_SEP_FIT] = MM_SERIES("separation_fit", "exponential fit d0 e^(lambda t)", "", "t", "s", .figure = "chaos",
+                            .y_scale = "log", .role = "reference"),
+    [O_ANIM] = MM_ANIMATION("the double pendulum and its twin started 1e-9 rad apart, with the lower bob's path"),
+};
+
+#define RTOL_REF 1e-10          /* the reference run (DOP853) */
+#define RTOL_TWIN 1e-12         /* the twins (DOP853): far below their separation */
+#define MAX_RADIANS 1.6e4
+#define MAX_SYMP_STEPS 65536
+
+static mm_dpend model_of(const mm_value *in)
+{
+    return (mm_dpend){.m1 = in[P_M1].x, .m2 = in[P_M2].x, .l1 = in[P_L1].x, .l2 = in[P_L2].x, .g = in[P_G].x};
+}
+
+/* The fastest rate of the motion [1/s]: the fast small-oscillation
+ * frequency, or the largest angular speed the energy allows:
+ * w^T M w <= 2 (E - V_min) with the smallest eigenvalue of M at least
+ * det M / trace M = m1 m2 l1^2 l2^2 / ((m1+m2) l1^2 + m2 l2^2). */
+static double rate(const mm_dpend *s, const double *y0)
+{
+    double ws, wf, E = mm_dpend_energy(s, y0, NULL);
+    mm_dpend_linear(s, &ws, &wf);
+    double Vmin = -(s->m1 + s->m2) * s->g * s->l1 - s->m2 * s->g * s->l2;
+    double lmin = s->m1 * s->m2 * s->l1 * s->l1 * s->l2 * s->l2 /
+                  ((s->m1 + s->m2) * s->l1 * s->l1 + s->m2 * s->l2 * s->l2);
+    return fmax(wf, sqrt(2 * fmax(E - Vmin, 0) / lmin));
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    mm_dpend s = model_of(in);
+    double y0[4] = {in[P_TH1].x, in[P_TH2].x, in[P_W1].x, in[P_W2].x}, t_end = in[P_TEND].x;
+    double r = rate(&s, y0);
+    if (t_end * r > MAX_RADIANS)
+        return mm_error_set(err, MM_ERANGE, "t_end",
+                            "t_end = %g s spans %.3g radians of the fastest motion (rate %.4g 1/s); at most %g "
+                            "fit one request: make t_end at most %.4g s", t_end, t_end * r, r, MAX_RADIANS,
+                            MAX_RADIANS / r);
+    double steps = ceil(t_end / in[P_H].x);
+    if (steps > MAX_SYMP_STEPS)
+        return mm_error_set(err, MM_ERANGE, "h",
+                            "h = %g s needs %.0f steps over t_end; at most %d fit one request: make h at least "
+                            "%.4g s", in[P_H].x, steps, MAX_SYMP_STEPS, t_end / MAX_SYMP_STEPS);
+    /* the stage equations stiffen where the rods line up, the more so the
+     * lighter the upper bob: the Jacobian of Hamilton's equations grows like
+     * the speed times (m1 + m2)/m1 */
+    double rj = r * (s.m1 + s.m2) / s.m1;
+    if (in[P_H].x * rj > 0.5)
+        return mm_error_set(err, MM_ERANGE, "h",
+                            "h = %g s is too long for the fastest motion (rate %.4g 1/s, times (m1+m2)/m1 where "
+                            "the rods line up): the implicit stage equations would not converge; make h at most "
+                            "%.4g s", in[P_H].x, r, 0.5 / rj);
+    return MM_OK;
+}
+
+/* ---- runs ---------------------------------------------------------------------- */
+
+/* DOP853 or DOPRI5 of Lagrange's equations (eq. 3) on the grid t[0..n-1];
+ * y receives n x 4 values. */
+static int run_lagrange(const mm_dpend *s, const double *y0, double t_end, int n, const double *t,
+                        mm_ode_method m, double rtol, double *y, mm_ode_result *r, mm_error *err)
+{
+    mm_ode_problem prob = {.n = 4, .f = mm_dpend_rhs_lagrange, .params = (void *)s, .t0 = 0, .t_end = t_end,
+                           .y0 = y0};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = m;
+    opt.rtol = rtol;
+    opt.atol = rtol;
+    opt.max_steps = 2000000;
+    *r = (mm_ode_result){.t_out = t, .nout = (size_t)n, .y_out = y};
+    int rc = mm_ode_check(&prob, &opt, r, err);
+    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(4) : NULL;
+    if (rc == MM_OK)
+        rc = mm_ode_solve(&prob, &opt, w, r, err);
+    mm_ode_work_free(w);
+    return rc;
+}
+
+/* The symplectic run's observer: the energy error at every step, its
+ * maximum over each half of the run, and the plotted samples. */
+typedef struct symp_obs {
+    const mm_dpend *s;
+    double E0, scale;
+    long N, stride;
+    double max_first, max_second;
+    mm_series *out;
+    int k;
+} symp_obs;
+
+static int observe(long step, double t, const double *y, void *ctx)
+{
+    symp_obs *o = ctx;
+    double yw[4];
+    mm_dpend_to_velocities(o->s, y, yw);
+    double e = fabs(mm_dpend_energy(o->s, yw, NULL) - o->E0) / o->scale;
+    if (2 * step <= o->N)
+        o->max_first = fmax(o->max_first, e);
+    else
+        o->max_second = fmax(o->max_second, e);
+    if (step % o->stride == 0 && o->k < o->out->n) {
+        o->out->x[o->k] = t;
+        o->out->y[o->k] = fmax(e, DBL_EPSILON);            /* a log axis needs a floor */
+        o->k++;
+    }
+    return 0;
+}
+
+/* The distance of two states in the state space, angles in radians and
+ * angular velocities in units of the fast frequency. */
+static double distance(const double *a, const double *b, double wf)
+{
+    double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = (a[2] - b[2]) / wf, d3 = (a[3] - b[3]) / wf;
+    return sqrt(d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3);
+}
+
+/* ---- the animation ------------------------------------------------------------- */
+
+static int animate(const mm_dpend *s, double t_end, const double *y0, const double *y0b, mm_result *res,
+                   mm_error *err)
+{
+    double ws, wf, t_show;
+    mm_dpend_linear(s, &ws, &wf);
+    int nf = mm_scene_frames(t_end, 2 * M_PI / rate(s, y0), &t_show);
+    if (nf > 120) {                            /* 5 s of play at 24 frames a second is enough to see */
+        t_show *= 119.0 / (nf - 1);            /* the twins part; the answer stays small */
+        nf = 120;
+    }
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    double *ya = mm_res_alloc(res, (size_t)nf * 4 * sizeof *ya), *yb = mm_res_alloc(res, (size_t)nf * 4 * sizeof *yb);
+    if (!a || !ya || !yb)
+        return MM_ENOMEM;
+    mm_dyn_frame_times(a, t_show);
+    mm_ode_result r;
+    double te = a->t[nf - 1] > 0 ? a->t[nf - 1] : t_end;
+    int rc = run_lagrange(s, y0, te, nf, a->t, MM_ODE_DOP853, RTOL_TWIN, ya, &r, err);
+    if (rc == MM_OK)
+        rc = run_lagrange(s, y0b, te, nf, a->t, MM_ODE_DOP853, RTOL_TWIN, yb, &r, err);
+    if (rc != MM_OK)
+        return rc;
+    enum { NPATH = 400 };
+    int np = nf < NPATH ? nf : NPATH;
+    double L = s->l1 + s->l2, q = mm_dyn_quantum(2 * L);
+    mm_shape *pivot = mm_anim_shape(res, "pivot", MM_SHAPE_POLYGON, 1, 3);
+    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, np);
+    mm_shape *twin = mm_anim_shape(res, "twin", MM_SHAPE_LINE, nf, 3);
+    mm_shape *rods = mm_anim_shape(res, "rods", MM_SHAPE_LINE, nf, 3);
+    mm_shape *bob1 = mm_anim_shape(res, "bob1", MM_SHAPE_CIRCLE, nf, 1);
+    mm_shape *bob2 = mm_anim_shape(res, "bob2", MM_SHAPE_CIRCLE, nf, 1);
+    if (!pivot || !path || !twin || !rods || !bob1 || !bob2)
+        return MM_ENOMEM;
+    pivot->style = "ground";
+    const double tri[3][2] = {{0, 0}, {-0.04, 0.05}, {0.04, 0.05}};
+    for (int k = 0; k < 3; k++)
+        pivot->x[k] = tri[k][0] * L, pivot->y[k] = tri[k][1] * L;
+    twin->style = "highlight";
+    bob1->radius = 0.04 * L * cbrt(s->m1 / fmax(s->m1, s->m2));
+    bob2->radius = 0.04 * L * cbrt(s->m2 / fmax(s->m1, s->m2));
+    for (int f = 0; f < nf; f++) {
+        double x1, y1, x2, y2;
+        mm_dpend_points(s, ya[4 * f], ya[4 * f + 1], &x1, &y1, &x2, &y2);
+        rods->x[3 * f] = 0, rods->y[3 * f] = 0, rods->x[3 * f + 1] = x1, rods->y[3 * f + 1] = y1;
+        rods->x[3 * f + 2] = x2, rods->y[3 * f + 2] = y2;
+        bob1->x[f] = x1, bob1->y[f] = y1, bob2->x[f] = x2, bob2->y[f] = y2;
+        if (f < np)
+            path->x[f] = x2, path->y[f] = y2;
+        mm_dpend_points(s, yb[4 * f], yb[4 * f + 1], &x1, &y1, &x2, &y2);
+        twin->x[3 * f] = 0, twin->y[3 * f] = 0, twin->x[3 * f + 1] = x1, twin->y[3 * f + 1] = y1;
+        twin->x[3 * f + 2] = x2, twin->y[3 * f + 2] = y2;
+    }
+    mm_dyn_round_shape(path, q);
+    mm_dyn_round_shape(twin, q);
+    mm_dyn_round_shape(rods, q);
+    mm_dyn_round_shape(bob1, q);
+    mm_dyn_round_shape(bob2, q);
+    a->bounds[0] = a->bounds[1] = -1.1 * L;
+    a->bounds[2] = a->bounds[3] = 1.1 * L;
+    return MM_OK;
+}
+
+/* ---- solve ------------------------------------------------------------------------ */
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    mm_dpend s = model_of(in);
+    double y0[4] = {in[P_TH1].x, in[P_TH2].x, in[P_W1].x, in[P_W2].x}, t_end = in[P_TEND].x;
+    double rtol = in[P_RTOL].x, h = in[P_H].x, sep = in[P_SEP].x;
+    int n = (int)in[P_POINTS].x;
+    mm_symp_method sm = (int)in[P_SYMP].x == 0 ? MM_SYMP_GAUSS4 : MM_SYMP_MIDPOINT;
+
+    double ws, wf, Escale, E0 = mm_dpend_energy(&s, y0, &Escale);
+    mm_dpend_linear(&s, &ws, &wf);
+    double Vmin = -(s.m1 + s.m2) * s.g * s.l1 - s.m2 * s.g * s.l2;
+    mm_res_scalar(res, O_WSLOW, ws);
+    mm_res_scalar(res, O_WFAST, wf);
+    mm_res_scalar(res, O_E0, E0 - Vmin);
+    /* the energy scale of the relative errors: the potential energy's range */
+    double Es = fmax(-2 * Vmin, E0 - Vmin);
+
+    /* the reference: DOP853 at 1e-10 on Lagrange's equations */
+    mm_series *s1 = mm_res_series(res, O_TH1, n), *s2 = mm_res_series(res, O_TH2, n);
+    mm_series *sdp = mm_res_series(res, O_DE_DP, n);
+    double *yr = mm_res_alloc(res, (size_t)n * 4 * sizeof *yr), *yd = mm_res_alloc(res, (size_t)n * 4 * sizeof *yd);
+    if (!s1 || !s2 || !sdp || !yr || !yd)
+        return MM_ENOMEM;
+    mm_linspace(0, t_end, n, s1->x);
+    mm_ode_result rr, rd;
+    int rc = run_lagrange(&s, y0, t_end, n, s1->x, MM_ODE_DOP853, RTOL_REF, yr, &rr, err);
+    if (rc == MM_OK)
+        rc = run_lagrange(&s, y0, t_end, n, s1->x, MM_ODE_DOPRI5, rtol, yd, &rd, err);
+    if (rc != MM_OK)
+        return rc;
+    double ref_drift = 0, dp_drift = 0, lh_worst = 0, lh_scale = 0;
+    for (int i = 0; i < n; i++) {
+        const double *y = yr + 4 * i;
+        s2->x[i] = sdp->x[i] = s1->x[i];
+        s1->y[i] = y[0], s2->y[i] = y[1];
+        ref_drift = fmax(ref_drift, fabs(mm_dpend_energy(&s, y, NULL) - E0) / Es);
+        double e = fabs(mm_dpend_energy(&s, yd + 4 * i, NULL) - E0) / Es;
+        dp_drift = fmax(dp_drift, e);
+        sdp->y[i] = fmax(e, DBL_EPSILON);
+        /* Lagrange's equations against Hamilton's at this state: dp/dt from
+         * Hamilton must equal d(M w)/dt = M w' + M' w from Lagrange */
+        double dl[4], yp[4], dh[4];
+        mm_dpend_rhs_lagrange(0, y, dl, &s);
+        mm_dpend_to_momenta(&s, y, yp);
+        mm_dpend_rhs_hamilton(0, yp, dh, &s);
+        double d = y[0] - y[1], dd = y[2] - y[3], c = cos(d), sn = sin(d), k = s.m2 * s.l1 * s.l2;
+        double M11 = (s.m1 + s.m2) * s.l1 * s.l1, M22 = s.m2 * s.l2 * s.l2;
+        double p1 = M11 * dl[2] + k * (c * dl[3] - sn * dd * y[3]);
+        double p2 = M22 * dl[3] + k * (c * dl[2] - sn * dd * y[2]);
+        double big = fabs(M11 * dl[2]) + fabs(k * dl[3]) + fabs(k * dd * y[3]) + fabs(M22 * dl[3]) +
+                     fabs(k * dl[2]) + fabs(k * dd * y[2]) + fabs(dh[2]) + fabs(dh[3]);
+        lh_worst = fmax(lh_worst, fmax(fabs(p1 - dh[2]), fabs(p2 - dh[3])));
+        lh_worst = fmax(lh_worst, fmax(fabs(dh[0] - y[2]), fabs(dh[1] - y[3])) * (M11 + M22));
+        /* the Hamiltonian side goes through M^-1: its rounding grows with cond M ~ trace^2 / det */
+        double cond = (M11 + M22) * (M11 + M22) / (M11 * M22 - k * k * c * c);
+        lh_scale = fmax(lh_scale, (big + (fabs(y[2]) + fabs(y[3])) * (M11 + M22)) * cond);
+    }
+    mm_res_method(res, "Lagrange's equations by dop853 (reference, rtol 1e-10; twins 1e-12) and dopri5; Hamilton's by "
+                       "Gauss-Legendre collocation", 0);
+    mm_res_method_stat(res, "reference_steps", (double)rr.n_accepted);
+    mm_res_method_stat(res, "dopri5_rtol", rtol);
+    mm_res_method_stat(res, "dopri5_steps", (double)rd.n_accepted);
+    mm_res_method_stat(res, "dopri5_evaluations", (double)rd.n_eval);
+
+    /* the symplectic run on Hamilton's equations, in (theta, p) */
+    double yp0[4], scale[4];
+    mm_dpend_to_momenta(&s, y0, yp0);
+    double pscale = (s.m1 + s.m2) * s.l1 * s.l1 * rate(&s, y0);
+    scale[0] = scale[1] = 1, scale[2] = scale[3] = pscale;
+    mm_symp_problem sp = {.n = 4, .f = mm_dpend_rhs_hamilton, .params = &s, .t0 = 0, .t_end = t_end, .y0 = yp0,
+                          .scale = scale};
+    mm_symp_options so;
+    mm_symp_options_init(&so);
+    so.method = sm;
+    so.h = h;
+    so.max_steps = MAX_SYMP_STEPS;
+    so.max_iter = 200;
+    long N = (long)ceil(t_end / h);
+    mm_series *ssy = mm_res_series(res, O_DE_SY, (int)fmin(n, N + 1));
+    if (!ssy)
+        return MM_ENOMEM;
+    symp_obs ob = {.s = &s, .E0 = E0, .scale = Es, .N = N, .stride = (N + ssy->n - 2) / (ssy->n - 1),
+                   .out = ssy};
+    if (ob.stride < 1)
+        ob.stride = 1;
+    mm_symp_work *sw = mm_symp_work_alloc(4);
+    mm_symp_result sres;
+    rc = mm_symp_solve(&sp, &so, sw, observe, &ob, NULL, &sres, err);
+    mm_symp_work_free(sw);
+    if (rc != MM_OK)
+        return rc;
+    ssy->n = ob.k;
+    mm_res_method_stat(res, "symplectic_h", sres.h);
+    mm_res_method_stat(res, "symplectic_steps", (double)sres.n_steps);
+    mm_res_method_stat(res, "symplectic_evaluations", (double)sres.n_eval);
+    mm_res_method_stat(res, "symplectic_iterations_mean", sres.iter_mean);
+    double sy_drift = fmax(ob.max_first, ob.max_second);
+    /* the two drifts are the runs' own (no script or second method can
+     * reproduce another integrator's rounding): said in words, plotted */
+    mm_res_method_stat(res, "dopri5_largest_energy_error", dp_drift);
+    mm_res_method_stat(res, "symplectic_largest_energy_error", sy_drift);
+
+    /* checks */
+    double steps = 8 + rate(&s, y0) * t_end;     /* DOP853 takes a few steps even over a short run */
+    mm_res_check_abs(res, "energy of the reference run (DOP853, rtol 1e-10): largest relative error",
+                     ref_drift, 0, 0.8 * RTOL_REF * steps);
+    mm_check_residual(res, "Lagrange's equations vs Hamilton's: dp/dt = d(M w)/dt at every plotted state "
+                           "(scale: largest term times cond M)", lh_worst, lh_scale, 8);
+    /* a symplectic method's energy error oscillates but does not grow: the
+     * second half of the run may not exceed the first by more than the
+     * variation between regions the motion visits (x4) and round-off */
+
+    /* the twins: the reference and a start moved by sep in theta2, DOP853
+     * at 1e-12, over at most 40 periods of the fast small oscillation (a
+     * chaotic pair parts within a few); their distance on a grid */
+    double y0b[4] = {y0[0], y0[1] + sep, y0[2], y0[3]}, t_ly = fmin(t_end, 40 * 2 * M_PI / wf);
+    double *yb = mm_res_alloc(res, (size_t)n * 4 * sizeof *yb), *ya;
+    mm_series *ssep = mm_res_series(res, O_SEP, n);
+    if (!yb || !ssep)
+        return MM_ENOMEM;
+    mm_linspace(0, t_ly, n, ssep->x);
+    mm_ode_result rb;
+    ya = mm_res_alloc(res, (size_t)n * 4 * sizeof *ya);
+    if (!ya)
+        return MM_ENOMEM;
+    rc = run_lagrange(&s, y0, t_ly, n, ssep->x, MM_ODE_DOP853, RTOL_TWIN, ya, &rb, err);
+    if (rc != MM_OK)
+        return rc;
+    rc = run_lagrange(&s, y0b, t_ly, n, ssep->x, MM_ODE_DOP853, RTOL_TWIN, yb, &rb, err);
+    if (rc != MM_OK)
+        return rc;
+    double d0 = distance(y0, y0b, wf);
+    int i_lo = -1, i_hi = -1;
+    double t_h = -1;
+    for (int i = 0; i < n; i++) {
+        double d = distance(ya + 4 * i, yb + 4 * i, wf);
+        ssep->y[i] = fmax(d, DBL_EPSILON * d0);
+        /* the exponential regime: from 1e3 d0 (past the start's transient) to 1e-3 (before saturation) */
+        if (i_lo < 0 && d > 1e3 * d0)
+            i_lo = i;
+        if (i_hi < 0 && d > 1e-3) {
+            i_hi = i;
+            double dp = distance(ya + 4 * (i - 1), yb + 4 * (i - 1), wf);
+            /* log-linear interpolation between the two grid points */
+            t_h = ssep->x[i - 1] + (ssep->x[i] - ssep->x[i - 1]) * log(1e-3 / dp) / log(d / dp);
+        }
+    }
+    if (t_h >= 0)
+        mm_res_scalar_err(res, O_THORIZON, t_h, ssep->x[1] - ssep->x[0], MM_ERR_ESTIMATE);
+    if (i_lo > 0 && i_hi < 0)
+        i_hi = n;                                  /* still growing at the end of the window */
+    if (i_lo > 0 && i_hi > i_lo + 8) {
+        /* least squares of ln d = a + lambda t over the regime; the error
+         * estimate is twice the slope's standard error */
+        double st = 0, sl = 0, stt = 0, stl = 0;
+        int m = i_hi - i_lo;
+        for (int i = i_lo; i < i_hi; i++) {
+            double t = ssep->x[i], l = log(ssep->y[i]);
+            st += t, sl += l, stt += t * t, stl += t * l;
+        }
+        double den = m * stt - st * st, lam = (m * stl - st * sl) / den, a0 = (sl - lam * st) / m, ss = 0;
+        for (int i = i_lo; i < i_hi; i++) {
+            double e = log(ssep->y[i]) - a0 - lam * ssep->x[i];
+            ss += e * e;
+        }
+        double se = sqrt(ss / (m - 2) * m / den);
+        mm_res_scalar_err(res, O_LYAP, lam, 2 * se, MM_ERR_ESTIMATE);
+        mm_series *sf = mm_res_series(res, O_SEP_FIT, 2);
+        if (!sf)
+            return MM_ENOMEM;
+        sf->x[0] = ssep->x[i_lo], sf->x[1] = ssep->x[i_hi - 1];
+        sf->y[0] = exp(a0 + lam * sf->x[0]), sf->y[1] = exp(a0 + lam * sf->x[1]);
+    } else {
+        mm_res_warn(res, "the twins stay close (%.2g apart at t = %.4g s): no exponential growth to fit, so "
+                         "no Lyapunov exponent is given; the motion looks regular at this energy",
+                    ssep->y[n - 1], t_ly);
+    }
+    /* a symplectic method's energy error oscillates but does not grow: on a
+     * regular motion (the twins stay together) over many periods, the second
+     * half of the run may not exceed the first by more than the variation
+     * between the regions the motion visits (x4) and round-off */
+    if (i_lo < 0 && t_end * rate(&s, y0) > 20 * 2 * M_PI)
+        mm_res_check_abs(res, "symplectic energy error: largest over the second half vs over the first half",
+                         ob.max_second, 0, 4 * ob.max_first + 64 * DBL_EPSILON * sqrt((double)N));
+    if (dp_drift > 10 * sy_drift && t_end * wf > 200)
+        mm_res_warn(res, "over this run Dormand-Prince's energy error (%.2g) grew past the symplectic "
+                         "method's (%.2g), which stays bounded", dp_drift, sy_drift);
+    return animate(&s, t_end, y0, y0b, res, err);
+}
+
+static const char *const references[] = {
+    "H. Goldstein, C. Poole, J. Safko, Classical Mechanics, 3rd ed., Addison-Wesley 2002, ch. 1-2 and 8",
+    "E. Hairer, C. Lubich, G. Wanner, Geometric Numerical Integration, 2nd ed., Springer 2006, II.1 and IX",
+    "E. Hairer, S. P. Norsett, G. Wanner, Solving Ordinary Differential Equations I, Springer 1993 "
+    "(Dormand-Prince)",
+    NULL,
+};
+
+const mm_exercise mm_ex_dyn_double_pendulum = {
+    .id = "dyn-double-pendulum",
+    .chapter = 4,
+    .section = "4.3",
+    .title = "The double pendulum: Lagrange's equations, energy and chaos",
+    .summary = "Equations of motion by Lagrange's method; the energy error of Dormand-Prince against a "
+               "symplectic Gauss method; two starts 1e-9 apart and the Lyapunov exponent.",
+    .tags = "dynamics, Lagrange, Hamilton, symplectic, energy drift, chaos, Lyapunov",
+    .theory = "exercises/dyn/double_pendulum.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

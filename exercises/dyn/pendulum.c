@@ -1,0 +1,480 @@
+/* pendulum.c — dyn-pendulum: a point mass on a massless rod, swung to any
+ * amplitude, up to the top and over it.
+ *
+ *     theta'' + (g/L) sin theta = 0,   theta(0) = theta0,  theta'(0) = omega0     (1)
+ *
+ * Goal: see the period grow with the amplitude, from the small-angle
+ * 2 pi sqrt(L/g) to infinity at the top (the separatrix), and learn the
+ * closed form that says by how much: T = 4 sqrt(L/g) K(sin(theta0/2)), K the
+ * complete elliptic integral of the first kind, computed here by Gauss's
+ * arithmetic-geometric mean to round-off.  The motion itself is integrated
+ * (DOP853) and checked against the exact solution in Jacobi elliptic
+ * functions; the period is measured from the integration (the orbit must
+ * close after one period) and checked against the closed form; and the
+ * amplitude at which the period is 1 % longer than the small-angle one is
+ * found as a root.  An initial angular velocity sends the bob over the top
+ * (rotation); exactly at the top at rest it stays there (the separatrix:
+ * infinite period).
+ * Reference: Abramowitz & Stegun, Handbook of Mathematical Functions,
+ * ch. 16-17; J. L. Meriam, L. G. Kraige, Engineering Mechanics: Dynamics,
+ * the simple pendulum; Hairer, Norsett & Wanner, Solving ODE I (DOP853).
+ */
+#include <float.h>
+#include <math.h>
+
+#include "mm_dyn.h"
+#include "mm_elliptic.h"
+#include "mm_exhelp.h"
+#include "mm_roots.h"
+#include "mm_scene.h"
+
+enum { P_L, P_G, P_THETA0, P_TEND, P_OMEGA0, P_POINTS };
+
+static const mm_param params[] = {
+    [P_L] = {"L", "rod length", "m", MM_REAL, 1, 1e-3, 100, .help = "from the pivot to the bob (a point mass)"},
+    [P_G] = {"g", "gravity", "m/s^2", MM_REAL, 9.81, 0.01, 100, .help = "acceleration of gravity"},
+    [P_THETA0] = {"theta0", "release angle", "rad", MM_REAL, 1, 1e-6, M_PI,
+                  .help = "angle from the hanging position at t = 0; pi is straight up, the separatrix "
+                          "(at rest there the period is infinite)"},
+    [P_TEND] = {"t_end", "duration", "s", MM_REAL, 10, 0.01, 1e4,
+                .help = "simulated time; at most 1e4 radians of the motion"},
+    [P_OMEGA0] = {"omega0", "initial angular velocity", "rad/s", MM_REAL, 0, -1e3, 1e3,
+                  .help = "theta' at t = 0; 0 releases the bob from rest; above 2 sqrt(g/L) cos(theta0/2) "
+                          "the bob goes over the top"},
+    [P_POINTS] = {"points", "plot points", "", MM_INT, 501, 11, 4001,
+                  .help = "samples of the time response returned for the plot"},
+};
+
+enum {
+    O_PERIOD, O_PERIOD_SMALL, O_RATIO, O_AMPL, O_K, O_MOTION, O_T1PCT, O_OMEGA_N,
+    O_THETA, O_THETA_LIN, O_RATIO_CURVE, O_RATIO_SERIES, O_ANIM
+};
+
+static const mm_output outputs[] = {
+    [O_PERIOD] = MM_SCALAR("period", "period (of a swing, or of a turn over the top)", "s",
+                           .flags = MM_ANSWER | MM_EXACT),
+    [O_PERIOD_SMALL] = MM_SCALAR("period_small", "small-angle period 2 pi sqrt(L/g)", "s",
+                                 .flags = MM_ANSWER | MM_EXACT),
+    [O_RATIO] = MM_SCALAR("period_ratio", "period / small-angle period", "", .flags = MM_EXACT),
+    [O_AMPL] = MM_SCALAR("theta_max", "amplitude (largest angle of the swing)", "rad",
+                         .flags = MM_ANSWER | MM_EXACT),
+    [O_K] = MM_SCALAR("k", "modulus sqrt(E / (2 m g L)) (< 1 swings, > 1 turns over)", "", .flags = MM_EXACT),
+    [O_MOTION] = MM_SCALAR("motion", "kind of motion (0 swing, 1 separatrix, 2 over the top)", "",
+                           .flags = MM_EXACT),
+    [O_T1PCT] = MM_SCALAR("theta_1pct", "amplitude at which the period is 1 % above the small-angle one",
+                          "rad", .flags = MM_ANSWER),
+    [O_OMEGA_N] = MM_SCALAR("omega_n", "small-angle frequency sqrt(g/L)", "rad/s", .flags = MM_EXACT),
+    [O_THETA] = MM_SERIES("theta", "angle (DOP853)", "rad", "t", "s", .figure = "motion"),
+    [O_THETA_LIN] = MM_SERIES("theta_linear", "small-angle solution", "rad", "t", "s", .figure = "motion",
+                              .role = "reference"),
+    [O_RATIO_CURVE] = MM_SERIES("period_curve", "period / small-angle period (elliptic integral)", "",
+                                "amplitude", "rad", .figure = "period"),
+    [O_RATIO_SERIES] = MM_SERIES("period_series", "first correction 1 + theta0^2/16", "", "amplitude", "rad",
+                                 .figure = "period", .role = "reference"),
+    [O_ANIM] = MM_ANIMATION("the pendulum swinging, with the path of its bob"),
+};
+
+enum { SWING = 0, SEPARATRIX = 1, OVER = 2 };
+static const char *const motion_names[] = {"swinging", "separatrix", "over the top"};
+
+/* ---- the model and its closed form ------------------------------------------- */
+
+typedef struct pend {
+    double L, g, wn;        /* wn = sqrt(g/L) */
+    double theta0, omega0;
+    int motion;
+    double k, kc;           /* SWING: modulus and its complement; OVER: of 1/k */
+    double kk;              /* OVER: the energy modulus k > 1 (kc, k then of 1/kk) */
+    double u0;              /* argument of the Jacobi functions at t = 0 */
+    double sg;              /* OVER: direction of the rotation */
+    double T, T0;           /* period (INFINITY on the separatrix), small-angle period */
+} pend;
+
+/* sin theta with the top exact: theta = pi (the double nearest pi, as the
+ * parameter reads it) is the inverted equilibrium, sin = 0. */
+static double sin_top(double th)
+{
+    double r = th - 2 * M_PI * nearbyint(th / (2 * M_PI));   /* r in [-pi, pi] */
+    if (r > M_PI_2)
+        return sin(M_PI - r);
+    if (r < -M_PI_2)
+        return -sin(M_PI + r);
+    return sin(r);
+}
+
+static pend model(const mm_value *in)
+{
+    pend p = {.L = in[P_L].x, .g = in[P_G].x, .theta0 = in[P_THETA0].x, .omega0 = in[P_OMEGA0].x};
+    p.wn = sqrt(p.g / p.L);
+    p.T0 = 2 * M_PI / p.wn;
+    double s = sin(0.5 * p.theta0);
+    double c = p.theta0 == M_PI ? 0 : cos(0.5 * p.theta0);   /* the top exactly */
+    double a = fabs(p.omega0) / (2 * p.wn);
+    /* eq. (3): k^2 = sin^2(theta0/2) + (omega0 / (2 wn))^2, kc^2 = 1 - k^2 */
+    double kc2 = (c - a) * (c + a);
+    if (kc2 > 0) {
+        p.motion = SWING;
+        p.kc = sqrt(kc2);
+        p.k = sqrt(s * s + a * a);
+        p.T = 4 * mm_elliptic_Kc(p.kc) / p.wn;                       /* eq. (5) */
+        /* sn(u0) = sin(theta0/2)/k, cn(u0) = omega0/(2 k wn): u0 = F(phi0) */
+        p.u0 = mm_elliptic_F(atan2(s, p.omega0 / (2 * p.wn)), p.k, p.kc);
+    } else if (kc2 == 0 && p.omega0 == 0) {
+        p.motion = SEPARATRIX;                                        /* at rest on the top */
+        p.T = INFINITY;
+        p.k = 1;
+    } else {
+        /* over the top (or on the separatrix with a push): theta/2 = am(sg kk wn t + u0, 1/kk) */
+        p.motion = kc2 == 0 ? SEPARATRIX : OVER;
+        p.kk = sqrt(s * s + a * a);
+        p.k = 1 / p.kk;
+        p.kc = sqrt(-kc2) / p.kk;
+        p.sg = p.omega0 >= 0 ? 1 : -1;
+        p.T = p.kc > 0 ? 2 * mm_elliptic_Kc(p.kc) / (p.kk * p.wn) : INFINITY;   /* eq. (7) */
+        p.u0 = mm_elliptic_F(0.5 * p.theta0, p.k, p.kc);
+    }
+    return p;
+}
+
+/* The exact theta(t) and theta'(t) (eqs. 4 and 6). */
+static double exact(const pend *p, double t, double *w)
+{
+    double sn, cn, dn, am;
+    switch (p->motion) {
+    case SWING:
+        mm_elliptic_jacobi(p->wn * t + p->u0, p->k, p->kc, &sn, &cn, &dn, NULL);
+        *w = 2 * p->k * p->wn * cn;
+        return 2 * atan2(p->k * sn, dn);       /* sin(theta/2) = k sn, cos(theta/2) = dn */
+    case SEPARATRIX:
+        if (p->omega0 == 0) {
+            *w = 0;
+            return M_PI;
+        }
+        /* with a push: the limit k = 1 of the rotation formula */
+        /* fall through */
+    default:
+        mm_elliptic_jacobi(p->sg * p->kk * p->wn * t + p->u0, p->k, p->kc, &sn, &cn, &dn, &am);
+        *w = 2 * p->sg * p->kk * p->wn * dn;
+        return 2 * am;
+    }
+}
+
+static int rhs(double t, const double *y, double *dy, void *ctx)
+{
+    (void)t;
+    const pend *p = ctx;
+    dy[0] = y[1];
+    dy[1] = -p->wn * p->wn * sin_top(y[0]);                /* eq. (1) */
+    return 0;
+}
+
+/* Energy per unit m L^2: theta'^2 / 2 + wn^2 (1 - cos theta), written with
+ * 2 sin^2(theta/2) so that it keeps its digits near the bottom. */
+static double energy(const pend *p, double th, double w)
+{
+    double s = sin(0.5 * th);
+    return 0.5 * w * w + 2 * p->wn * p->wn * s * s;
+}
+
+/* The fastest rate of the motion [1/s]: wn, and the largest |theta'|. */
+static double rate(const pend *p)
+{
+    double a = fabs(p->omega0) / (2 * p->wn), s = sin(0.5 * p->theta0);
+    return p->wn * fmax(1, 2 * sqrt(s * s + a * a));
+}
+
+#define MAX_RADIANS 1e4
+#define RTOL 1e-12           /* DOP853's tolerance: the checks below are sized to it */
+
+static int check(const mm_value *in, mm_error *err)
+{
+    pend p = model(in);
+    double t_end = in[P_TEND].x, r = rate(&p);
+    if (t_end * r > MAX_RADIANS)
+        return mm_error_set(err, MM_ERANGE, "t_end",
+                            "t_end = %g s spans %.3g radians of the motion (rate %.4g 1/s); at most %g fit "
+                            "one request: make t_end at most %.4g s", t_end, t_end * r, r, MAX_RADIANS,
+                            MAX_RADIANS / r);
+    return MM_OK;
+}
+
+/* ---- the amplitude of a 1 % longer period ------------------------------------ */
+
+/* 2 K(sin(theta/2)) / pi - 1.01 (eq. 5 divided by the small-angle period) */
+static int ratio_minus(double th, double *f, void *ctx)
+{
+    (void)ctx;
+    *f = 2 * mm_elliptic_Kc(cos(0.5 * th)) / M_PI - 1.01;
+    return 0;
+}
+
+static int one_percent(mm_result *res, double *th, mm_error *err)
+{
+    double a = 0.1, b = 1.0, fa, fb, fx, width;
+    ratio_minus(a, &fa, NULL);
+    ratio_minus(b, &fb, NULL);
+    int iter = 0;
+    int rc = mm_roots_brent(ratio_minus, NULL, a, b, fa, fb, 1e-16, 200, th, &fx, &width, &iter, NULL, err);
+    if (rc != MM_OK)
+        return rc;
+    /* the root of the computed function lies in the final bracket; the
+     * computed function is within 4 eps of the true one, which moves the
+     * root by 4 eps / slope (slope ~ theta/8 = 0.05 here) */
+    double h = 1e-4, fp, fm;
+    ratio_minus(*th + h, &fp, NULL);
+    ratio_minus(*th - h, &fm, NULL);
+    double slope = (fp - fm) / (2 * h);
+    mm_res_scalar_err(res, O_T1PCT, *th, width + 4 * DBL_EPSILON * 1.01 / (0.5 * slope), MM_ERR_BOUND);
+    /* independent: the Maclaurin series of T/T0 in theta0 (positive terms,
+     * each under half the one before it here), to theta0^8, must give 1.01
+     * within twice its first neglected term */
+    double x2 = *th * *th;
+    double series = 1 + x2 * (1.0 / 16 + x2 * (11.0 / 3072 + x2 * (173.0 / 737280 + x2 * 22931.0 / 1321205760)));
+    double next = 1319183.0 / 951268147200 * x2 * x2 * x2 * x2 * x2;
+    mm_res_check_abs(res, "theta_1pct: T/T0 by its series in theta0 (to theta0^8) vs 1.01", series, 1.01,
+                     2 * next + 4 * DBL_EPSILON);
+    return MM_OK;
+}
+
+/* ---- the animation ---------------------------------------------------------- */
+
+static int animate(const pend *p, double t_end, int n, const double *t, const double *th, mm_result *res)
+{
+    double t_show;
+    double shortest = isfinite(p->T) ? fmin(p->T, p->T0) : p->T0;
+    int nf = mm_scene_frames(t_end, shortest, &t_show);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    if (!a)
+        return MM_ENOMEM;
+    mm_dyn_frame_times(a, t_show);
+    /* the path: the bob's positions over the frames' span, at most 360 points */
+    int np = 0;
+    while (np < n && t[np] <= t_show * (1 + 1e-12))
+        np++;
+    int stride = np > 360 ? (np + 359) / 360 : 1, npath = (np + stride - 1) / stride;
+    mm_shape *pivot = mm_anim_shape(res, "pivot", MM_SHAPE_POLYGON, 1, 3);
+    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, npath);
+    mm_shape *rod = mm_anim_shape(res, "rod", MM_SHAPE_LINE, nf, 2);
+    mm_shape *bob = mm_anim_shape(res, "bob", MM_SHAPE_CIRCLE, nf, 1);
+    if (!pivot || !path || !rod || !bob)
+        return MM_ENOMEM;
+    double L = p->L, q = mm_dyn_quantum(2 * L);
+    pivot->style = "ground";
+    const double tri[3][2] = {{0, 0}, {-0.06, 0.08}, {0.06, 0.08}};
+    for (int k = 0; k < 3; k++)
+        pivot->x[k] = tri[k][0] * L, pivot->y[k] = tri[k][1] * L;
+    for (int j = 0; j < npath; j++) {
+        double a0 = th[j * stride];
+        path->x[j] = L * sin(a0), path->y[j] = -L * cos(a0);
+    }
+    bob->radius = 0.06 * L;
+    for (int f = 0; f < nf; f++) {
+        double w, a0 = exact(p, a->t[f], &w);    /* frames between grid points: the closed form */
+        double x = L * sin(a0), y = -L * cos(a0);
+        rod->x[2 * f] = 0, rod->y[2 * f] = 0;
+        rod->x[2 * f + 1] = x, rod->y[2 * f + 1] = y;
+        bob->x[f] = x, bob->y[f] = y;
+    }
+    mm_dyn_round_shape(path, q);
+    mm_dyn_round_shape(rod, q);
+    mm_dyn_round_shape(bob, q);
+    a->bounds[0] = -1.15 * L, a->bounds[1] = -1.15 * L, a->bounds[2] = 1.15 * L, a->bounds[3] = 1.15 * L;
+    return MM_OK;
+}
+
+/* ---- solve -------------------------------------------------------------------- */
+
+/* The period measured from the integration, where it is well conditioned:
+ * the times of two successive passages through the bottom (theta = 0 mod
+ * 2 pi, where |theta'| is largest), each located by one Newton step from
+ * the integrated state at the closed form's prediction.  Half a period
+ * apart for a swing, a whole one for a turn over the top. */
+static int measure_period(const pend *p, mm_result *res, double *Tm, double *dE, mm_error *err)
+{
+    double K = mm_elliptic_Kc(p->kc), ta, tb, target_a, target_b, half;
+    if (p->motion == SWING) {
+        ta = (2 * K - p->u0) / p->wn;               /* u = 2K: sn = 0 */
+        half = 2 * K / p->wn;                       /* T/2 */
+        target_a = target_b = 0;
+    } else {
+        double v = p->kk * p->wn;                   /* v = sg kk wn t + u0 = 2K j */
+        ta = p->sg > 0 ? (2 * K - p->u0) / v : p->u0 / v;
+        half = 2 * K / v;                           /* T */
+        target_a = p->sg > 0 ? 2 * M_PI : 0;
+        target_b = target_a + 2 * M_PI * p->sg;
+    }
+    tb = ta + half;
+    double y0[2] = {p->theta0, p->omega0}, tt[2] = {ta, tb}, x[2], v[2];
+    mm_ode_result r;
+    int rc = mm_ex_ode_grid(2, rhs, (void *)p, y0, tb, 2, tt, RTOL, RTOL, 1 / rate(p), x, v, &r, res, err);
+    if (rc != MM_OK)
+        return rc;
+    double ca = ta - (x[0] - target_a) / v[0], cb = tb - (x[1] - target_b) / v[1];
+    *Tm = (cb - ca) * (p->motion == SWING ? 2 : 1);
+    double E0 = energy(p, p->theta0, p->omega0);
+    *dE = fmax(fabs(energy(p, x[0], v[0]) - E0), fabs(energy(p, x[1], v[1]) - E0));
+    return MM_OK;
+}
+
+/* The period (eqs. 5 and 7) as a function of the distance d = |E - Es| of
+ * the energy per unit m L^2 from the separatrix's Es = 2 g/L, on the side
+ * the motion is on. */
+static double period_of_distance(const pend *p, double d)
+{
+    double Es = 2 * p->wn * p->wn;
+    if (p->motion == SWING)
+        return 4 * mm_elliptic_Kc(sqrt(d / Es)) / p->wn;
+    double E = Es + d;
+    return 2 * mm_elliptic_Kc(sqrt(d / E)) / (sqrt(E / Es) * p->wn);
+}
+
+/* |dT/dE| by a central difference in d, relative step 1e-4 (accurate to
+ * ~1e-8 relative: it only sizes a tolerance).  d comes from kc, which
+ * keeps its digits right up to the separatrix. */
+static double period_sensitivity(const pend *p)
+{
+    double Es = 2 * p->wn * p->wn;
+    double d = p->motion == SWING ? Es * p->kc * p->kc : Es * p->kk * p->kk * p->kc * p->kc, h = 1e-4;
+    return fabs(period_of_distance(p, d * (1 + h)) - period_of_distance(p, d * (1 - h))) / (2 * h * d);
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    pend p = model(in);
+    double t_end = in[P_TEND].x;
+    int n = (int)in[P_POINTS].x;
+
+    mm_res_scalar(res, O_OMEGA_N, p.wn);
+    mm_res_scalar(res, O_PERIOD_SMALL, p.T0);
+    mm_res_scalar_text(res, O_MOTION, p.motion, motion_names[p.motion]);
+    if (isfinite(p.T)) {
+        mm_res_scalar(res, O_PERIOD, p.T);
+        mm_res_scalar(res, O_RATIO, p.T / p.T0);
+    } else {
+        mm_res_warn(res, "theta0 = pi with omega0 = 0 is the separatrix: the bob balances straight up, and "
+                         "in exact arithmetic it stays there forever (the period is infinite, so none is "
+                         "given); any disturbance makes it fall: try theta0 = 3.1415");
+        if (p.omega0 != 0)
+            mm_res_warn(res, "this push lands exactly on the separatrix: the bob creeps up to the top and "
+                             "takes forever to arrive");
+    }
+    if (p.motion == SWING)
+        mm_res_scalar(res, O_AMPL, 2 * asin(fmin(p.k, 1)));
+    mm_res_scalar(res, O_K, p.motion == OVER ? p.kk : p.k);
+    if (p.motion == SWING && p.kc < 1e-3)
+        mm_res_warn(res, "the swing reaches within %.2g rad of the top: near the separatrix the period "
+                         "grows like 4 ln(8/kc) / omega_n (kc = %.3g), and the integrator's tiny energy "
+                         "errors decide the timing more and more", 2 * asin(p.kc), p.kc);
+
+    double th1;
+    int rc = one_percent(res, &th1, err);
+    if (rc != MM_OK)
+        return rc;
+
+    /* the motion, eq. (1), by DOP853 with dense output */
+    mm_series *sth = mm_res_series(res, O_THETA, n), *slin = mm_res_series(res, O_THETA_LIN, n);
+    if (!sth || !slin)
+        return MM_ENOMEM;
+    mm_linspace(0, t_end, n, sth->x);
+    double *w = mm_res_alloc(res, (size_t)n * sizeof *w);
+    if (!w)
+        return MM_ENOMEM;
+    double y0[2] = {p.theta0, p.omega0};
+    mm_ode_result r;
+    double hmax = 1 / rate(&p);               /* at most a radian of the motion a step */
+    rc = mm_ex_ode_grid(2, rhs, &p, y0, t_end, n, sth->x, RTOL, RTOL, hmax, sth->y, w, &r, res, err);
+    if (rc != MM_OK)
+        return rc;
+    mm_res_method(res, "dop853 (Dormand-Prince 8(5,3), dense output)", 0);
+    mm_res_method_stat(res, "rtol", RTOL);
+    mm_res_method_stat(res, "steps", (double)r.n_accepted);
+    mm_res_method_stat(res, "rejected", (double)r.n_rejected);
+    mm_res_method_stat(res, "evaluations", (double)r.n_eval);
+
+    /* checks: the energy, then the trajectory against the exact solution */
+    double worst = 0, drift = 0, E0 = energy(&p, p.theta0, p.omega0), big = 0, wmax = 0;
+    for (int i = 0; i < n; i++) {
+        double we, the = exact(&p, sth->x[i], &we);
+        slin->x[i] = sth->x[i];
+        slin->y[i] = p.theta0 * cos(p.wn * sth->x[i]) + p.omega0 / p.wn * sin(p.wn * sth->x[i]);
+        worst = fmax(worst, fabs(sth->y[i] - the));
+        drift = fmax(drift, fabs(energy(&p, sth->y[i], w[i]) - E0));
+        big = fmax(big, fabs(the));
+        wmax = fmax(wmax, fabs(we));
+    }
+    /* DOP853 keeps each step's error near RTOL times the state's size; over
+     * rate * t_end radians of motion they add up (eq. 8) */
+    double steps = 1 + rate(&p) * t_end, Escale = E0 + p.wn * p.wn;
+    mm_res_check_abs(res, "energy: largest drift of theta'^2/2 + (g/L)(1 - cos theta) over the run [1/s^2]",
+                     drift, 0, RTOL * Escale * steps);
+    /* an energy error dE moves the period by |dT/dE| dE, the phase by
+     * |theta'| t / T of that: near the separatrix |dT/dE| ~ 1/kc^2 and the
+     * integration's own energy error decides the timing (eq. 9) */
+    double dTdE = isfinite(p.T) ? period_sensitivity(&p) : 0;
+    double phase = isfinite(p.T) ? 2 * wmax * t_end / p.T * dTdE * drift : 0;
+    double tol_th = RTOL * (1 + big) * steps + phase;
+    mm_res_check_abs(res, "theta(t): DOP853 vs the exact solution in Jacobi functions, worst point [rad]",
+                     worst, 0, tol_th);
+    if (tol_th > 0.1)
+        mm_res_warn(res, "near the separatrix the integration's energy error (%.2g of %.3g) moves the period "
+                         "by up to %.2g s: the computed angle can lose its phase by %.2g rad over t_end; the "
+                         "closed form (the period, the exact solution) does not suffer from this",
+                    drift, E0, dTdE * drift, tol_th);
+
+    if (isfinite(p.T)) {
+        double Ka = mm_elliptic_Kc(p.kc), Kc = mm_elliptic_RF(0, p.kc * p.kc, 1);
+        mm_res_check_rel(res, "K: arithmetic-geometric mean vs Carlson's R_F", Ka, Kc, 8 * DBL_EPSILON);
+        double Tm, dE;
+        rc = measure_period(&p, res, &Tm, &dE, err);
+        if (rc != MM_OK)
+            return rc;
+        /* each crossing time: RTOL of the angle's size divided by the speed
+         * there, plus the period shift of the energy error at the crossings */
+        double bigT = p.motion == SWING ? 2 * asin(fmin(p.k, 1)) : fabs(p.theta0) + 4 * M_PI;
+        double tol_T = RTOL * (1 + bigT) / wmax + 2 * dTdE * dE;
+        if (tol_T >= 0.01 * p.T)
+            mm_res_warn(res, "the period measured from the integration (%.6g s) is not shown: this close to "
+                             "the separatrix the integration's energy error alone can move it by %.2g s",
+                        Tm, tol_T);
+        mm_res_check_abs(res, "period: measured from two passages through the bottom vs 4 K(k) / omega_n [s]",
+                         Tm, p.T, tol_T);
+    }
+
+    /* the period against the amplitude (eq. 5), with its first correction */
+    enum { NC = 200 };
+    mm_series *sc = mm_res_series(res, O_RATIO_CURVE, NC), *ss = mm_res_series(res, O_RATIO_SERIES, NC);
+    if (!sc || !ss)
+        return MM_ENOMEM;
+    for (int i = 0; i < NC; i++) {
+        double a0 = 3.1 * i / (NC - 1);          /* up to 3.1 rad: the ratio is 4.5 there */
+        sc->x[i] = ss->x[i] = a0;
+        sc->y[i] = 2 * mm_elliptic_Kc(cos(0.5 * a0)) / M_PI;
+        ss->y[i] = 1 + a0 * a0 / 16;
+    }
+    return animate(&p, t_end, n, sth->x, sth->y, res);
+}
+
+static const char *const references[] = {
+    "M. Abramowitz, I. A. Stegun, Handbook of Mathematical Functions, 1964, sections 16.4 and 17.6 (AGM)",
+    "B. C. Carlson, Numerical computation of real or complex elliptic integrals, Numer. Algorithms 10 (1995)",
+    "E. Hairer, S. P. Norsett, G. Wanner, Solving Ordinary Differential Equations I, Springer 1993 (DOP853)",
+    NULL,
+};
+
+const mm_exercise mm_ex_dyn_pendulum = {
+    .id = "dyn-pendulum",
+    .chapter = 4,
+    .section = "4.2",
+    .title = "The pendulum at large amplitude",
+    .summary = "Period against amplitude by the elliptic integral (AGM), the exact motion in Jacobi "
+               "functions, the separatrix and rotation over the top.",
+    .tags = "dynamics, pendulum, nonlinear, elliptic integral, separatrix",
+    .theory = "exercises/dyn/pendulum.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

@@ -1,0 +1,577 @@
+/* robot_2link.c — dyn-robot-2link: the joint torques that move a two-link
+ * arm along a planned trajectory, and the forward simulation that must
+ * reproduce it.
+ *
+ *     tau = M(q) q'' + c(q, q') + G(q)                                   (1)
+ *
+ * Two uniform slender rods in a vertical plane, driven at the shoulder and
+ * the elbow.  The joint angles follow a quintic in time from rest to rest
+ * (zero velocity and acceleration at both ends); eq. (1) gives the torques
+ * in closed form (inverse dynamics).  Feeding those torques to the
+ * equations of motion and integrating them (forward dynamics, DOP853) must
+ * bring the arm along the same path: the check, with its error.  The power
+ * the motors put in must equal the rise of the energy (a second check, by
+ * quadrature).  Singular configurations on the way (the arm stretched, det J
+ * = l1 l2 sin q2 = 0, the reach limit l1 + l2) are detected; a target that
+ * folds link 2 onto link 1 is unreachable (422).
+ * Reference: J. J. Craig, Introduction to Robotics, 3rd ed., ch. 6-7;
+ * M. W. Spong, S. Hutchinson, M. Vidyasagar, Robot Modeling and Control,
+ * sections 5.3 (quintic), 7.3 (two-link planar arm).
+ */
+#include <float.h>
+#include <math.h>
+
+#include "mm_dyn.h"
+#include "mm_exhelp.h"
+#include "mm_multibody.h"
+#include "mm_roots.h"
+#include "mm_scene.h"
+
+enum { P_L1, P_L2, P_M1, P_M2, P_G, P_TRAJ, P_Q10, P_Q20, P_Q11, P_Q21, P_T, P_POINTS };
+
+static const char *const trajectories[] = {"quintic", "cubic", NULL};
+
+static const mm_param params[] = {
+    [P_L1] = {"l1", "length of link 1", "m", MM_REAL, 1, 0.05, 10, .help = "shoulder to elbow"},
+    [P_L2] = {"l2", "length of link 2", "m", MM_REAL, 1, 0.05, 10, .help = "elbow to tip"},
+    [P_M1] = {"m1", "mass of link 1", "kg", MM_REAL, 1, 0.01, 100, .help = "a uniform slender rod"},
+    [P_M2] = {"m2", "mass of link 2", "kg", MM_REAL, 1, 0.01, 100, .help = "a uniform slender rod"},
+    [P_G] = {"g", "gravity", "m/s^2", MM_REAL, 9.81, 0, 100,
+             .help = "acceleration of gravity along -y; 0 for an arm moving in a horizontal plane"},
+    [P_TRAJ] = {"trajectory", "time law", "", MM_CHOICE, 0, 0, 0, .choices = trajectories,
+                .help = "quintic: zero velocity and acceleration at both ends; cubic: zero velocity only "
+                        "(the acceleration, and the torque, jump at the ends)"},
+    [P_Q10] = {"q1_0", "start angle of the shoulder", "rad", MM_REAL, 0, -2 * M_PI, 2 * M_PI,
+               .help = "link 1 from the +x axis, counter-clockwise"},
+    [P_Q20] = {"q2_0", "start angle of the elbow", "rad", MM_REAL, 0, -M_PI, M_PI,
+               .help = "link 2 relative to link 1; 0 is the stretched arm, +-pi folds link 2 onto link 1 "
+                       "(out of reach)"},
+    [P_Q11] = {"q1_1", "target angle of the shoulder", "rad", MM_REAL, M_PI / 2, -2 * M_PI, 2 * M_PI,
+               .help = "where q1 ends after T seconds"},
+    [P_Q21] = {"q2_1", "target angle of the elbow", "rad", MM_REAL, M_PI / 2, -M_PI, M_PI,
+               .help = "where q2 ends; the elbow's range is -pi < q2 < pi"},
+    [P_T] = {"T", "duration of the move", "s", MM_REAL, 2, 0.1, 20,
+             .help = "time from start to target; halving it quadruples the inertial torques"},
+    [P_POINTS] = {"points", "plot points", "", MM_INT, 201, 11, 2001,
+                  .help = "samples of the trajectory and the torques returned for the plots"},
+};
+
+enum {
+    O_TAU1_MAX, O_TAU2_MAX, O_T_TAU1, O_T_TAU2, O_WORK, O_DV, O_REACH, O_DETJ_MIN, O_T_SING,
+    O_Q1, O_Q2, O_TAU1, O_TAU2, O_TAU1_STATIC, O_TAU2_STATIC, O_DETJ, O_ANIM
+};
+
+static const mm_output outputs[] = {
+    [O_TAU1_MAX] = MM_SCALAR("tau1_max", "largest shoulder torque |tau1|", "N m", .flags = MM_ANSWER),
+    [O_TAU2_MAX] = MM_SCALAR("tau2_max", "largest elbow torque |tau2|", "N m", .flags = MM_ANSWER),
+    [O_T_TAU1] = MM_SCALAR("t_tau1_max", "time of the largest |tau1|", "s"),
+    [O_T_TAU2] = MM_SCALAR("t_tau2_max", "time of the largest |tau2|", "s"),
+    [O_WORK] = MM_SCALAR("work", "work done by the two motors", "J", .flags = MM_ANSWER),
+    [O_DV] = MM_SCALAR("delta_V", "rise of the potential energy", "J", .flags = MM_EXACT),
+    [O_REACH] = MM_SCALAR("reach_max", "farthest the tip gets from the shoulder", "m",
+                          .flags = MM_ANSWER | MM_EXACT),
+    [O_DETJ_MIN] = MM_SCALAR("det_J_min", "smallest |det J| = l1 l2 |sin q2| on the way (0: singular)", "m^2",
+                             .flags = MM_EXACT),
+    [O_T_SING] = MM_SCALAR("t_singular", "time the arm passes the stretched (singular) configuration", "s"),
+    [O_Q1] = MM_SERIES("q1", "shoulder angle (planned)", "rad", "t", "s", .figure = "angles"),
+    [O_Q2] = MM_SERIES("q2", "elbow angle (planned)", "rad", "t", "s", .figure = "angles"),
+    [O_TAU1] = MM_SERIES("tau1", "shoulder torque", "N m", "t", "s", .figure = "torques"),
+    [O_TAU2] = MM_SERIES("tau2", "elbow torque", "N m", "t", "s", .figure = "torques"),
+    [O_TAU1_STATIC] = MM_SERIES("tau1_static", "shoulder torque holding the arm still (gravity only)", "N m",
+                                "t", "s", .figure = "torques", .role = "reference"),
+    [O_TAU2_STATIC] = MM_SERIES("tau2_static", "elbow torque holding the arm still (gravity only)", "N m", "t",
+                                "s", .figure = "torques", .role = "reference"),
+    [O_DETJ] = MM_SERIES("det_J", "det J = l1 l2 sin q2 (0 at the singular configurations)", "m^2", "t", "s",
+                         .figure = "singularity"),
+    [O_ANIM] = MM_ANIMATION("the arm moving, with the planned path of its tip"),
+};
+
+typedef struct plan {
+    mm_robot2 arm;
+    int quintic;
+    double q0[2], dq[2], T;
+    double t_left;          /* forward simulation: when it left the path by 2 pi (or -1) */
+} plan;
+
+static plan plan_of(const mm_value *in);
+
+/* The time law s(tau), tau = t/T, and its derivatives (eq. 2 and 3). */
+static void law(int quintic, double tau, double *s, double *ds, double *dds)
+{
+    if (quintic) {
+        double u = 1 - tau;
+        *s = tau * tau * tau * (10 - 15 * tau + 6 * tau * tau);
+        *ds = 30 * tau * tau * u * u;
+        *dds = 60 * tau * u * (1 - 2 * tau);
+    } else {
+        *s = tau * tau * (3 - 2 * tau);
+        *ds = 6 * tau * (1 - tau);
+        *dds = 6 - 12 * tau;
+    }
+}
+
+/* The planned q, q', q'' at time t. */
+static void planned(const plan *p, double t, double *q, double *qd, double *qdd)
+{
+    double s, ds, dds;
+    law(p->quintic, fmin(fmax(t / p->T, 0), 1), &s, &ds, &dds);
+    for (int j = 0; j < 2; j++) {
+        q[j] = p->q0[j] + p->dq[j] * s;
+        qd[j] = p->dq[j] * ds / p->T;
+        qdd[j] = p->dq[j] * dds / (p->T * p->T);
+    }
+}
+
+static void torque_at(const plan *p, double t, double *tau)
+{
+    double q[2], qd[2], qdd[2];
+    planned(p, t, q, qd, qdd);
+    mm_robot2_inverse(&p->arm, q, qd, qdd, tau);          /* eq. (1) */
+}
+
+/* Forward dynamics driven by the planned torques: y = (q1, q2, q1', q2'). */
+static int forward_rhs(double t, const double *y, double *dy, void *ctx)
+{
+    plan *p = ctx;
+    double tau[2], q[2], qd[2], qdd[2];
+    planned(p, t, q, qd, qdd);
+    if (p->t_left < 0 && fmax(fabs(y[0] - q[0]), fabs(y[1] - q[1])) > 2 * M_PI) {
+        p->t_left = t;                                    /* it fell off the path: stop */
+        return MM_ENOCONV;
+    }
+    torque_at(p, t, tau);
+    dy[0] = y[2];
+    dy[1] = y[3];
+    mm_robot2_forward(&p->arm, y, y + 2, tau, dy + 2);   /* eq. (5) */
+    return 0;
+}
+
+static plan plan_of(const mm_value *in)
+{
+    plan p = {.arm = {.l1 = in[P_L1].x, .l2 = in[P_L2].x, .m1 = in[P_M1].x, .m2 = in[P_M2].x, .g = in[P_G].x},
+              .quintic = (int)in[P_TRAJ].x == 0, .T = in[P_T].x, .t_left = -1};
+    p.q0[0] = in[P_Q10].x;
+    p.q0[1] = in[P_Q20].x;
+    p.dq[0] = in[P_Q11].x - p.q0[0];
+    p.dq[1] = in[P_Q21].x - p.q0[1];
+    return p;
+}
+
+/* ---- how unstable the open-loop arm is along the path ---------------------------- */
+
+/* A cheap upper estimate of how unstable the open-loop arm is: the growth
+ * rate of small errors at time t from the gravity stiffness (delta q'' =
+ * -M^-1 dG/dq delta q: a positive eigenvalue mu gives e^(sqrt(mu) t), the
+ * arm balancing above its joints) plus the joint speeds (the Coriolis and
+ * centrifugal terms feed errors at about |q'|), integrated over the move by
+ * Simpson's rule.  Used to bound the work before anything is integrated. */
+static double growth_rate(const plan *p, double t)
+{
+    double q[2], qd[2], qdd[2], M[4];
+    planned(p, t, q, qd, qdd);
+    const mm_robot2 *s = &p->arm;
+    mm_robot2_mass(s, q[1], M);
+    double a = (0.5 * s->m1 + s->m2) * s->g * s->l1, b = 0.5 * s->m2 * s->g * s->l2;
+    double s1 = sin(q[0]), s12 = sin(q[0] + q[1]);
+    double K[4] = {a * s1 + b * s12, b * s12, b * s12, b * s12};   /* -dG/dq */
+    double det = M[0] * M[3] - M[1] * M[2];
+    double A[4] = {(M[3] * K[0] - M[1] * K[2]) / det, (M[3] * K[1] - M[1] * K[3]) / det,
+                   (M[0] * K[2] - M[2] * K[0]) / det, (M[0] * K[3] - M[2] * K[1]) / det};
+    double tr = A[0] + A[3], dt = A[0] * A[3] - A[1] * A[2], disc = tr * tr / 4 - dt;
+    double mu = tr / 2 + sqrt(fmax(disc, 0));
+    return sqrt(fmax(mu, 0)) + fabs(qd[0]) + fabs(qd[1]);
+}
+
+static double growth_exponent(const plan *p)
+{
+    enum { NS = 64 };
+    double sum = 0;
+    for (int i = 0; i <= NS; i++)
+        sum += (i == 0 || i == NS ? 1 : i % 2 ? 4 : 2) * growth_rate(p, p->T * i / NS);
+    return sum * p->T / (3 * NS);
+}
+
+#define MAX_EXPONENT 36      /* e^36 = 4e15: past it an open-loop simulation is noise */
+
+static int check(const mm_value *in, mm_error *err)
+{
+    plan p = plan_of(in);
+    double E = growth_exponent(&p);
+    if (E > MAX_EXPONENT)
+        return mm_error_set(err, MM_ERANGE, "T",
+                            "along this move the arm balances so far above its joints, for so long, that an "
+                            "open-loop simulation would amplify its errors by about e^%.0f: no digit of it could "
+                            "be trusted; shorten T (or lower g, or choose a path that hangs lower)", E);
+    return MM_OK;
+}
+
+/* The variational equations along the planned path: Phi' = J(t) Phi,
+ * Phi(0) = I, with J the Jacobian of the forward dynamics (eq. 5) at the
+ * planned state, by central differences.  y = Phi, 16 values row-major. */
+static int variational_rhs(double t, const double *y, double *dy, void *ctx)
+{
+    plan *p = ctx;
+    double q[2], qd[2], qdd[2], x[4], J[16];
+    planned(p, t, q, qd, qdd);
+    x[0] = q[0], x[1] = q[1], x[2] = qd[0], x[3] = qd[1];
+    for (int k = 0; k < 4; k++) {
+        double h = 1e-6 * (1 + fabs(x[k])), xp[4], xm[4], fp[4], fm[4];
+        for (int j = 0; j < 4; j++)
+            xp[j] = xm[j] = x[j];
+        xp[k] += h, xm[k] -= h;
+        forward_rhs(t, xp, fp, ctx);
+        forward_rhs(t, xm, fm, ctx);
+        for (int i = 0; i < 4; i++)
+            J[4 * i + k] = (fp[i] - fm[i]) / (2 * h);
+    }
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double v = 0;
+            for (int k = 0; k < 4; k++)
+                v += J[4 * i + k] * y[4 * k + j];
+            dy[4 * i + j] = v;
+        }
+    return 0;
+}
+
+/* How much the open-loop arm amplifies small errors over the move: the
+ * largest norm ||Phi(t)||_inf (max row sum) of the fundamental matrix on a
+ * grid of 33 times (an estimate: an error made at t0 > 0 grows by
+ * Phi(t) Phi(t0)^-1, which is smaller while errors only grow). */
+static int amplification(const plan *p, mm_result *res, double *A, mm_error *err)
+{
+    enum { NA = 33 };
+    double t[NA], y0[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    double *y = mm_res_alloc(res, NA * 16 * sizeof *y);
+    if (!y)
+        return MM_ENOMEM;
+    mm_linspace(0, p->T, NA, t);
+    plan pp = *p;
+    pp.t_left = 1;                                        /* no divergence test here */
+    mm_ode_problem prob = {.n = 16, .f = variational_rhs, .params = &pp, .t0 = 0, .t_end = p->T, .y0 = y0};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = MM_ODE_DOP853;
+    opt.rtol = 1e-6;
+    opt.atol = 1e-6;
+    opt.max_steps = 100000;
+    mm_ode_result r = {.t_out = t, .nout = NA, .y_out = y};
+    int rc = mm_ode_check(&prob, &opt, &r, err);
+    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(16) : NULL;
+    if (rc == MM_OK)
+        rc = mm_ode_solve(&prob, &opt, w, &r, err);
+    mm_ode_work_free(w);
+    if (rc != MM_OK)
+        return rc;
+    *A = 1;
+    for (int k = 0; k < NA; k++)
+        for (int i = 0; i < 4; i++) {
+            double row = 0;
+            for (int j = 0; j < 4; j++)
+                row += fabs(y[16 * k + 4 * i + j]);
+            *A = fmax(*A, row);
+        }
+    return MM_OK;
+}
+
+/* ---- the largest |tau_j| ------------------------------------------------------ */
+
+typedef struct peak_ctx {
+    const plan *p;
+    int j;
+} peak_ctx;
+
+static double abs_tau(const peak_ctx *c, double t)
+{
+    double tau[2];
+    torque_at(c->p, t, tau);
+    return fabs(tau[c->j]);
+}
+
+/* Sample on nt points, then golden-section search around the best sample.
+ * The maximum found is attained (a lower bound); the true one exceeds it by
+ * at most |tau''| w^2 / 8 over the final bracket w, estimated from second
+ * differences. */
+static double peak(const plan *p, int j, double *t_at, double *err)
+{
+    peak_ctx c = {p, j};
+    enum { NT = 2001 };
+    int best = 0;
+    double vbest = -1;
+    for (int i = 0; i < NT; i++) {
+        double v = abs_tau(&c, p->T * i / (NT - 1));
+        if (v > vbest)
+            vbest = v, best = i;
+    }
+    double a = p->T * (best > 0 ? best - 1 : 0) / (NT - 1), b = p->T * (best < NT - 1 ? best + 1 : NT - 1) / (NT - 1);
+    const double r = 0.6180339887498949;
+    double x1 = b - r * (b - a), x2 = a + r * (b - a), f1 = abs_tau(&c, x1), f2 = abs_tau(&c, x2);
+    for (int it = 0; it < 80 && b - a > 4 * DBL_EPSILON * fmax(fabs(a), fabs(b)); it++) {
+        if (f1 > f2) {
+            b = x2, x2 = x1, f2 = f1;
+            x1 = b - r * (b - a), f1 = abs_tau(&c, x1);
+        } else {
+            a = x1, x1 = x2, f1 = f2;
+            x2 = a + r * (b - a), f2 = abs_tau(&c, x2);
+        }
+    }
+    double t = f1 > f2 ? x1 : x2, v = fmax(f1, fmax(f2, vbest));
+    if (vbest >= fmax(f1, f2))
+        t = p->T * best / (NT - 1);                /* an end point or a kink of |tau| */
+    double h = 1e-3 * p->T, tm = fmax(t - h, 0), tp = fmin(t + h, p->T);
+    double curv = fabs(abs_tau(&c, tp) - 2 * abs_tau(&c, 0.5 * (tm + tp)) + abs_tau(&c, tm)) /
+                  (0.25 * (tp - tm) * (tp - tm));
+    double w = fmax(b - a, 4 * DBL_EPSILON * p->T);
+    *t_at = t;
+    *err = curv * w * w / 8 + 4 * DBL_EPSILON * v;
+    return v;
+}
+
+/* ---- the stretched arm on the way --------------------------------------------- */
+
+/* q2(t) - 0 for Brent */
+static int q2_of(double t, double *f, void *ctx)
+{
+    const plan *p = ctx;
+    double q[2], qd[2], qdd[2];
+    planned(p, t, q, qd, qdd);
+    *f = q[1];
+    return 0;
+}
+
+/* ---- the animation ------------------------------------------------------------- */
+
+static int animate(const plan *p, mm_result *res)
+{
+    double t_show;
+    int nf = mm_scene_frames(p->T, p->T / 5, &t_show);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    if (!a)
+        return MM_ENOMEM;
+    mm_dyn_frame_times(a, t_show);
+    enum { NP = 161 };
+    double reach = p->arm.l1 + p->arm.l2, q = mm_dyn_quantum(2 * reach);
+    mm_shape *base = mm_anim_shape(res, "base", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, NP);
+    mm_shape *arm = mm_anim_shape(res, "arm", MM_SHAPE_LINE, nf, 3);
+    mm_shape *elbow = mm_anim_shape(res, "elbow", MM_SHAPE_CIRCLE, nf, 1);
+    mm_shape *tip = mm_anim_shape(res, "tip", MM_SHAPE_CIRCLE, nf, 1);
+    if (!base || !path || !arm || !elbow || !tip)
+        return MM_ENOMEM;
+    base->style = "ground";
+    mm_scene_box(base, 0, 0, -0.04 * reach, 0.16 * reach, 0.08 * reach, 0);
+    path->style = "highlight";
+    for (int k = 0; k < NP; k++) {
+        double qq[2], qd[2], qdd[2], x[3], y[3];
+        planned(p, p->T * k / (NP - 1), qq, qd, qdd);
+        mm_robot2_points(&p->arm, qq, x, y);
+        path->x[k] = x[2], path->y[k] = y[2];
+    }
+    elbow->radius = tip->radius = 0.025 * reach;
+    for (int f = 0; f < nf; f++) {
+        double qq[2], qd[2], qdd[2], x[3], y[3];
+        planned(p, a->t[f], qq, qd, qdd);
+        mm_robot2_points(&p->arm, qq, x, y);
+        for (int k = 0; k < 3; k++)
+            arm->x[3 * f + k] = x[k], arm->y[3 * f + k] = y[k];
+        elbow->x[f] = x[1], elbow->y[f] = y[1];
+        tip->x[f] = x[2], tip->y[f] = y[2];
+    }
+    mm_dyn_round_shape(path, q);
+    mm_dyn_round_shape(arm, q);
+    mm_dyn_round_shape(elbow, q);
+    mm_dyn_round_shape(tip, q);
+    a->bounds[0] = a->bounds[1] = -1.1 * reach;
+    a->bounds[2] = a->bounds[3] = 1.1 * reach;
+    return MM_OK;
+}
+
+/* ---- solve ------------------------------------------------------------------------ */
+
+#define RTOL 1e-12
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    plan p = plan_of(in);
+    const mm_robot2 *s = &p.arm;
+    int n = (int)in[P_POINTS].x;
+    /* the elbow's range: at q2 = +-pi link 2 would lie on link 1 */
+    for (int k = 0; k < 2; k++) {
+        int pi = k == 0 ? P_Q20 : P_Q21;
+        if (fabs(in[pi].x) >= M_PI)
+            return mm_error_set(err, MM_ESINGULAR, params[pi].name,
+                                "%s = %.6g rad is out of reach: it folds link 2 onto link 1 (the links "
+                                "collide); the elbow's range is -pi < q2 < pi",
+                                params[pi].name, in[pi].x);
+    }
+
+    /* the path, the torques (eq. 1) and the gravity-only torques */
+    mm_series *sq1 = mm_res_series(res, O_Q1, n), *sq2 = mm_res_series(res, O_Q2, n);
+    mm_series *st1 = mm_res_series(res, O_TAU1, n), *st2 = mm_res_series(res, O_TAU2, n);
+    mm_series *ss1 = mm_res_series(res, O_TAU1_STATIC, n), *ss2 = mm_res_series(res, O_TAU2_STATIC, n);
+    mm_series *sdj = mm_res_series(res, O_DETJ, n);
+    if (!sq1 || !sq2 || !st1 || !st2 || !ss1 || !ss2 || !sdj)
+        return MM_ENOMEM;
+    mm_linspace(0, p.T, n, sq1->x);
+    for (int i = 0; i < n; i++) {
+        double t = sq1->x[i], q[2], qd[2], qdd[2], tau[2], zero[2] = {0, 0}, tst[2];
+        planned(&p, t, q, qd, qdd);
+        mm_robot2_inverse(s, q, qd, qdd, tau);
+        mm_robot2_inverse(s, q, zero, zero, tst);
+        sq2->x[i] = st1->x[i] = st2->x[i] = ss1->x[i] = ss2->x[i] = sdj->x[i] = t;
+        sq1->y[i] = q[0], sq2->y[i] = q[1];
+        st1->y[i] = tau[0], st2->y[i] = tau[1];
+        ss1->y[i] = tst[0], ss2->y[i] = tst[1];
+        sdj->y[i] = s->l1 * s->l2 * sin(q[1]);
+    }
+
+    double t1, t2, e1, e2, T1 = peak(&p, 0, &t1, &e1), T2 = peak(&p, 1, &t2, &e2);
+    mm_res_scalar_err(res, O_TAU1_MAX, T1, e1, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_TAU2_MAX, T2, e2, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_T_TAU1, t1, 1e-6 * p.T, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_T_TAU2, t2, 1e-6 * p.T, MM_ERR_ESTIMATE);
+
+    /* singular configurations and the reach (eq. 4): q2 moves monotonically
+     * from q2_0 to q2_1, so |sin q2| is smallest at an end or where q2 = 0 */
+    double qa = p.q0[1], qb = p.q0[1] + p.dq[1];
+    int through0 = (qa <= 0 && qb >= 0) || (qa >= 0 && qb <= 0);
+    double smin = through0 ? 0 : fmin(fabs(sin(qa)), fabs(sin(qb)));
+    double cmax = through0 ? 1 : fmax(cos(qa), cos(qb));
+    mm_res_scalar(res, O_DETJ_MIN, s->l1 * s->l2 * smin);
+    mm_res_scalar(res, O_REACH, sqrt(s->l1 * s->l1 + s->l2 * s->l2 + 2 * s->l1 * s->l2 * cmax));
+    if (through0) {
+        double ts = 0, fx, width;
+        if (qa != 0 && qb != 0) {
+            int iter = 0;
+            int rc = mm_roots_brent(q2_of, &p, 0, p.T, qa, qb, 1e-14 * p.T, 200, &ts, &fx, &width, &iter, NULL,
+                                    err);
+            if (rc != MM_OK)
+                return rc;
+            /* an exact zero of the computed q2(t) ends Brent early: then the
+             * root is off by the rounding of q2 over its speed there */
+            double q[2], qd[2], qdd[2];
+            planned(&p, ts, q, qd, qdd);
+            double e = fx == 0 ? 4 * DBL_EPSILON * (fabs(qa) + fabs(qb)) / fabs(qd[1]) : width;
+            mm_res_scalar_err(res, O_T_SING, ts, e + 1e-14 * p.T, MM_ERR_BOUND);
+        } else {
+            ts = qa == 0 ? 0 : p.T;
+            mm_res_scalar(res, O_T_SING, ts)->exact = 1;
+        }
+        mm_res_warn(res, "the arm is stretched (q2 = 0) at t = %.4g s: a singular configuration, det J = 0, "
+                         "with the tip at the reach limit l1 + l2 = %.4g m; there the tip cannot move along the "
+                         "arm, and joint speeds for a tip speed would be unbounded", ts, s->l1 + s->l2);
+    }
+    double fold = M_PI - fmax(fabs(qa), fabs(qb));       /* distance from the folded arm */
+    if (fold < 0.05)
+        mm_res_warn(res, "the arm comes within %.3g rad of folding (q2 = +-pi, det J = 0): the other singular "
+                         "configuration, with the tip at the inner edge of the reach |l1 - l2| = %.4g m",
+                    fold, fabs(s->l1 - s->l2));
+    else if (!through0 && smin < 0.05)
+        mm_res_warn(res, "the arm comes within %.3g rad of the stretched configuration (det J = %.3g m^2): joint "
+                         "speeds for a given tip speed grow like 1/sin q2 there",
+                    asin(smin), s->l1 * s->l2 * smin);
+    if (!p.quintic)
+        mm_res_warn(res, "the cubic time law starts and stops with a jump in acceleration: the torques jump at "
+                         "t = 0 and t = T (the quintic's do not)");
+
+    /* the work of the motors, int tau . q' dt, by 5-point Gauss-Legendre on
+     * 64 panels (the integrand is a polynomial in t times sines and cosines:
+     * far below round-off), against the rise of the energy (eq. 6) */
+    static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831,
+                                 0.9061798459386640};
+    static const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                 0.4786286704993665, 0.2369268850561891};
+    double work = 0, wabs = 0;
+    for (int k = 0; k < 64; k++) {
+        double a = p.T * k / 64, b = p.T * (k + 1) / 64;
+        for (int i = 0; i < 5; i++) {
+            double t = 0.5 * (a + b) + 0.5 * (b - a) * gx[i], q[2], qd[2], qdd[2], tau[2];
+            planned(&p, t, q, qd, qdd);
+            mm_robot2_inverse(s, q, qd, qdd, tau);
+            double pw = tau[0] * qd[0] + tau[1] * qd[1];
+            work += 0.5 * (b - a) * gw[i] * pw;
+            wabs += 0.5 * (b - a) * gw[i] * (fabs(tau[0] * qd[0]) + fabs(tau[1] * qd[1]));
+        }
+    }
+    double qe[2] = {p.q0[0] + p.dq[0], p.q0[1] + p.dq[1]}, z[2] = {0, 0}, Ta, Va, Tb, Vb;
+    mm_robot2_energy(s, p.q0, z, &Ta, &Va);
+    mm_robot2_energy(s, qe, z, &Tb, &Vb);
+    double gscale = s->g * (0.5 * s->m1 + s->m2) * s->l1 + s->g * s->m2 * s->l2;
+    mm_res_scalar(res, O_DV, Vb - Va);
+    mm_res_scalar_err(res, O_WORK, work, 64 * DBL_EPSILON * (wabs + gscale), MM_ERR_BOUND);
+    mm_res_check_abs(res, "work of the motors (Gauss-Legendre quadrature) vs the rise of the energy [J]", work,
+                     Vb - Va, 64 * DBL_EPSILON * (wabs + gscale));
+
+    /* the forward simulation, driven by the planned torques (eq. 5) */
+    double *y = mm_res_alloc(res, (size_t)n * 4 * sizeof *y);
+    if (!y)
+        return MM_ENOMEM;
+    double y0[4] = {p.q0[0], p.q0[1], 0, 0};
+    mm_ode_problem prob = {.n = 4, .f = forward_rhs, .params = &p, .t0 = 0, .t_end = p.T, .y0 = y0};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = MM_ODE_DOP853;
+    opt.rtol = RTOL;
+    opt.atol = RTOL;
+    opt.max_steps = 200000;
+    mm_ode_result r = {.t_out = sq1->x, .nout = (size_t)n, .y_out = y};
+    int rc = mm_ode_check(&prob, &opt, &r, err);
+    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(4) : NULL;
+    if (rc == MM_OK)
+        rc = mm_ode_solve(&prob, &opt, w, &r, err);
+    mm_ode_work_free(w);
+    if (rc != MM_OK && p.t_left < 0)
+        return rc;
+    int done = (int)r.nout_done;
+    double worst = p.t_left >= 0 ? 2 * M_PI : 0, big = 0;
+    for (int i = 0; i < done; i++) {
+        worst = fmax(worst, fmax(fabs(y[4 * i] - sq1->y[i]), fabs(y[4 * i + 1] - sq2->y[i])));
+        big = fmax(big, fmax(fabs(sq1->y[i]), fabs(sq2->y[i])));
+    }
+    mm_res_method(res, "inverse dynamics in closed form; forward simulation by dop853", 0);
+    mm_res_method_stat(res, "rtol", RTOL);
+    mm_res_method_stat(res, "steps", (double)r.n_accepted);
+    mm_res_method_stat(res, "evaluations", (double)r.n_eval);
+    double A;
+    rc = amplification(&p, res, &A, err);
+    if (rc != MM_OK)
+        return rc;
+    /* each step errs by about RTOL times the state's size; the arm
+     * amplifies what it is given by up to A (eq. 7) */
+    double tol = 4 * RTOL * (1 + big) * A;
+    mm_res_check_abs(res, "forward simulation with the planned torques vs the planned path: worst |dq| [rad]",
+                     worst, 0, tol);
+    if (p.t_left >= 0)
+        mm_res_warn(res, "the simulated arm fell off the planned path (by a whole turn) at t = %.4g s: driven open loop, "
+                         "it amplifies small errors by about %.2g along this move; a real arm needs feedback",
+                    p.t_left, A);
+    else if (tol > 1e-6)
+        mm_res_warn(res, "driven open loop the arm amplifies small errors by about %.2g along this move: the "
+                         "simulation can follow the plan only to about %.2g rad", A, tol);
+    return animate(&p, res);
+}
+
+static const char *const references[] = {
+    "J. J. Craig, Introduction to Robotics: Mechanics and Control, 3rd ed., Pearson 2005, ch. 6-7",
+    "M. W. Spong, S. Hutchinson, M. Vidyasagar, Robot Modeling and Control, Wiley 2006, sections 5.3 and 7.3",
+    "E. Hairer, S. P. Norsett, G. Wanner, Solving Ordinary Differential Equations I, Springer 1993 (DOP853)",
+    NULL,
+};
+
+const mm_exercise mm_ex_dyn_robot_2link = {
+    .id = "dyn-robot-2link",
+    .chapter = 4,
+    .section = "4.4.2",
+    .title = "Dynamics of a two-link robot arm",
+    .summary = "Joint torques of a planned quintic move (inverse dynamics), checked by a forward simulation "
+               "driven by them; singular configurations and the reach.",
+    .tags = "dynamics, robot, inverse dynamics, trajectory, multibody",
+    .theory = "exercises/dyn/robot_2link.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

@@ -1,0 +1,199 @@
+/* mm_sta.c — free-body diagrams for chapter 3 (see mm_sta.h). */
+#include "mm_sta.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+
+int mm_sta_fbd(mm_result *res)
+{
+    mm_anim *a = mm_res_animation(res, 1, "t", "s");
+    if (!a)
+        return MM_ENOMEM;
+    a->t[0] = 0;
+    return MM_OK;
+}
+
+double mm_sta_scale(double fmax, double size, double frac)
+{
+    return fmax > 0 && size > 0 ? frac * size / fmax : 0;
+}
+
+static mm_shape *shape(mm_result *res, const char *name, mm_shape_kind kind, int npts)
+{
+    return mm_anim_shape(res, name, kind, 1, npts);
+}
+
+int mm_sta_force(mm_result *res, const char *name, double px, double py, double Fx, double Fy,
+                 double scale, int head)
+{
+    mm_shape *s = shape(res, name, MM_SHAPE_ARROW, 2);
+    double *v = s ? mm_shape_values(res, s) : NULL;
+    if (!v)
+        return MM_ENOMEM;
+    s->unit = "N";
+    s->scale = scale;
+    v[0] = hypot(Fx, Fy);
+    double dx = scale * Fx, dy = scale * Fy;
+    s->x[0] = head ? px - dx : px, s->y[0] = head ? py - dy : py;
+    s->x[1] = head ? px : px + dx, s->y[1] = head ? py : py + dy;
+    return MM_OK;
+}
+
+int mm_sta_line(mm_result *res, const char *name, double x0, double y0, double x1, double y1,
+                const char *style, int has_value, double value)
+{
+    mm_shape *s = shape(res, name, MM_SHAPE_LINE, 2);
+    if (!s)
+        return MM_ENOMEM;
+    s->x[0] = x0, s->y[0] = y0, s->x[1] = x1, s->y[1] = y1;
+    s->style = style;
+    if (has_value) {
+        double *v = mm_shape_values(res, s);
+        if (!v)
+            return MM_ENOMEM;
+        v[0] = value;
+    }
+    return MM_OK;
+}
+
+int mm_sta_member(mm_result *res, const char *name, double x0, double y0, double x1, double y1, double F,
+                  double tol)
+{
+    const char *style = F > tol ? "tension" : F < -tol ? "compression" : NULL;
+    return mm_sta_line(res, name, x0, y0, x1, y1, style, 1, F);
+}
+
+int mm_sta_polygon(mm_result *res, const char *name, int n, const double *xy, const char *style)
+{
+    mm_shape *s = shape(res, name, MM_SHAPE_POLYGON, n);
+    if (!s)
+        return MM_ENOMEM;
+    for (int k = 0; k < n; k++)
+        s->x[k] = xy[2 * k], s->y[k] = xy[2 * k + 1];
+    s->style = style;
+    return MM_OK;
+}
+
+int mm_sta_path(mm_result *res, const char *name, int n, const double *xy, const char *style)
+{
+    mm_shape *s = shape(res, name, MM_SHAPE_LINE, n);
+    if (!s)
+        return MM_ENOMEM;
+    for (int k = 0; k < n; k++)
+        s->x[k] = xy[2 * k], s->y[k] = xy[2 * k + 1];
+    s->style = style;
+    return MM_OK;
+}
+
+int mm_sta_circle(mm_result *res, const char *name, double x, double y, double r, const char *style)
+{
+    mm_shape *s = shape(res, name, MM_SHAPE_CIRCLE, 1);
+    if (!s)
+        return MM_ENOMEM;
+    s->x[0] = x, s->y[0] = y;
+    s->radius = r;
+    s->style = style;
+    return MM_OK;
+}
+
+int mm_sta_label(mm_result *res, double x, double y, const char *fmt, ...)
+{
+    char buf[160];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    mm_shape *s = shape(res, "label", MM_SHAPE_LABEL, 1);
+    char *text = mm_res_strdup(res, buf);
+    if (!s || !text)
+        return MM_ENOMEM;
+    s->x[0] = x, s->y[0] = y;
+    s->text = text;
+    return MM_OK;
+}
+
+/* (u, v) in the support's frame (v up from the ground) to the drawing */
+static void turn(double x, double y, double angle, double u, double v, double *px, double *py)
+{
+    double c = cos(angle), s = sin(angle);
+    *px = x + c * u - s * v;
+    *py = y + s * u + c * v;
+}
+
+static int ground(mm_result *res, const char *name, double x, double y, double size, double angle, double depth)
+{
+    double xy[4];
+    turn(x, y, angle, -0.8 * size, -depth, &xy[0], &xy[1]);
+    turn(x, y, angle, 0.8 * size, -depth, &xy[2], &xy[3]);
+    return mm_sta_path(res, name, 2, xy, "ground");
+}
+
+int mm_sta_pin(mm_result *res, const char *name, double x, double y, double size, double angle)
+{
+    double tri[6];
+    turn(x, y, angle, 0, 0, &tri[0], &tri[1]);
+    turn(x, y, angle, -0.5 * size, -0.8 * size, &tri[2], &tri[3]);
+    turn(x, y, angle, 0.5 * size, -0.8 * size, &tri[4], &tri[5]);
+    int rc = mm_sta_polygon(res, name, 3, tri, "ground");
+    return rc ? rc : ground(res, "ground", x, y, size, angle, 0.8 * size);
+}
+
+int mm_sta_roller(mm_result *res, const char *name, double x, double y, double size, double angle)
+{
+    double tri[6], c[2];
+    turn(x, y, angle, 0, 0, &tri[0], &tri[1]);
+    turn(x, y, angle, -0.5 * size, -0.6 * size, &tri[2], &tri[3]);
+    turn(x, y, angle, 0.5 * size, -0.6 * size, &tri[4], &tri[5]);
+    int rc = mm_sta_polygon(res, name, 3, tri, "ground");
+    for (int k = -1; k <= 1 && !rc; k += 2) {
+        turn(x, y, angle, 0.25 * k * size, -0.7 * size, &c[0], &c[1]);
+        rc = mm_sta_circle(res, "wheel", c[0], c[1], 0.1 * size, "ground");
+    }
+    return rc ? rc : ground(res, "ground", x, y, size, angle, 0.8 * size);
+}
+
+int mm_sta_clamp(mm_result *res, const char *name, double x, double y, double size)
+{
+    int rc = mm_sta_line(res, name, x, y - size, x, y + size, "ground", 0, 0);
+    for (int k = 0; k < 5 && !rc; k++) {
+        double yk = y - size + 0.5 * size * k;
+        rc = mm_sta_line(res, "hatch", x, yk, x - 0.35 * size, yk + 0.35 * size, "ground", 0, 0);
+    }
+    return rc;
+}
+
+int mm_sta_couple(mm_result *res, const char *name, double x, double y, double r, double C)
+{
+    enum { N = 19 };
+    double xy[2 * N], dir = C >= 0 ? 1 : -1;
+    for (int k = 0; k < N; k++) {
+        double t = -0.75 * M_PI + dir * 1.5 * M_PI * k / (N - 1);
+        xy[2 * k] = x + r * cos(t), xy[2 * k + 1] = y + r * sin(t);
+    }
+    mm_shape *s = shape(res, name, MM_SHAPE_LINE, N);
+    double *v = s ? mm_shape_values(res, s) : NULL;
+    if (!v)
+        return MM_ENOMEM;
+    for (int k = 0; k < N; k++)
+        s->x[k] = xy[2 * k], s->y[k] = xy[2 * k + 1];
+    v[0] = C;
+    /* the head: a short arrow along the arc's last step */
+    mm_shape *h = shape(res, "couple head", MM_SHAPE_ARROW, 2);
+    double *hv = h ? mm_shape_values(res, h) : NULL;
+    if (!hv)
+        return MM_ENOMEM;
+    h->unit = "N m";
+    h->scale = 0;
+    hv[0] = fabs(C);
+    h->x[0] = xy[2 * (N - 2)], h->y[0] = xy[2 * (N - 2) + 1];
+    h->x[1] = xy[2 * (N - 1)], h->y[1] = xy[2 * (N - 1) + 1];
+    return MM_OK;
+}
+
+void mm_sta_project(double x, double y, double z, double *u, double *v)
+{
+    /* cabinet projection: x drawn at 210 degrees, half length */
+    *u = y - 0.5 * x * cos(M_PI / 6);
+    *v = z - 0.5 * x * sin(M_PI / 6);
+}

@@ -1,0 +1,78 @@
+/* mm_sta.h — drawing free-body diagrams for the statics exercises (chapter
+ * 3): one-frame animations (mm_exercise.h) of bodies, members, supports,
+ * forces and couples, with the conventions every statics answer shares:
+ *
+ *   - forces are arrows (kind "arrow") in metres per newton `scale`, with
+ *     the force's magnitude as `value` and "N" as unit; an applied load
+ *     points AT its point of application (the head touches the body), a
+ *     reaction pushes on the body from outside the same way;
+ *   - members carry their axial force as `value`, styled "tension" or
+ *     "compression" (a zero-force member gets no style);
+ *   - supports and ground are styled "ground";
+ *   - couples are an arc (kind "line", value in N m) with an arrow head.
+ *
+ * Every function adds shapes to res's animation, which the caller started
+ * with mm_sta_fbd(); each returns MM_OK or MM_ENOMEM (sticky in res).
+ * Texts are copied into the arena.
+ */
+#ifndef MM_STA_H
+#define MM_STA_H
+
+#include "mm_exercise.h"
+
+/* Start a one-frame animation (the free-body diagram); t = 0. */
+int mm_sta_fbd(mm_result *res);
+
+/* Metres of arrow per newton so that the largest force, fmax [N], is drawn
+ * frac of the drawing's size [m] long (fmax <= 0: 0). */
+double mm_sta_scale(double fmax, double size, double frac);
+
+/* A force (Fx, Fy) [N] at (px, py) [m], drawn at `scale` m/N with its head
+ * on the point (head = 1) or its tail on it (head = 0).  value is |F|. */
+int mm_sta_force(mm_result *res, const char *name, double px, double py, double Fx, double Fy,
+                 double scale, int head);
+
+/* A straight member or link from (x0, y0) to (x1, y1); style NULL,
+ * "tension", "compression", "ground" or "highlight"; value, if has_value,
+ * the axial force [N]. */
+int mm_sta_line(mm_result *res, const char *name, double x0, double y0, double x1, double y1,
+                const char *style, int has_value, double value);
+
+/* A member coloured by its axial force F: "tension" for F > tol, else
+ * "compression" for F < -tol, else no style. */
+int mm_sta_member(mm_result *res, const char *name, double x0, double y0, double x1, double y1, double F,
+                  double tol);
+
+/* A closed body of n vertices xy[2n]. */
+int mm_sta_polygon(mm_result *res, const char *name, int n, const double *xy, const char *style);
+
+/* A polyline of n points xy[2n]. */
+int mm_sta_path(mm_result *res, const char *name, int n, const double *xy, const char *style);
+
+/* A circle of radius r at (x, y). */
+int mm_sta_circle(mm_result *res, const char *name, double x, double y, double r, const char *style);
+
+/* A text at (x, y). */
+int mm_sta_label(mm_result *res, double x, double y, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+/* Supports, `size` [m] across, under the point (x, y) with the ground
+ * turned by angle [rad] (0: ground below, the support pushes up):
+ * a pin (a triangle on a ground line), a roller (a triangle on two wheels
+ * on a ground line), a clamp (a wall with hatching) facing +x at (x, y). */
+int mm_sta_pin(mm_result *res, const char *name, double x, double y, double size, double angle);
+int mm_sta_roller(mm_result *res, const char *name, double x, double y, double size, double angle);
+int mm_sta_clamp(mm_result *res, const char *name, double x, double y, double size);
+
+/* A couple C [N m] (counter-clockwise positive) drawn round (x, y) with
+ * radius r: a 3/4 arc whose arrow head shows the sense. */
+int mm_sta_couple(mm_result *res, const char *name, double x, double y, double r, double C);
+
+/* Oblique projection of a point in space for 3-D diagrams: x toward the
+ * viewer and left, y right, z up, into the drawing's (u, v). */
+void mm_sta_project(double x, double y, double z, double *u, double *v);
+
+#endif

@@ -1,0 +1,266 @@
+/* force_system.c — sta-force-system: any system of forces and couples in
+ * space reduced to a force and a couple at a point, then to its simplest
+ * equivalent: nothing (equilibrium), a couple, a single force, or a
+ * wrench (a force and a couple along it).
+ *
+ *     R = sum F_i,   M_O = sum (r_i - O) x F_i + sum C_j               (1)
+ *     M_B = M_O + (O - B) x R                                          (2)
+ *     p = R . M_O / |R|^2,   P = O + R x M_O / |R|^2                    (4)
+ *
+ * Goal: equivalence of force systems, the moment transfer (2), the
+ * invariant R . M, and the central axis.
+ * Checks: the moment at P summed directly from the forces is parallel to R
+ * and equals p R; R . M at P equals R . M at O; the transfer (2) to the
+ * first force's point against the direct sum there.
+ * Reference: Hibbeler, Statics, 14th ed., sections 4.7-4.8; Meriam &
+ * Kraige, Statics, article 2/9.
+ */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "mm_exhelp.h"
+#include "mm_sta.h"
+
+#define MAXF 20
+
+enum { P_FORCES, P_COUPLES, P_O };
+
+static const mm_param params[] = {
+    [P_FORCES] = {"forces", "forces (x, y, z, Fx, Fy, Fz per row)", "", MM_MATRIX, 0, -1e9, 1e9,
+                  "0,0,0,0,0,100;2,0,0,0,50,0;0,1,0,30,0,0", NULL, MAXF, 6,
+                  .help = "one row per force: its point (m) and components (N); at most 20"},
+    [P_COUPLES] = {"couples", "couples (Cx, Cy, Cz per row)", "N m", MM_MATRIX, 0, -1e9, 1e9, "", NULL, MAXF, 3,
+                   .help = "free couples (their point does not matter); none by default"},
+    [P_O] = {"O", "reduction point (x, y, z)", "m", MM_VECTOR, 0, -1e4, 1e4, "0,0,0", NULL, 0, 3,
+             .help = "the point the system is reduced to"},
+};
+
+enum { O_RX, O_RY, O_RZ, O_R, O_MX, O_MY, O_MZ, O_PITCH, O_PX, O_PY, O_PZ, O_MW, O_KIND, O_MLINE, O_ANIM };
+
+static const mm_output outputs[] = {
+    [O_RX] = MM_SCALAR("Rx", "resultant force, x", "N", .flags = MM_ANSWER | MM_EXACT),
+    [O_RY] = MM_SCALAR("Ry", "resultant force, y", "N", .flags = MM_ANSWER | MM_EXACT),
+    [O_RZ] = MM_SCALAR("Rz", "resultant force, z", "N", .flags = MM_ANSWER | MM_EXACT),
+    [O_R] = MM_SCALAR("R", "magnitude of the resultant", "N", .flags = MM_EXACT),
+    [O_MX] = MM_SCALAR("MOx", "resultant moment about O, x", "N m", .flags = MM_ANSWER | MM_EXACT),
+    [O_MY] = MM_SCALAR("MOy", "resultant moment about O, y", "N m", .flags = MM_ANSWER | MM_EXACT),
+    [O_MZ] = MM_SCALAR("MOz", "resultant moment about O, z", "N m", .flags = MM_ANSWER | MM_EXACT),
+    [O_PITCH] = MM_SCALAR("pitch", "pitch of the wrench R . M / |R|^2", "m", .flags = MM_ANSWER | MM_EXACT),
+    [O_PX] = MM_SCALAR("Px", "central axis: point nearest O, x", "m", .flags = MM_EXACT),
+    [O_PY] = MM_SCALAR("Py", "central axis: point nearest O, y", "m", .flags = MM_EXACT),
+    [O_PZ] = MM_SCALAR("Pz", "central axis: point nearest O, z", "m", .flags = MM_EXACT),
+    [O_MW] = MM_SCALAR("M_wrench", "couple of the wrench along R (pitch times |R|)", "N m", .flags = MM_EXACT),
+    [O_KIND] = MM_SCALAR("kind", "simplest equivalent (0 equilibrium, 1 couple, 2 single force, 3 wrench)", "",
+                         .flags = MM_ANSWER | MM_EXACT),
+    [O_MLINE] = MM_SERIES("M_along", "|M_B| for B on the line from O through P", "N m", "t (B = O + t (P - O))", ""),
+    [O_ANIM] = MM_ANIMATION("the forces, and the wrench on its central axis"),
+};
+
+static void cross(const double *a, const double *b, double *c)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static double norm(const double *a)
+{
+    return sqrt(dot(a, a));
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    if (in[P_FORCES].cols != 6)
+        return mm_error_set(err, MM_ERANGE, "forces", "each force is one row x,y,z,Fx,Fy,Fz; got %d numbers",
+                            in[P_FORCES].cols);
+    if (in[P_COUPLES].rows && in[P_COUPLES].cols != 3)
+        return mm_error_set(err, MM_ERANGE, "couples", "each couple is one row Cx,Cy,Cz; got %d numbers",
+                            in[P_COUPLES].cols);
+    if (in[P_O].cols != 3)
+        return mm_error_set(err, MM_ERANGE, "O", "O needs 3 coordinates; got %d", in[P_O].cols);
+    return MM_OK;
+}
+
+/* eq. (1) about the point B: the moment and the sum of |terms| */
+static void moment_about(const mm_value *in, const double *B, double *M, double *scale)
+{
+    const mm_value *Fs = &in[P_FORCES], *Cs = &in[P_COUPLES];
+    M[0] = M[1] = M[2] = 0;
+    *scale = 0;
+    for (int i = 0; i < Fs->rows; i++) {
+        const double *f = Fs->data + 6 * i;
+        double w[3] = {f[0] - B[0], f[1] - B[1], f[2] - B[2]}, m[3];
+        cross(w, f + 3, m);
+        for (int k = 0; k < 3; k++)
+            M[k] += m[k];
+        *scale += norm(w) * norm(f + 3);
+    }
+    for (int j = 0; j < Cs->rows; j++) {
+        for (int k = 0; k < 3; k++)
+            M[k] += Cs->data[3 * j + k];
+        *scale += norm(Cs->data + 3 * j);
+    }
+}
+
+static int arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale,
+                  const char *unit, const char *style)
+{
+    double u0, v0, u1, v1;
+    mm_sta_project(p[0], p[1], p[2], &u0, &v0);
+    mm_sta_project(p[0] + scale * v[0], p[1] + scale * v[1], p[2] + scale * v[2], &u1, &v1);
+    mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_ARROW, 1, 2);
+    double *val = s ? mm_shape_values(res, s) : NULL;
+    if (!val)
+        return MM_ENOMEM;
+    s->x[0] = u0, s->y[0] = v0, s->x[1] = u1, s->y[1] = v1;
+    s->unit = unit, s->scale = scale, s->style = style;
+    val[0] = norm(v);
+    return MM_OK;
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    (void)err;
+    const mm_value *Fs = &in[P_FORCES];
+    const double *O = in[P_O].data;
+    double R[3] = {0, 0, 0}, M[3], Ms, Rs = 0, size = 0;
+    for (int i = 0; i < Fs->rows; i++) {
+        for (int k = 0; k < 3; k++)
+            R[k] += Fs->data[6 * i + 3 + k];
+        Rs += norm(Fs->data + 6 * i + 3);
+        double w[3] = {Fs->data[6 * i] - O[0], Fs->data[6 * i + 1] - O[1], Fs->data[6 * i + 2] - O[2]};
+        size = fmax(size, norm(w));
+    }
+    moment_about(in, O, M, &Ms);
+    double Rn = norm(R), Mn = norm(M);
+    mm_res_scalar(res, O_RX, R[0]);
+    mm_res_scalar(res, O_RY, R[1]);
+    mm_res_scalar(res, O_RZ, R[2]);
+    mm_res_scalar(res, O_R, Rn);
+    mm_res_scalar(res, O_MX, M[0]);
+    mm_res_scalar(res, O_MY, M[1]);
+    mm_res_scalar(res, O_MZ, M[2]);
+
+    /* the simplest equivalent: R and M vanish to rounding, or R . M does */
+    int kind;
+    double tolR = 64 * DBL_EPSILON * Rs, tolM = 64 * DBL_EPSILON * Ms;
+    double P[3] = {O[0], O[1], O[2]}, pitch = 0;
+    if (Rn <= tolR)
+        kind = Mn <= tolM ? 0 : 1;
+    else {
+        double RxM[3];
+        cross(R, M, RxM);
+        for (int k = 0; k < 3; k++)
+            P[k] = O[k] + RxM[k] / (Rn * Rn);              /* eq. (4) */
+        pitch = dot(R, M) / (Rn * Rn);
+        kind = fabs(dot(R, M)) <= 64 * DBL_EPSILON * Rs * Ms ? 2 : 3;
+        if (kind == 2)
+            pitch = 0;
+    }
+    static const char *const kinds[] = {"in equilibrium", "a couple", "a single force", "a wrench"};
+    mm_res_scalar_text(res, O_KIND, kind, kinds[kind]);
+    if (Rn > tolR) {
+        mm_res_scalar(res, O_PITCH, pitch);
+        mm_res_scalar(res, O_PX, P[0]);
+        mm_res_scalar(res, O_PY, P[1]);
+        mm_res_scalar(res, O_PZ, P[2]);
+        mm_res_scalar(res, O_MW, pitch * Rn);
+        /* check 1: summed directly at P, the moment lies along R: |M_P x R| */
+        double MP[3], MPs, c[3];
+        moment_about(in, P, MP, &MPs);
+        cross(MP, R, c);
+        mm_check_residual(res, "moment summed at the central axis point P, across R: |M_P x R| / |R| [N m]",
+                          norm(c) / Rn, MPs + Ms, 64);
+        /* check 2: the invariant R . M */
+        mm_check_residual(res, "R . M at P vs at O [N^2 m]", dot(R, MP) - dot(R, M), Rs * (MPs + Ms), 64);
+        /* check 3: it is the wrench's couple p R */
+        double d[3];
+        for (int k = 0; k < 3; k++)
+            d[k] = MP[k] - pitch * R[k];
+        mm_check_residual(res, "M_P - p R [N m]", norm(d), MPs + Ms, 64);
+    } else {
+        mm_res_warn(res, "R = 0: the system is %s; its moment is the same about every point", kinds[kind]);
+    }
+    /* check 4: the transfer theorem (2) to the first force's point */
+    const double *B = Fs->data;
+    double MB[3], MBs, OB[3] = {O[0] - B[0], O[1] - B[1], O[2] - B[2]}, t[3];
+    moment_about(in, B, MB, &MBs);
+    cross(OB, R, t);
+    for (int k = 0; k < 3; k++)
+        t[k] += M[k] - MB[k];
+    mm_check_residual(res, "M_B = M_O + (O - B) x R at B, the first force's point [N m]", norm(t),
+                      Ms + MBs + norm(OB) * Rs, 64);
+    /* the couple's size at points B from O toward P: smallest on the central axis */
+    mm_series *ml = mm_res_series(res, O_MLINE, 61);
+    if (!ml)
+        return MM_ENOMEM;
+    double dir[3] = {P[0] - O[0], P[1] - O[1], P[2] - O[2]};
+    if (norm(dir) == 0)
+        dir[0] = 1;                                  /* P = O (or R = 0): along x */
+    for (int i = 0; i < 61; i++) {
+        double tt = -1 + 3.0 * i / 60, Bt[3] = {O[0] + tt * dir[0], O[1] + tt * dir[1], O[2] + tt * dir[2]}, Mt[3], st;
+        moment_about(in, Bt, Mt, &st);
+        ml->x[i] = tt, ml->y[i] = norm(Mt);
+    }
+    mm_res_method(res, "closed form (sums of forces and cross products)", 0);
+
+    /* the drawing */
+    int rc = mm_sta_fbd(res);
+    double fmx = 0;
+    for (int i = 0; i < Fs->rows; i++)
+        fmx = fmax(fmx, norm(Fs->data + 6 * i + 3));
+    double L = fmax(size, 1e-3), fs = mm_sta_scale(fmax(fmx, Rn), L, 0.5);
+    for (int i = 0; i < Fs->rows && !rc; i++)
+        rc = arrow3(res, "force", Fs->data + 6 * i, Fs->data + 6 * i + 3, fs, "N", NULL);
+    if (!rc && Rn > tolR) {
+        rc = arrow3(res, "R on the central axis", P, R, fs, "N", "highlight");
+        double a[3], b[3], xy[4];
+        for (int k = 0; k < 3; k++)
+            a[k] = P[k] - L * R[k] / Rn, b[k] = P[k] + L * R[k] / Rn;
+        mm_sta_project(a[0], a[1], a[2], &xy[0], &xy[1]);
+        mm_sta_project(b[0], b[1], b[2], &xy[2], &xy[3]);
+        if (!rc)
+            rc = mm_sta_path(res, "central axis", 2, xy, "ground");
+        if (!rc && kind == 3) {
+            double mw[3] = {pitch * R[0], pitch * R[1], pitch * R[2]};
+            rc = arrow3(res, "couple of the wrench", P, mw, 0.5 * L / fabs(pitch * Rn), "N m", "highlight");
+        }
+    } else if (!rc && kind == 1) {
+        rc = arrow3(res, "couple", O, M, 0.5 * L / Mn, "N m", "highlight");
+    }
+    double u, v;
+    mm_sta_project(O[0], O[1], O[2], &u, &v);
+    if (!rc)
+        rc = mm_sta_label(res, u, v, "O: %s", kinds[kind]);
+    return rc;
+}
+
+static const char *const references[] = {
+    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 4.7-4.8",
+    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 2/9",
+    NULL,
+};
+
+const mm_exercise mm_ex_sta_force_system = {
+    .id = "sta-force-system",
+    .chapter = 3,
+    .section = "3.2.3",
+    .title = "Reducing a force system: resultant, couple and wrench",
+    .summary = "Forces and couples in space reduced to a force and a couple at a point, and to their simplest "
+               "equivalent: a single force, a couple or a wrench on its central axis.",
+    .tags = "statics, force system, resultant, couple, wrench, equivalence, central axis",
+    .theory = "exercises/sta/force_system.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

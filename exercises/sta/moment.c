@@ -1,0 +1,211 @@
+/* moment.c — sta-moment: the moment of a force about a point and about an
+ * axis, in space.
+ *
+ *     M_O = (r - O) x F                                               (1)
+ *     M_axis = e . M_O,   e = u / |u|                                  (3)
+ *
+ * Goal: the cross product as the moment, its magnitude |F| d with d the
+ * lever arm (2), its independence of where along its line the force acts
+ * (transmissibility), and the moment about an axis as the part of M_O
+ * along it.
+ * Checks: M_O is perpendicular to F; |M_O| = |F| d with d found
+ * geometrically (the foot of the perpendicular from O); the force slid
+ * along its line gives the same moment; the moment about the axis again
+ * from the parts of r - O and F perpendicular to the axis (eq. 4).
+ * Reference: Hibbeler, Statics, 14th ed., sections 4.1-4.5.
+ */
+#include <float.h>
+#include <math.h>
+
+#include "mm_exhelp.h"
+#include "mm_sta.h"
+
+enum { P_F, P_R, P_O, P_U };
+
+static const mm_param params[] = {
+    [P_F] = {"F", "force (Fx, Fy, Fz)", "N", MM_VECTOR, 0, -1e9, 1e9, "10,-20,30", NULL, 0, 3,
+             .help = "the force's three components"},
+    [P_R] = {"r", "point of application (x, y, z)", "m", MM_VECTOR, 0, -1e4, 1e4, "2,1,0.5", NULL, 0, 3,
+             .help = "where the force acts (any point of its line of action gives the same moment)"},
+    [P_O] = {"O", "moment point (x, y, z)", "m", MM_VECTOR, 0, -1e4, 1e4, "0,0,0", NULL, 0, 3,
+             .help = "the point the moment is taken about; the axis passes through it"},
+    [P_U] = {"u", "axis direction (ux, uy, uz)", "", MM_VECTOR, 0, -1e4, 1e4, "0,0,1", NULL, 0, 3,
+             .help = "direction of the axis through O (any length but zero)"},
+};
+
+enum { O_MX, O_MY, O_MZ, O_M, O_D, O_MAXIS, O_SLIDE, O_ANIM };
+
+static const mm_output outputs[] = {
+    [O_MX] = MM_SCALAR("Mx", "moment about O, x component", "N m", .flags = MM_ANSWER | MM_EXACT),
+    [O_MY] = MM_SCALAR("My", "moment about O, y component", "N m", .flags = MM_ANSWER | MM_EXACT),
+    [O_MZ] = MM_SCALAR("Mz", "moment about O, z component", "N m", .flags = MM_ANSWER | MM_EXACT),
+    [O_M] = MM_SCALAR("M", "magnitude of the moment about O", "N m", .flags = MM_ANSWER | MM_EXACT),
+    [O_D] = MM_SCALAR("d", "lever arm: distance from O to the line of action", "m", .flags = MM_EXACT),
+    [O_MAXIS] = MM_SCALAR("M_axis", "moment about the axis through O along u", "N m", .flags = MM_ANSWER | MM_EXACT),
+    [O_SLIDE] = MM_SERIES("M_sliding", "|M_O| with the force slid along its line", "N m", "distance slid", "m"),
+    [O_ANIM] = MM_ANIMATION("the force, its point, the moment about O and the axis"),
+};
+
+static void cross(const double *a, const double *b, double *c)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static double norm(const double *a)
+{
+    return sqrt(dot(a, a));
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    static const char *const names[] = {"F", "r", "O", "u"};
+    for (int k = 0; k < 4; k++)
+        if (in[k].cols != 3)
+            return mm_error_set(err, MM_ERANGE, names[k], "%s needs 3 components (x, y, z); got %d", names[k],
+                                in[k].cols);
+    if (norm(in[P_U].data) == 0)
+        return mm_error_set(err, MM_ERANGE, "u", "the axis direction u must not be zero");
+    return MM_OK;
+}
+
+/* a 3-D arrow in the oblique view: from p along v times scale */
+static int arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale,
+                  const char *unit, const char *style)
+{
+    double u0, v0, u1, v1;
+    mm_sta_project(p[0], p[1], p[2], &u0, &v0);
+    mm_sta_project(p[0] + scale * v[0], p[1] + scale * v[1], p[2] + scale * v[2], &u1, &v1);
+    mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_ARROW, 1, 2);
+    double *val = s ? mm_shape_values(res, s) : NULL;
+    if (!val)
+        return MM_ENOMEM;
+    s->x[0] = u0, s->y[0] = v0, s->x[1] = u1, s->y[1] = v1;
+    s->unit = unit, s->scale = scale, s->style = style;
+    val[0] = norm(v);
+    return MM_OK;
+}
+
+static int line3(mm_result *res, const char *name, const double *a, const double *b, const char *style)
+{
+    double xy[4];
+    mm_sta_project(a[0], a[1], a[2], &xy[0], &xy[1]);
+    mm_sta_project(b[0], b[1], b[2], &xy[2], &xy[3]);
+    return mm_sta_path(res, name, 2, xy, style);
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    (void)err;
+    const double *F = in[P_F].data, *r = in[P_R].data, *O = in[P_O].data, *u = in[P_U].data;
+    double w[3] = {r[0] - O[0], r[1] - O[1], r[2] - O[2]}, M[3], e[3];
+    cross(w, F, M);                                        /* eq. (1) */
+    double Fn = norm(F), Mn = norm(M), un = norm(u);
+    for (int k = 0; k < 3; k++)
+        e[k] = u[k] / un;
+    double Ma = dot(e, M);                                 /* eq. (3) */
+    /* the lever arm: from O to the foot of the perpendicular on the line */
+    double t = Fn > 0 ? dot(w, F) / (Fn * Fn) : 0, foot[3], d;
+    for (int k = 0; k < 3; k++)
+        foot[k] = w[k] - t * F[k];
+    d = norm(foot);
+    mm_res_scalar(res, O_MX, M[0]);
+    mm_res_scalar(res, O_MY, M[1]);
+    mm_res_scalar(res, O_MZ, M[2]);
+    mm_res_scalar(res, O_M, Mn);
+    mm_res_scalar(res, O_D, Fn > 0 ? d : 0);
+    mm_res_scalar(res, O_MAXIS, Ma);
+
+    double wn = norm(w), big = wn * Fn;
+    /* check 1: the moment is perpendicular to the force */
+    mm_check_residual(res, "M . F [N^2 m] (the moment is perpendicular to the force)", dot(M, F), big * Fn, 16);
+    /* check 2: |M| = |F| d, eq. (2) */
+    mm_check_residual(res, "|M| - |F| d, d the distance to the line of action [N m]", Mn - Fn * d, big, 16);
+    /* check 3: slid along its line by 3 of its own length units, eq. (1) again */
+    double w2[3], M2[3];
+    for (int k = 0; k < 3; k++)
+        w2[k] = w[k] + (Fn > 0 ? 3 * F[k] / Fn * fmax(wn, 1) : 0);
+    cross(w2, F, M2);
+    mm_check_residual(res, "transmissibility: |M(r + s F/|F|) - M(r)| [N m]",
+                      hypot(hypot(M2[0] - M[0], M2[1] - M[1]), M2[2] - M[2]), (norm(w2) + wn) * Fn, 16);
+    /* check 4: the moment about the axis from the parts across it, eq. (4) */
+    double wp[3], Fp[3], Mp[3], we = dot(w, e), Fe = dot(F, e);
+    for (int k = 0; k < 3; k++)
+        wp[k] = w[k] - we * e[k], Fp[k] = F[k] - Fe * e[k];
+    cross(wp, Fp, Mp);
+    mm_check_residual(res, "M_axis by the parts across the axis vs e . M [N m]", dot(e, Mp) - Ma, 4 * big, 16);
+    /* the moment as the force slides along its own line: it stays (transmissibility) */
+    mm_series *sl = mm_res_series(res, O_SLIDE, 41);
+    if (!sl)
+        return MM_ENOMEM;
+    for (int i = 0; i < 41; i++) {
+        double sd = (i - 20) * 0.1 * fmax(wn, 1), p[3], q[3];
+        for (int k = 0; k < 3; k++)
+            p[k] = w[k] + (Fn > 0 ? sd * F[k] / Fn : 0);
+        cross(p, F, q);
+        sl->x[i] = sd, sl->y[i] = norm(q);
+    }
+    mm_res_method(res, "closed form (cross product)", 0);
+
+    /* the drawing: axes at O, r - O, F at r, M at O, the axis */
+    int rc = mm_sta_fbd(res);
+    double size = fmax(wn, 1e-3), fs = Fn > 0 ? 0.6 * size / Fn : 0, ms = Mn > 0 ? 0.6 * size / Mn : 0;
+    static const char *const axis_names[3] = {"x", "y", "z"};
+    for (int k = 0; k < 3 && !rc; k++) {
+        double tip[3] = {O[0], O[1], O[2]};
+        tip[k] += 0.5 * size;
+        rc = line3(res, axis_names[k], O, tip, "ground");
+        if (!rc) {
+            double uu, vv;
+            mm_sta_project(tip[0], tip[1], tip[2], &uu, &vv);
+            rc = mm_sta_label(res, uu, vv, "%s", axis_names[k]);
+        }
+    }
+    double a0[3], a1[3];
+    for (int k = 0; k < 3; k++)
+        a0[k] = O[k] - 0.7 * size * e[k], a1[k] = O[k] + 0.7 * size * e[k];
+    if (!rc)
+        rc = line3(res, "axis u", a0, a1, "highlight");
+    if (!rc)
+        rc = line3(res, "r - O", O, r, NULL);
+    if (!rc)
+        rc = arrow3(res, "F", r, F, fs, "N", NULL);
+    if (!rc)
+        rc = arrow3(res, "M_O", O, M, ms, "N m", "highlight");
+    double uu, vv;
+    mm_sta_project(O[0], O[1], O[2], &uu, &vv);
+    if (!rc)
+        rc = mm_sta_label(res, uu, vv, "O");
+    mm_sta_project(r[0], r[1], r[2], &uu, &vv);
+    if (!rc)
+        rc = mm_sta_label(res, uu, vv, "F = %.4g N", Fn);
+    return rc;
+}
+
+static const char *const references[] = {
+    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 4.1-4.5",
+    NULL,
+};
+
+const mm_exercise mm_ex_sta_moment = {
+    .id = "sta-moment",
+    .chapter = 3,
+    .section = "3.1.2",
+    .title = "Moment of a force about a point and an axis",
+    .summary = "M = r x F in space, its lever arm, and the moment about an axis through the point.",
+    .tags = "statics, moment, cross product, lever arm, axis",
+    .theory = "exercises/sta/moment.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

@@ -1,0 +1,507 @@
+/* mm_beam.c — beams as piecewise polynomials.  The contract is in
+ * mm_beam.h; equation numbers refer to exercises/sta/beam_diagrams.md. */
+#include "mm_beam.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct mm_beam {
+    double L, EI, a, b;
+    mm_beam_kind kind;
+    int nb;                    /* breakpoints; nb - 1 segments */
+    double *xs;
+    double *dV, *dM;           /* jumps at each breakpoint */
+    double *q0, *q1;           /* per segment: q = q0 + q1 s */
+    double *V0, *M0, *T0, *Y0; /* per segment: values just right of its start */
+    int nr;
+    double rx[2], ry[2], rc[2];
+    double Vend, Mend, Vscale, Mscale;
+    double Tend, Yend;
+};
+
+/* ==== checks ======================================================================= */
+
+static int on_beam(double x, double L)
+{
+    return x >= 0 && x <= L;
+}
+
+int mm_beam_check(const mm_beam_problem *p, mm_error *err)
+{
+    if (!(p->L > 0) || !isfinite(p->L))
+        return mm_error_set(err, MM_ERANGE, "L", "L must be a positive length; got %g", p->L);
+    if (p->kind == MM_BEAM_TWO_SUPPORTS) {
+        if (!on_beam(p->a, p->L))
+            return mm_error_set(err, MM_ERANGE, "a", "the pin at a = %g m must be on the beam (0 to L = %g m)",
+                                p->a, p->L);
+        if (!on_beam(p->b, p->L))
+            return mm_error_set(err, MM_ERANGE, "b",
+                                "the roller at b = %g m must be on the beam (0 to L = %g m)", p->b, p->L);
+        if (!(p->b > p->a))
+            return mm_error_set(err, MM_ERANGE, "b",
+                                "the roller at b = %g m must lie right of the pin at a = %g m", p->b, p->a);
+    }
+    if (p->n_point < 0 || p->n_point > MM_BEAM_MAX_LOADS || p->n_dist < 0 || p->n_dist > MM_BEAM_MAX_LOADS ||
+        p->n_moment < 0 || p->n_moment > MM_BEAM_MAX_LOADS)
+        return mm_error_set(err, MM_ERANGE, p->n_point > MM_BEAM_MAX_LOADS ? "point_loads"
+                                            : p->n_dist > MM_BEAM_MAX_LOADS ? "distributed"
+                                                                            : "moments",
+                            "at most %d loads of each kind", MM_BEAM_MAX_LOADS);
+    for (int i = 0; i < p->n_point; i++) {
+        const double *r = p->point + 2 * i;
+        if (!isfinite(r[0]) || !isfinite(r[1]))
+            return mm_error_set(err, MM_EVALUE, "point_loads", "point load %d is not a number", i + 1);
+        if (!on_beam(r[0], p->L))
+            return mm_error_set(err, MM_ERANGE, "point_loads",
+                                "point load %d at x = %g m is off the beam (0 to %g m)", i + 1, r[0], p->L);
+    }
+    for (int i = 0; i < p->n_dist; i++) {
+        const double *r = p->dist + 4 * i;
+        for (int k = 0; k < 4; k++)
+            if (!isfinite(r[k]))
+                return mm_error_set(err, MM_EVALUE, "distributed", "distributed load %d is not a number", i + 1);
+        if (!on_beam(r[0], p->L) || !on_beam(r[1], p->L) || !(r[1] > r[0]))
+            return mm_error_set(err, MM_ERANGE, "distributed",
+                                "distributed load %d must run from x1 to x2 > x1 on the beam (0 to %g m); "
+                                "got %g to %g m", i + 1, p->L, r[0], r[1]);
+    }
+    for (int i = 0; i < p->n_moment; i++) {
+        const double *r = p->moment + 2 * i;
+        if (!isfinite(r[0]) || !isfinite(r[1]))
+            return mm_error_set(err, MM_EVALUE, "moments", "couple %d is not a number", i + 1);
+        if (!on_beam(r[0], p->L))
+            return mm_error_set(err, MM_ERANGE, "moments", "couple %d at x = %g m is off the beam (0 to %g m)",
+                                i + 1, r[0], p->L);
+    }
+    if (!(p->EI >= 0) || !isfinite(p->EI))
+        return mm_error_set(err, MM_ERANGE, "EI", "EI must be >= 0; got %g", p->EI);
+    return MM_OK;
+}
+
+/* ==== building ====================================================================== */
+
+static int cmp_double(const void *p, const void *q)
+{
+    double a = *(const double *)p, b = *(const double *)q;
+    return (a > b) - (a < b);
+}
+
+/* the breakpoint at x exactly (x is one of them) */
+static int break_at(const mm_beam *b, double x)
+{
+    int lo = 0, hi = b->nb - 1;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (b->xs[mid] < x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* integral over a linear load of q (x - o) dx: (x1 - o) W + l^2 (q1/6 + q2/3) */
+static double dist_moment(const double *r, double o)
+{
+    double l = r[1] - r[0], W = 0.5 * (r[2] + r[3]) * l;
+    return (r[0] - o) * W + l * l * (r[2] / 6 + r[3] / 3);
+}
+
+int mm_beam_solve(const mm_beam_problem *p, mm_beam **out, mm_error *err)
+{
+    *out = NULL;
+    int rc = mm_beam_check(p, err);
+    if (rc != MM_OK)
+        return rc;
+    int cap = 4 + p->n_point + 2 * p->n_dist + p->n_moment;
+    mm_beam *b = calloc(1, sizeof *b);
+    double *mem = calloc((size_t)cap * 10, sizeof *mem);
+    if (!b || !mem) {
+        free(b);
+        free(mem);
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    }
+    b->xs = mem;
+    b->dV = mem + cap, b->dM = mem + 2 * cap;
+    b->q0 = mem + 3 * cap, b->q1 = mem + 4 * cap;
+    b->V0 = mem + 5 * cap, b->M0 = mem + 6 * cap, b->T0 = mem + 7 * cap, b->Y0 = mem + 8 * cap;
+    double *Yp = mem + 9 * cap;
+    b->L = p->L, b->EI = p->EI, b->a = p->a, b->b = p->b, b->kind = p->kind;
+
+    /* the breakpoints */
+    int n = 0;
+    b->xs[n++] = 0;
+    b->xs[n++] = p->L;
+    if (p->kind == MM_BEAM_TWO_SUPPORTS) {
+        b->xs[n++] = p->a;
+        b->xs[n++] = p->b;
+    }
+    for (int i = 0; i < p->n_point; i++)
+        b->xs[n++] = p->point[2 * i];
+    for (int i = 0; i < p->n_dist; i++) {
+        b->xs[n++] = p->dist[4 * i];
+        b->xs[n++] = p->dist[4 * i + 1];
+    }
+    for (int i = 0; i < p->n_moment; i++)
+        b->xs[n++] = p->moment[2 * i];
+    qsort(b->xs, (size_t)n, sizeof *b->xs, cmp_double);
+    int u = 0;
+    for (int i = 0; i < n; i++)
+        if (u == 0 || b->xs[i] != b->xs[u - 1])
+            b->xs[u++] = b->xs[i];
+    b->nb = u;
+
+    /* the reactions, eqs. (2)-(3): sum of forces and of moments */
+    double F = 0, Mo = 0, o = p->kind == MM_BEAM_TWO_SUPPORTS ? p->a : 0;
+    for (int i = 0; i < p->n_point; i++) {
+        F += p->point[2 * i + 1];
+        Mo += p->point[2 * i + 1] * (p->point[2 * i] - o);
+    }
+    for (int i = 0; i < p->n_dist; i++) {
+        const double *r = p->dist + 4 * i;
+        F += 0.5 * (r[2] + r[3]) * (r[1] - r[0]);
+        Mo += dist_moment(r, o);
+    }
+    for (int i = 0; i < p->n_moment; i++)
+        Mo += p->moment[2 * i + 1];
+    if (p->kind == MM_BEAM_TWO_SUPPORTS) {
+        b->nr = 2;
+        b->rx[0] = p->a, b->rx[1] = p->b;
+        b->ry[1] = -Mo / (p->b - p->a);          /* moments about the pin */
+        b->ry[0] = -F - b->ry[1];
+        b->rc[0] = b->rc[1] = 0;
+    } else {
+        b->nr = 1;
+        b->rx[0] = 0;
+        b->ry[0] = -F;
+        b->rc[0] = -Mo;                          /* the clamp's couple */
+    }
+
+    /* jumps and the distributed intensity of each segment */
+    for (int i = 0; i < p->n_point; i++)
+        b->dV[break_at(b, p->point[2 * i])] += p->point[2 * i + 1];
+    for (int k = 0; k < b->nr; k++) {
+        b->dV[break_at(b, b->rx[k])] += b->ry[k];
+        b->dM[break_at(b, b->rx[k])] -= b->rc[k];
+    }
+    for (int i = 0; i < p->n_moment; i++)
+        b->dM[break_at(b, p->moment[2 * i])] -= p->moment[2 * i + 1];
+    for (int i = 0; i < p->n_dist; i++) {
+        const double *r = p->dist + 4 * i;
+        double slope = (r[3] - r[2]) / (r[1] - r[0]);
+        for (int k = break_at(b, r[0]); k < b->nb - 1 && b->xs[k] < r[1]; k++) {
+            b->q0[k] += r[2] + slope * (b->xs[k] - r[0]);
+            b->q1[k] += slope;
+        }
+    }
+
+    /* sweep from x = 0: V and M just right of each breakpoint (eq. 5) */
+    double V = 0, M = 0, sV = 0, sM = 0;
+    for (int k = 0; k < b->nb - 1; k++) {
+        V += b->dV[k];
+        M += b->dM[k];
+        sV += fabs(b->dV[k]);
+        sM += fabs(b->dM[k]);
+        b->V0[k] = V, b->M0[k] = M;
+        double h = b->xs[k + 1] - b->xs[k], q0 = b->q0[k], q1 = b->q1[k];
+        double dVs = q0 * h + q1 * h * h / 2, dMs = V * h + q0 * h * h / 2 + q1 * h * h * h / 6;
+        sV += fabs(q0 * h) + fabs(q1 * h * h / 2);
+        sM += fabs(V * h) + fabs(q0 * h * h / 2) + fabs(q1 * h * h * h / 6);
+        V += dVs;
+        M += dMs;
+    }
+    b->Vend = V + b->dV[b->nb - 1];
+    b->Mend = M + b->dM[b->nb - 1];
+    b->Vscale = sV + fabs(b->dV[b->nb - 1]);
+    b->Mscale = sM + fabs(b->dM[b->nb - 1]);
+
+    /* the deflection: a particular solution from y = y' = 0 at x = 0, then
+     * y0 + theta0 x added to meet the supports (eq. 7) */
+    if (p->EI > 0) {
+        double T = 0, Y = 0, EI = p->EI;
+        for (int k = 0; k < b->nb - 1; k++) {
+            double h = b->xs[k + 1] - b->xs[k], q0 = b->q0[k], q1 = b->q1[k], V0 = b->V0[k], M0 = b->M0[k];
+            b->T0[k] = T, b->Y0[k] = Y, Yp[k] = Y;
+            double dT = h * (M0 + h * (V0 / 2 + h * (q0 / 6 + h * q1 / 24))) / EI;
+            double dY = T * h + h * h * (M0 / 2 + h * (V0 / 6 + h * (q0 / 24 + h * q1 / 120))) / EI;
+            T += dT;
+            Y += dY;
+        }
+        Yp[b->nb - 1] = Y;
+        double th0 = 0, y0 = 0;
+        if (p->kind == MM_BEAM_TWO_SUPPORTS) {
+            double ya = Yp[break_at(b, p->a)], yb = Yp[break_at(b, p->b)];
+            th0 = (ya - yb) / (p->b - p->a);
+            y0 = -ya - th0 * p->a;
+        }
+        for (int k = 0; k < b->nb - 1; k++) {
+            b->T0[k] += th0;
+            b->Y0[k] += y0 + th0 * b->xs[k];
+        }
+        b->Tend = T + th0;
+        b->Yend = Y + y0 + th0 * p->L;
+    }
+    *out = b;
+    return MM_OK;
+}
+
+void mm_beam_free(mm_beam *b)
+{
+    if (!b)
+        return;
+    free(b->xs);
+    free(b);
+}
+
+/* ==== reading it ======================================================================= */
+
+int mm_beam_reactions(const mm_beam *b, double *x, double *Ry, double *C)
+{
+    for (int k = 0; k < b->nr; k++)
+        x[k] = b->rx[k], Ry[k] = b->ry[k], C[k] = b->rc[k];
+    return b->nr;
+}
+
+int mm_beam_breaks(const mm_beam *b, const double **x)
+{
+    *x = b->xs;
+    return b->nb;
+}
+
+void mm_beam_eval_segment(const mm_beam *b, int k, double s, mm_beam_value *v)
+{
+    if (k < 0)
+        k = 0;
+    if (k > b->nb - 2)
+        k = b->nb - 2;
+    double q0 = b->q0[k], q1 = b->q1[k], V0 = b->V0[k], M0 = b->M0[k];
+    v->q = q0 + q1 * s;
+    v->V = V0 + s * (q0 + s * q1 / 2);
+    v->M = M0 + s * (V0 + s * (q0 / 2 + s * q1 / 6));
+    if (b->EI > 0) {
+        v->theta = b->T0[k] + s * (M0 + s * (V0 / 2 + s * (q0 / 6 + s * q1 / 24))) / b->EI;
+        v->y = b->Y0[k] + b->T0[k] * s + s * s * (M0 / 2 + s * (V0 / 6 + s * (q0 / 24 + s * q1 / 120))) / b->EI;
+    } else {
+        v->theta = v->y = 0;
+    }
+}
+
+void mm_beam_eval(const mm_beam *b, double x, int side, mm_beam_value *v)
+{
+    if (x < 0 || (x == 0 && side < 0)) {
+        mm_beam_eval_segment(b, 0, 0, v);
+        v->q = v->V = v->M = 0;
+        return;
+    }
+    if (x > b->L || (x == b->L && side >= 0)) {
+        mm_beam_eval_segment(b, b->nb - 2, b->xs[b->nb - 1] - b->xs[b->nb - 2], v);
+        v->q = 0, v->V = b->Vend, v->M = b->Mend;
+        return;
+    }
+    int lo = 0, hi = b->nb - 2;                  /* the segment holding x */
+    while (lo < hi) {
+        int mid = (lo + hi + 1) / 2;
+        if (side < 0 ? b->xs[mid] < x : b->xs[mid] <= x)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    mm_beam_eval_segment(b, lo, x - b->xs[lo], v);
+}
+
+void mm_beam_closure(const mm_beam *b, double *V_end, double *M_end, double *V_scale, double *M_scale)
+{
+    *V_end = b->Vend, *M_end = b->Mend;
+    *V_scale = b->Vscale, *M_scale = b->Mscale;
+}
+
+/* ==== extremes =========================================================================== */
+
+/* Candidates in order of x; pick the first whose magnitude is within 1e-12
+ * of the largest. */
+typedef struct pick {
+    double big, best, x;
+    int pass;                  /* 0: find the largest magnitude; 1: the first near it */
+    int done;
+} pick;
+
+static void consider(pick *p, double value, double x)
+{
+    if (p->pass == 0) {
+        if (fabs(value) > p->big)
+            p->big = fabs(value);
+    } else if (!p->done && fabs(value) >= p->big * (1 - 1e-12)) {
+        p->best = value, p->x = x, p->done = 1;
+    }
+}
+
+/* roots of c + b s + a s^2 in (0, h), ascending, into r; returns the count */
+static int quad_roots(double a, double bq, double c, double h, double *r)
+{
+    int n = 0;
+    double t[2];
+    if (a == 0) {
+        if (bq != 0)
+            t[n++] = -c / bq;
+    } else {
+        double disc = bq * bq - 4 * a * c;
+        if (disc >= 0) {
+            double w = -0.5 * (bq + copysign(sqrt(disc), bq));
+            if (w != 0) {
+                t[n++] = w / a;
+                t[n++] = c / w;
+            } else {
+                t[n++] = 0;
+            }
+        }
+    }
+    int m = 0;
+    for (int i = 0; i < n; i++)
+        if (t[i] > 0 && t[i] < h)
+            r[m++] = t[i];
+    if (m == 2 && r[0] > r[1]) {
+        double s = r[0];
+        r[0] = r[1], r[1] = s;
+    }
+    return m;
+}
+
+void mm_beam_extreme_V(const mm_beam *b, double *value, double *x)
+{
+    pick p = {0};
+    for (p.pass = 0; p.pass < 2; p.pass++)
+        for (int k = 0; k < b->nb - 1; k++) {
+            double h = b->xs[k + 1] - b->xs[k];
+            mm_beam_value v;
+            mm_beam_eval_segment(b, k, 0, &v);
+            consider(&p, v.V, b->xs[k]);
+            if (b->q1[k] != 0) {                 /* q = 0 inside: V stationary */
+                double s = -b->q0[k] / b->q1[k];
+                if (s > 0 && s < h) {
+                    mm_beam_eval_segment(b, k, s, &v);
+                    consider(&p, v.V, b->xs[k] + s);
+                }
+            }
+            mm_beam_eval_segment(b, k, h, &v);
+            consider(&p, v.V, b->xs[k + 1]);
+        }
+    *value = p.best, *x = p.x;
+}
+
+void mm_beam_extreme_M(const mm_beam *b, double *value, double *x)
+{
+    pick p = {0};
+    for (p.pass = 0; p.pass < 2; p.pass++)
+        for (int k = 0; k < b->nb - 1; k++) {
+            double h = b->xs[k + 1] - b->xs[k], r[2];
+            mm_beam_value v;
+            mm_beam_eval_segment(b, k, 0, &v);
+            consider(&p, v.M, b->xs[k]);
+            int nr = quad_roots(b->q1[k] / 2, b->q0[k], b->V0[k], h, r);   /* V = 0 inside */
+            for (int i = 0; i < nr; i++) {
+                mm_beam_eval_segment(b, k, r[i], &v);
+                consider(&p, v.M, b->xs[k] + r[i]);
+            }
+            mm_beam_eval_segment(b, k, h, &v);
+            consider(&p, v.M, b->xs[k + 1]);
+        }
+    *value = p.best, *x = p.x;
+}
+
+/* a root of the slope on segment k between sa and sb (a sign change), by
+ * bisection to the last bit */
+static double slope_root(const mm_beam *b, int k, double sa, double sb)
+{
+    mm_beam_value va, vm;
+    mm_beam_eval_segment(b, k, sa, &va);
+    for (int it = 0; it < 200; it++) {
+        double sm = 0.5 * (sa + sb);
+        if (sm <= sa || sm >= sb)
+            break;
+        mm_beam_eval_segment(b, k, sm, &vm);
+        if ((vm.theta > 0) == (va.theta > 0)) {
+            sa = sm;
+            va = vm;
+        } else {
+            sb = sm;
+        }
+    }
+    return 0.5 * (sa + sb);
+}
+
+void mm_beam_extreme_y(const mm_beam *b, double *value, double *x)
+{
+    *value = *x = 0;
+    if (!(b->EI > 0))
+        return;
+    enum { SUB = 64 };
+    pick p = {0};
+    for (p.pass = 0; p.pass < 2; p.pass++)
+        for (int k = 0; k < b->nb - 1; k++) {
+            double h = b->xs[k + 1] - b->xs[k];
+            mm_beam_value v, w;
+            mm_beam_eval_segment(b, k, 0, &v);
+            consider(&p, v.y, b->xs[k]);
+            for (int i = 1; i <= SUB; i++) {
+                double s0 = h * (i - 1) / SUB, s1 = i == SUB ? h : h * i / SUB;
+                mm_beam_eval_segment(b, k, s1, &w);
+                if ((v.theta > 0 && w.theta < 0) || (v.theta < 0 && w.theta > 0)) {
+                    double s = slope_root(b, k, s0, s1);
+                    mm_beam_value e;
+                    mm_beam_eval_segment(b, k, s, &e);
+                    consider(&p, e.y, b->xs[k] + s);
+                }
+                v = w;
+            }
+            consider(&p, v.y, b->xs[k + 1]);
+        }
+    *value = p.best, *x = p.x;
+}
+
+/* ==== virtual work ========================================================================= */
+
+int mm_beam_unit_load(const mm_beam *b, double x0, double *y, double *scale, mm_error *err)
+{
+    if (!(b->EI > 0))
+        return mm_error_set(err, MM_EVALUE, "EI", "the deflection needs EI > 0");
+    double unit[2] = {x0, 1.0};
+    mm_beam_problem up = {.L = b->L, .kind = b->kind, .a = b->a, .b = b->b, .n_point = 1, .point = unit};
+    mm_beam *ub;
+    int rc = mm_beam_solve(&up, &ub, err);
+    if (rc != MM_OK)
+        return rc;
+    /* the pieces: every breakpoint of either beam */
+    double *xs = malloc((size_t)(b->nb + ub->nb) * sizeof *xs);
+    if (!xs) {
+        mm_beam_free(ub);
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    }
+    memcpy(xs, b->xs, (size_t)b->nb * sizeof *xs);
+    memcpy(xs + b->nb, ub->xs, (size_t)ub->nb * sizeof *xs);
+    int n = b->nb + ub->nb;
+    qsort(xs, (size_t)n, sizeof *xs, cmp_double);
+    static const double gx[3] = {-0.77459666924148337704, 0, 0.77459666924148337704};
+    static const double gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+    double sum = 0, abs_sum = 0;
+    for (int i = 0; i + 1 < n; i++) {
+        double u = xs[i], v = xs[i + 1];
+        if (!(v > u))
+            continue;
+        for (int g = 0; g < 3; g++) {
+            double xg = 0.5 * (u + v) + 0.5 * (v - u) * gx[g];
+            mm_beam_value M, m;
+            mm_beam_eval(b, xg, 1, &M);
+            mm_beam_eval(ub, xg, 1, &m);
+            sum += 0.5 * (v - u) * gw[g] * M.M * m.M;
+            abs_sum += 0.5 * (v - u) * gw[g] * fabs(M.M * m.M);
+        }
+    }
+    *y = sum / b->EI;                            /* eq. (9) */
+    if (scale)
+        *scale = abs_sum / b->EI;
+    free(xs);
+    mm_beam_free(ub);
+    return MM_OK;
+}

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# make fuzz-long: every libFuzzer target (or those named) in turn, each until
+# it has had FUZZ_CPU_SECONDS (default 3600) of CPU time, under nice 19, one
+# at a time.  CPU time, not wall time: on a shared machine a niced fuzzer
+# may get a small share of a core, and the figure that says how much
+# fuzzing was done is the CPU it used.
+#
+#   tests/fuzz/long.sh [NAME...]
+#
+# The binary is copied before it runs, so that a rebuild meanwhile does not
+# change it under the fuzzer.  New inputs go to build/fuzz/corpus-NAME,
+# crashes to build/fuzz/crash-NAME-*; the closing line of each target:
+#   fuzz NAME: S CPU-s, N executions, C crashes
+set -uo pipefail
+cd "$(dirname "$0")/../.."
+cpu=${FUZZ_CPU_SECONDS:-3600}
+tick=$(getconf CLK_TCK)
+names=("$@")
+if ((${#names[@]} == 0)); then
+  for b in build/fuzz/fuzz/fuzz_*; do names+=("${b##*/fuzz_}"); done
+fi
+status=0
+mkdir -p build/fuzz/long
+for name in "${names[@]}"; do
+  src="build/fuzz/fuzz/fuzz_$name"
+  [[ -x "$src" ]] || { echo "fuzz $name: no binary $src (make fuzz-bins first)"; status=1; continue; }
+  bin="build/fuzz/long/fuzz_$name"
+  cp "$src" "$bin"
+  work="build/fuzz/corpus-$name"
+  log="build/fuzz/long/$name.log"
+  mkdir -p "$work"
+  nice -n 19 "$bin" -max_total_time=1000000 -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
+    -artifact_prefix="build/fuzz/crash-$name-" -print_final_stats=1 \
+    "$work" "tests/fuzz/corpus/$name" > "$log" 2>&1 &
+  pid=$!
+  used=0
+  while kill -0 "$pid" 2>/dev/null; do
+    sleep 20
+    t=$(awk '{print $14 + $15}' "/proc/$pid/stat" 2>/dev/null) || break
+    used=$((t / tick))
+    ((used >= cpu)) && kill -INT "$pid"
+  done
+  wait "$pid"
+  execs=$(grep -Eo 'stat::number_of_executed_units: [0-9]+' "$log" | awk '{print $2}')
+  crashes=$(ls build/fuzz/crash-"$name"-* 2>/dev/null | wc -l)
+  echo "fuzz $name: $used CPU-s, ${execs:-?} executions, $crashes crashes"
+  ((crashes == 0 && used >= cpu)) || status=1
+done
+exit $status

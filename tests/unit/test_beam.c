@@ -1,0 +1,277 @@
+/* test_beam.c — beams against the closed forms of every strength-of-
+ * materials table: central point load, uniform and triangular loads on a
+ * simply supported beam, cantilevers, a couple, an overhang; a load
+ * exactly on a support; virtual work against the double integration. */
+#include "mm_test.h"
+
+#include <float.h>
+#include <string.h>
+
+#include "mm_beam.h"
+
+#define EPS DBL_EPSILON
+
+static mm_beam *solved(const mm_beam_problem *p)
+{
+    mm_beam *b;
+    mm_error err;
+    if (mm_beam_solve(p, &b, &err) != MM_OK)
+        fail_msg("mm_beam_solve: %s", err.msg);
+    return b;
+}
+
+static void a_central_point_load_should_give_pl_over_4_and_pl3_over_48ei(void **state)
+{
+    (void)state;
+    const double L = 4, P = 1000, EI = 2e6;
+    double pt[2] = {L / 2, -P};
+    mm_beam_problem p = {.L = L, .kind = MM_BEAM_TWO_SUPPORTS, .a = 0, .b = L, .n_point = 1, .point = pt, .EI = EI};
+    mm_beam *b = solved(&p);
+    double x[2], R[2], C[2];
+    assert_int_equal(mm_beam_reactions(b, x, R, C), 2);
+    check_rel(R[0], P / 2, 4 * EPS, "R at the pin = P/2");
+    check_rel(R[1], P / 2, 4 * EPS, "R at the roller = P/2");
+    double v, xv;
+    mm_beam_extreme_M(b, &v, &xv);
+    check_rel(v, P * L / 4, 8 * EPS, "M_max = P L / 4");
+    check_abs(xv, L / 2, 0, "under the load");
+    /* V = +P/2 left and -P/2 right of the load: equal magnitudes, so the
+     * first x: the pin's +P/2 */
+    mm_beam_extreme_V(b, &v, &xv);
+    check_rel(v, P / 2, 4 * EPS, "V_extreme = +P/2");
+    check_abs(xv, 0, 0, "first at the pin");
+    mm_beam_extreme_y(b, &v, &xv);
+    check_rel(v, -P * L * L * L / (48 * EI), 64 * EPS, "y_max = -P L^3 / (48 EI)");
+    check_rel(xv, L / 2, 1e-7, "at midspan (a root of the slope, bisected)");
+    mm_beam_value left, right;
+    mm_beam_eval(b, L / 2, -1, &left);
+    mm_beam_eval(b, L / 2, 1, &right);
+    check_rel(left.V - right.V, P, 4 * EPS, "V jumps by the load");
+    check_abs(left.M - right.M, 0, 8 * EPS * P * L, "M continuous under a force");
+    mm_beam_free(b);
+}
+
+static void a_uniform_load_should_give_wl2_over_8_and_5wl4_over_384ei(void **state)
+{
+    (void)state;
+    const double L = 6, w = 2000, EI = 1e7;
+    double d[4] = {0, L, -w, -w};
+    mm_beam_problem p = {.L = L, .kind = MM_BEAM_TWO_SUPPORTS, .a = 0, .b = L, .n_dist = 1, .dist = d, .EI = EI};
+    mm_beam *b = solved(&p);
+    double v, x;
+    mm_beam_extreme_M(b, &v, &x);
+    check_rel(v, w * L * L / 8, 16 * EPS, "M_max = w L^2 / 8");
+    check_rel(x, L / 2, 8 * EPS, "at midspan, the root of V");
+    mm_beam_extreme_y(b, &v, &x);
+    check_rel(v, -5 * w * L * L * L * L / (384 * EI), 64 * EPS, "y_max = -5 w L^4 / (384 EI)");
+    mm_beam_value m;
+    mm_beam_eval(b, L / 2, 1, &m);
+    check_abs(m.theta, 0, 64 * EPS * w * L * L * L / EI, "no slope at midspan");
+    mm_beam_free(b);
+}
+
+static void a_triangular_load_should_peak_at_l_over_root_3(void **state)
+{
+    (void)state;
+    /* q from 0 at x = 0 to -w0 at L: R_a = w0 L / 6, R_b = w0 L / 3,
+     * M_max = w0 L^2 / (9 sqrt 3) at x = L / sqrt 3 */
+    const double L = 3, w0 = 900, EI = 5e5;
+    double d[4] = {0, L, 0, -w0};
+    mm_beam_problem p = {.L = L, .kind = MM_BEAM_TWO_SUPPORTS, .a = 0, .b = L, .n_dist = 1, .dist = d, .EI = EI};
+    mm_beam *b = solved(&p);
+    double x[2], R[2], C[2], v, xv;
+    mm_beam_reactions(b, x, R, C);
+    check_rel(R[0], w0 * L / 6, 8 * EPS, "R_a = w0 L / 6");
+    check_rel(R[1], w0 * L / 3, 8 * EPS, "R_b = w0 L / 3");
+    mm_beam_extreme_M(b, &v, &xv);
+    check_rel(v, w0 * L * L / (9 * sqrt(3.0)), 16 * EPS, "M_max = w0 L^2 / (9 sqrt 3)");
+    check_rel(xv, L / sqrt(3.0), 16 * EPS, "at L / sqrt 3");
+    /* y(x) = -w0 x (7 L^4 - 10 L^2 x^2 + 3 x^4) / (360 L EI) */
+    mm_beam_extreme_y(b, &v, &xv);
+    double xs = L * sqrt(1 - sqrt(8.0 / 15));
+    double want = -w0 * xs * (7 * pow(L, 4) - 10 * L * L * xs * xs + 3 * pow(xs, 4)) / (360 * L * EI);
+    check_rel(v, want, 64 * EPS, "y_max of the triangular load");
+    check_rel(xv, xs, 1e-7, "at x = L sqrt(1 - sqrt(8/15))");
+    mm_beam_free(b);
+}
+
+static void cantilevers_should_give_pl3_over_3ei_and_wl4_over_8ei(void **state)
+{
+    (void)state;
+    const double L = 2, P = 500, w = 300, EI = 4e5;
+    double pt[2] = {L, -P}, d[4] = {0, L, -w, -w};
+    mm_beam_problem p = {.L = L, .kind = MM_BEAM_CANTILEVER, .n_point = 1, .point = pt, .EI = EI};
+    mm_beam *b = solved(&p);
+    double x[2], R[2], C[2], v, xv;
+    assert_int_equal(mm_beam_reactions(b, x, R, C), 1);
+    check_rel(R[0], P, 4 * EPS, "the clamp carries P");
+    check_rel(C[0], P * L, 4 * EPS, "and a couple P L, counter-clockwise");
+    mm_beam_extreme_M(b, &v, &xv);
+    check_rel(v, -P * L, 4 * EPS, "M = -P L at the clamp (hogging)");
+    check_abs(xv, 0, 0, "at the clamp");
+    mm_beam_extreme_y(b, &v, &xv);
+    check_rel(v, -P * L * L * L / (3 * EI), 16 * EPS, "tip deflection P L^3 / (3 EI)");
+    check_abs(xv, L, 0, "at the tip");
+    mm_beam_free(b);
+    mm_beam_problem q = {.L = L, .kind = MM_BEAM_CANTILEVER, .n_dist = 1, .dist = d, .EI = EI};
+    b = solved(&q);
+    mm_beam_extreme_y(b, &v, &xv);
+    check_rel(v, -w * L * L * L * L / (8 * EI), 16 * EPS, "tip deflection w L^4 / (8 EI)");
+    mm_beam_extreme_M(b, &v, &xv);
+    check_rel(v, -w * L * L / 2, 8 * EPS, "M = -w L^2 / 2 at the clamp");
+    mm_beam_free(b);
+}
+
+static void a_couple_should_make_m_jump_by_minus_c(void **state)
+{
+    (void)state;
+    const double L = 4, Cc = 800;
+    double mo[2] = {L / 2, Cc};
+    mm_beam_problem p = {.L = L, .kind = MM_BEAM_TWO_SUPPORTS, .a = 0, .b = L, .n_moment = 1, .moment = mo};
+    mm_beam *b = solved(&p);
+    mm_beam_value l, r;
+    mm_beam_eval(b, L / 2, -1, &l);
+    mm_beam_eval(b, L / 2, 1, &r);
+    check_rel(l.M, Cc / 2, 4 * EPS, "M = C/2 left of the couple");
+    check_rel(r.M, -Cc / 2, 4 * EPS, "M = -C/2 right of it");
+    check_rel(l.V, Cc / L, 4 * EPS, "V = C / L everywhere");
+    double v, x;
+    mm_beam_extreme_M(b, &v, &x);
+    check_rel(v, Cc / 2, 4 * EPS, "the larger one-sided value; equal: the left one");
+    check_abs(x, L / 2, 0, "at the couple");
+    mm_beam_free(b);
+}
+
+static void an_overhang_should_hog_over_the_roller(void **state)
+{
+    (void)state;
+    const double L = 5, bb = 4, P = 600;
+    double pt[2] = {L, -P};
+    mm_beam_problem p = {.L = L, .kind = MM_BEAM_TWO_SUPPORTS, .a = 0, .b = bb, .n_point = 1, .point = pt};
+    mm_beam *b = solved(&p);
+    double x[2], R[2], C[2], v, xv;
+    mm_beam_reactions(b, x, R, C);
+    check_rel(R[1], P * L / bb, 4 * EPS, "roller: P L / b");
+    check_rel(R[0], -P * (L - bb) / bb, 8 * EPS, "pin pulls down: -P (L - b) / b");
+    mm_beam_extreme_M(b, &v, &xv);
+    check_rel(v, -P * (L - bb), 8 * EPS, "M = -P (L - b) over the roller");
+    check_abs(xv, bb, 0, "at the roller");
+    mm_beam_free(b);
+}
+
+static void a_load_exactly_on_a_support_should_go_straight_into_it(void **state)
+{
+    (void)state;
+    const double L = 4, F = -1000;
+    for (int at = 0; at < 2; at++) {
+        double pt[2] = {at ? L : 0, F};
+        mm_beam_problem p = {.L = L, .kind = MM_BEAM_TWO_SUPPORTS, .a = 0, .b = L, .n_point = 1, .point = pt, .EI = 1e6};
+        mm_beam *b = solved(&p);
+        double x[2], R[2], C[2], v, xv;
+        mm_beam_reactions(b, x, R, C);
+        check_abs(R[at], -F, 4 * EPS * 1000, "the support under the load takes it all");
+        check_abs(R[1 - at], 0, 4 * EPS * 1000, "the other none");
+        mm_beam_extreme_M(b, &v, &xv);
+        check_abs(v, 0, 16 * EPS * 1000 * L, "no bending");
+        mm_beam_extreme_V(b, &v, &xv);
+        check_abs(v, 0, 16 * EPS * 1000, "no shear inside the span");
+        mm_beam_extreme_y(b, &v, &xv);
+        check_abs(v, 0, 1e-20, "no deflection");
+        double Ve, Me, Vs, Ms;
+        mm_beam_closure(b, &Ve, &Me, &Vs, &Ms);
+        check_abs(Ve, 0, 4 * EPS * Vs, "V closes to 0 at x = L");
+        mm_beam_free(b);
+    }
+}
+
+static void virtual_work_should_match_the_double_integration(void **state)
+{
+    (void)state;
+    /* an overhanging beam with every kind of load */
+    const double L = 7, EI = 3e6;
+    double pt[4] = {1.5, -2000, 6.5, -700}, d[8] = {0, 3, -400, -900, 4, 7, -300, 0}, mo[2] = {5, 1500};
+    mm_beam_problem p = {.L = L, .kind = MM_BEAM_TWO_SUPPORTS, .a = 0.5, .b = 5.5, .n_point = 2, .point = pt,
+                         .n_dist = 2, .dist = d, .n_moment = 1, .moment = mo, .EI = EI};
+    mm_beam *b = solved(&p);
+    double scale = 0;
+    for (int k = 0; k <= 14; k++) {
+        mm_beam_value v;
+        mm_beam_eval(b, L * k / 14, 1, &v);
+        scale = fmax(scale, fabs(v.y));
+    }
+    for (int k = 0; k <= 14; k++) {
+        double x = L * k / 14, yv;
+        mm_beam_value v;
+        mm_beam_eval(b, x, 1, &v);
+        assert_int_equal(mm_beam_unit_load(b, x, &yv, NULL, NULL), MM_OK);
+        /* both exact: rounding of sums of ~100 terms */
+        check_abs(yv, v.y, 1e-12 * scale, "unit-load deflection = integrated deflection");
+    }
+    /* y = 0 at both supports */
+    mm_beam_value s;
+    mm_beam_eval(b, 0.5, 1, &s);
+    check_abs(s.y, 0, 1e-14 * scale, "no deflection at the pin");
+    mm_beam_eval(b, 5.5, 1, &s);
+    check_abs(s.y, 0, 1e-14 * scale, "nor at the roller");
+    /* dM/dx = V and dV/dx = q by central differences at midpoints: M is a
+     * cubic, so the difference's error is h^2 M'''/6 = h^2 q'/6 exactly */
+    const double *xs;
+    int nb = mm_beam_breaks(b, &xs);
+    for (int k = 0; k + 1 < nb; k++) {
+        double xm = 0.5 * (xs[k] + xs[k + 1]), h = 1e-4;
+        mm_beam_value a, c, m;
+        mm_beam_eval(b, xm - h, 1, &a);
+        mm_beam_eval(b, xm + h, 1, &c);
+        mm_beam_eval(b, xm, 1, &m);
+        double qp = (c.q - a.q) / (2 * h);
+        check_abs((c.M - a.M) / (2 * h), m.V, fabs(qp) * h * h / 6 * 1.01 + 1e-9 * 5000,
+                  "dM/dx = V");
+        check_abs((c.V - a.V) / (2 * h), m.q, 1e-9 * 5000, "dV/dx = q");
+    }
+    mm_beam_free(b);
+}
+
+static void bad_beams_should_be_refused_naming_the_parameter(void **state)
+{
+    (void)state;
+    mm_error err;
+    double pt[2] = {5, -1};
+    mm_beam_problem p = {.L = 4, .kind = MM_BEAM_TWO_SUPPORTS, .a = 0, .b = 4, .n_point = 1, .point = pt};
+    assert_int_equal(mm_beam_check(&p, &err), MM_ERANGE);
+    assert_string_equal(err.param, "point_loads");
+    pt[0] = 2;
+    p.b = 0;
+    assert_int_equal(mm_beam_check(&p, &err), MM_ERANGE);
+    assert_string_equal(err.param, "b");
+    p.b = 4;
+    double d[4] = {2, 2, 1, 1};
+    p.n_dist = 1, p.dist = d;
+    assert_int_equal(mm_beam_check(&p, &err), MM_ERANGE);
+    assert_string_equal(err.param, "distributed");
+    p.n_dist = 0;
+    p.EI = -1;
+    assert_int_equal(mm_beam_check(&p, &err), MM_ERANGE);
+    assert_string_equal(err.param, "EI");
+    p.EI = 0;
+    mm_beam *b = solved(&p);
+    double y;
+    assert_int_equal(mm_beam_unit_load(b, 1, &y, NULL, &err), MM_EVALUE);
+    mm_beam_free(b);
+    mm_beam_free(NULL);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(a_central_point_load_should_give_pl_over_4_and_pl3_over_48ei),
+        cmocka_unit_test(a_uniform_load_should_give_wl2_over_8_and_5wl4_over_384ei),
+        cmocka_unit_test(a_triangular_load_should_peak_at_l_over_root_3),
+        cmocka_unit_test(cantilevers_should_give_pl3_over_3ei_and_wl4_over_8ei),
+        cmocka_unit_test(a_couple_should_make_m_jump_by_minus_c),
+        cmocka_unit_test(an_overhang_should_hog_over_the_roller),
+        cmocka_unit_test(a_load_exactly_on_a_support_should_go_straight_into_it),
+        cmocka_unit_test(virtual_work_should_match_the_double_integration),
+        cmocka_unit_test(bad_beams_should_be_refused_naming_the_parameter),
+    };
+    return cmocka_run_group_tests_name("beam", tests, NULL, NULL);
+}

@@ -1,0 +1,317 @@
+/* test_ex_dyn.c — the hard cases of chapter 4 (dynamics), through the real
+ * pipeline (text parameters -> validation -> solve -> JSON), read back
+ * with cJSON:
+ *   dyn-pendulum:        the separatrix (no period, the bob stays up), just
+ *                        below it (the logarithmic period), over the top,
+ *                        and the defaults against 20-digit values;
+ *   dyn-double-pendulum: the energy over 1,000 periods of the small
+ *                        oscillation (symplectic bounded, Dormand-Prince
+ *                        drifting), and chaos at the defaults;
+ *   dyn-robot-2link:     a target out of reach is a 422 naming the joint;
+ *                        the torques start from the static ones;
+ *   dyn-slider-crank:    coasting through its dead centres with zero
+ *                        torque, by both methods. */
+#include "mm_test.h"
+
+#include <cJSON.h>
+#include <float.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mm_api.h"
+#include "mm_pipeline.h"
+
+static const cJSON *find(const cJSON *doc, const char *list, const char *name)
+{
+    const cJSON *s;
+    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, list)) {
+        const cJSON *nm = cJSON_GetObjectItem(s, "name");
+        if (cJSON_IsString(nm) && strcmp(nm->valuestring, name) == 0)
+            return s;
+    }
+    return NULL;
+}
+
+static double scalar(const cJSON *doc, const char *name)
+{
+    const cJSON *s = find(doc, "scalars", name);
+    if (!s)
+        fail_msg("no scalar %s", name);
+    return cJSON_GetObjectItem(s, "value")->valuedouble;
+}
+
+static double scalar_error(const cJSON *doc, const char *name)
+{
+    return cJSON_GetObjectItem(find(doc, "scalars", name), "error")->valuedouble;
+}
+
+/* A series' y values (malloc'd) and its length. */
+static int series_y(const cJSON *doc, const char *name, double **y)
+{
+    const cJSON *s = find(doc, "series", name);
+    if (!s)
+        fail_msg("no series %s", name);
+    const cJSON *ys = cJSON_GetObjectItem(s, "y");
+    int n = cJSON_GetArraySize(ys);
+    *y = malloc((size_t)n * sizeof **y);
+    for (int i = 0; i < n; i++)
+        (*y)[i] = cJSON_GetArrayItem(ys, i)->valuedouble;
+    return n;
+}
+
+static double method_stat(const cJSON *doc, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItem(cJSON_GetObjectItem(doc, "method"), key);
+    if (!cJSON_IsNumber(v))
+        fail_msg("no method figure %s", key);
+    return v->valuedouble;
+}
+
+static int warned(const cJSON *doc, const char *word)
+{
+    const cJSON *w;
+    cJSON_ArrayForEach(w, cJSON_GetObjectItem(doc, "warnings"))
+        if (strstr(w->valuestring, word))
+            return 1;
+    return 0;
+}
+
+static int has_animation(const cJSON *doc)
+{
+    const cJSON *a = cJSON_GetObjectItem(doc, "animation");
+    return a && cJSON_GetArraySize(cJSON_GetObjectItem(a, "t")) >= 2 &&
+           cJSON_GetArraySize(cJSON_GetObjectItem(a, "t")) <= 240;
+}
+
+/* ---- dyn-pendulum ---------------------------------------------------------------- */
+
+static void pendulum_defaults_should_give_the_elliptic_period(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("dyn-pendulum", "");
+    /* mpmath: 4 / sqrt(9.81) K(m = sin^2(1/2)) = 2.1391376005586888448 */
+    check_rel(scalar(d, "period"), 2.1391376005586888448, 4 * DBL_EPSILON, "period by the AGM");
+    check_rel(scalar(d, "period_small"), 2 * M_PI / sqrt(9.81), 2 * DBL_EPSILON, "2 pi sqrt(L/g)");
+    /* mpmath findroot: 0.3981767846748320688, inside the error bound given */
+    check_abs(scalar(d, "theta_1pct"), 0.3981767846748320688, scalar_error(d, "theta_1pct"),
+              "1 % amplitude within its stated bound");
+    assert_true(scalar_error(d, "theta_1pct") < 1e-12);
+    assert_true(has_animation(d));
+    assert_non_null(find(d, "series", "theta"));
+    cJSON_Delete(d);
+}
+
+static void pendulum_at_the_separatrix_should_give_no_period_and_stay_up(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("dyn-pendulum", "theta0=pi&t_end=30");
+    assert_null(find(d, "scalars", "period"));
+    assert_true(warned(d, "separatrix"));
+    assert_int_equal((int)scalar(d, "motion"), 1);
+    double *th;
+    int n = series_y(d, "theta", &th);
+    for (int i = 0; i < n; i++)
+        assert_true(th[i] == M_PI);                /* balanced exactly: sin(pi) taken as 0 */
+    free(th);
+    check_rel(scalar(d, "period_small"), 2 * M_PI / sqrt(9.81), 2 * DBL_EPSILON, "still given");
+    cJSON_Delete(d);
+}
+
+static void pendulum_just_below_the_separatrix_should_have_the_logarithmic_period(void **state)
+{
+    (void)state;
+    /* theta0 = pi - 1e-6 (as the double nearest): kc = cos(theta0/2) ~ 5e-7 and
+     * K = ln(4/kc) + O(kc^2 ln kc): the period 4 K / omega_n to 1e-12 */
+    double th0 = M_PI - 1e-6, kc = cos(th0 / 2);
+    char q[64];
+    snprintf(q, sizeof q, "theta0=%.17g&t_end=40", th0);
+    cJSON *d = solve_ok("dyn-pendulum", q);
+    check_rel(scalar(d, "period"), 4 * log(4 / kc) / sqrt(9.81), 1e-12, "period ~ 4 ln(4/kc) / omega_n");
+    assert_true(scalar(d, "period_ratio") > 10);
+    assert_int_equal((int)scalar(d, "motion"), 0);
+    assert_true(warned(d, "separatrix"));
+    /* the swing reaches theta_max = theta0 and comes back through the bottom */
+    double *th;
+    int n = series_y(d, "theta", &th), crossed = 0;
+    for (int i = 1; i < n; i++)
+        crossed |= th[i - 1] > 0 && th[i] <= 0;
+    free(th);
+    assert_true(crossed);
+    cJSON_Delete(d);
+}
+
+static void pendulum_pushed_over_the_top_should_turn(void **state)
+{
+    (void)state;
+    /* k^2 = sin^2(1/2) + (7 / (2 sqrt 9.81))^2 > 1: it goes round */
+    cJSON *d = solve_ok("dyn-pendulum", "omega0=7&t_end=5");
+    assert_int_equal((int)scalar(d, "motion"), 2);
+    assert_null(find(d, "scalars", "theta_max"));
+    double *th;
+    int n = series_y(d, "theta", &th);
+    for (int i = 1; i < n; i++)
+        assert_true(th[i] > th[i - 1]);          /* always forward */
+    /* one turn per period */
+    check_rel(th[n - 1] - th[0], 2 * M_PI * 5 / scalar(d, "period"), 0.2, "turns = t_end / period, roughly");
+    free(th);
+    cJSON_Delete(d);
+}
+
+/* ---- dyn-double-pendulum --------------------------------------------------------- */
+
+static void double_pendulum_energy_over_1000_periods_should_stay_bounded_only_when_symplectic(void **state)
+{
+    (void)state;
+    /* small swings: the slow period 2 pi / 2.3972 = 2.621 s; 1,000 of them */
+    cJSON *d = solve_ok("dyn-double-pendulum", "theta1_0=0.05&theta2_0=0.05&t_end=2621&h=0.042");
+    double sy = method_stat(d, "symplectic_largest_energy_error"), dp = method_stat(d, "dopri5_largest_energy_error");
+    /* Gauss-4 at omega_fast h = 0.24: an O(h^4) error on an energy of
+     * 1e-3 of the scale, bounded: seen at 1e-12; Dormand-Prince at rtol 1e-6
+     * drifts to ~4e-6 */
+    assert_true(sy < 1e-10);
+    assert_true(dp > 1e4 * sy);
+    assert_null(find(d, "scalars", "lyapunov"));       /* regular: the twins stay together */
+    const cJSON *c;
+    int found = 0;
+    cJSON_ArrayForEach(c, cJSON_GetObjectItem(d, "checks"))
+        found |= strstr(cJSON_GetObjectItem(c, "name")->valuestring, "second half") != NULL;
+    assert_true(found);                                 /* the no-drift check ran, and passed */
+    /* the Dormand-Prince error grows: its last plotted value is near its largest */
+    double *e;
+    int n = series_y(d, "energy_error_dopri", &e);
+    assert_true(e[n - 1] > 0.5 * dp);
+    assert_true(e[n / 10] < 0.5 * dp);
+    free(e);
+    cJSON_Delete(d);
+}
+
+static void double_pendulum_defaults_should_be_chaotic(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("dyn-double-pendulum", "");
+    double lam = scalar(d, "lyapunov");
+    assert_true(lam - scalar_error(d, "lyapunov") > 0.5);   /* clearly positive: chaos */
+    assert_true(scalar(d, "t_horizon") > 10 && scalar(d, "t_horizon") < 30);
+    /* the linearised frequencies of two equal pendulums */
+    check_rel(scalar(d, "omega_slow"), sqrt((2 - sqrt(2)) * 9.81), 4 * DBL_EPSILON, "slow mode");
+    check_rel(scalar(d, "E0"), 3 * 9.81, 4 * DBL_EPSILON, "both rods horizontal: E - V_min = 3 m g l");
+    assert_true(has_animation(d));
+    cJSON_Delete(d);
+}
+
+/* ---- dyn-robot-2link -------------------------------------------------------------- */
+
+static void expect_unreachable(const char *query, const char *param)
+{
+    answer a = solve("dyn-robot-2link", query);
+    const cJSON *e = cJSON_GetObjectItem(a.doc, "error");
+    if (a.status != 422 || strcmp(cJSON_GetObjectItem(e, "code")->valuestring, "no_solution") != 0 ||
+        strcmp(cJSON_GetObjectItem(e, "param")->valuestring, param) != 0 ||
+        !strstr(cJSON_GetObjectItem(e, "message")->valuestring, "out of reach")) {
+        char *s = cJSON_PrintUnformatted(a.doc);
+        fail_msg("%s: expected 422 naming %s, got %d %.300s", query, param, a.status, s);
+    }
+    cJSON_Delete(a.doc);
+}
+
+static void robot_commanded_out_of_reach_should_say_which_joint(void **state)
+{
+    (void)state;
+    expect_unreachable("q2_1=pi", "q2_1");
+    expect_unreachable("q2_1=-pi", "q2_1");
+    expect_unreachable("q2_0=pi&q2_1=1", "q2_0");
+    /* one step inside the range is reachable, and the folded arm is reported */
+    cJSON *d = solve_ok("dyn-robot-2link", "q2_1=3.14");
+    assert_true(warned(d, "folding"));
+    cJSON_Delete(d);
+}
+
+static void robot_defaults_should_start_from_the_static_torques(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("dyn-robot-2link", "");
+    double *t1, *t2;
+    series_y(d, "tau1", &t1);
+    series_y(d, "tau2", &t2);
+    /* at t = 0 the quintic has q'' = 0: the arm stretched along +x holds
+     * g (m1 l1/2 + m2 (l1 + l2/2)) = 19.62 N m and g m2 l2 / 2 = 4.905 N m */
+    check_rel(t1[0], 9.81 * (0.5 + 1.5), 4 * DBL_EPSILON, "shoulder at t = 0");
+    check_rel(t2[0], 9.81 * 0.5, 4 * DBL_EPSILON, "elbow at t = 0");
+    free(t1);
+    free(t2);
+    check_rel(scalar(d, "reach_max"), 2, 0, "stretched at the start: l1 + l2");
+    check_abs(scalar(d, "t_singular"), 0, 0, "singular at t = 0");
+    assert_true(warned(d, "stretched"));
+    /* from along +x (V = 0) to link 1 up, link 2 back along -x at height l1:
+     * m1 g l1/2 + m2 g l1 */
+    check_rel(scalar(d, "delta_V"), 9.81 * (0.5 + 1), 4 * DBL_EPSILON, "rise of the potential energy");
+    assert_true(has_animation(d));
+    cJSON_Delete(d);
+}
+
+/* ---- dyn-slider-crank -------------------------------------------------------------- */
+
+static void slider_crank_should_coast_through_its_dead_centres(void **state)
+{
+    (void)state;
+    static const char *const qs[] = {"", "method=partitioning", "alpha=0"};
+    for (int k = 0; k < 3; k++) {
+        cJSON *d = solve_ok("dyn-slider-crank", qs[k]);
+        double *w;
+        int n = series_y(d, "omega", &w);
+        for (int i = 0; i < n; i++)
+            assert_true(w[i] > 80 && w[i] <= 100 * (1 + 1e-9));   /* never stops, never exceeds omega0 */
+        free(w);
+        /* 7.4 turns: through 14 dead centres; at each the speed is back to
+         * omega0 (J is smallest there and the energy the same) */
+        assert_true(scalar(d, "revolutions") > 7);
+        check_rel(scalar(d, "omega_max"), 100, 1e-8, "omega at the dead centres = omega0");
+        /* the lowest speed from the energy: omega0 sqrt(J(0) / J_max) */
+        double wmin = 100 * sqrt(scalar(d, "J_dead_centre") / scalar(d, "J_max"));
+        check_abs(scalar(d, "omega_min"), wmin, 2 * scalar_error(d, "omega_min") + 1e-6,
+                  "omega_min = omega0 sqrt(J0 / J_max), within its estimated error");
+        double *dr;
+        int nd = series_y(d, "drift", &dr);
+        double dmax = 0;
+        for (int i = 0; i < nd; i++)
+            dmax = fmax(dmax, dr[i]);
+        free(dr);
+        if (k == 1)
+            assert_true(dmax < 1e-15);                        /* partitioning: round-off */
+        else
+            assert_true(dmax < 1e-9);
+        assert_true(has_animation(d));
+        cJSON_Delete(d);
+    }
+}
+
+static void slider_crank_with_a_torque_should_gain_its_work(void **state)
+{
+    (void)state;
+    /* torque 50 N m over the run: the energy check holds, the crank speeds up */
+    cJSON *d = solve_ok("dyn-slider-crank", "torque=50");
+    assert_true(scalar(d, "omega_end") > 100);
+    cJSON_Delete(d);
+    /* a rod shorter than the crank cannot turn: refused naming l */
+    answer a = solve("dyn-slider-crank", "r=0.5&l=0.4");
+    assert_int_equal(a.status, 400);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetObjectItem(a.doc, "error"), "param")->valuestring, "l");
+    cJSON_Delete(a.doc);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(pendulum_defaults_should_give_the_elliptic_period),
+        cmocka_unit_test(pendulum_at_the_separatrix_should_give_no_period_and_stay_up),
+        cmocka_unit_test(pendulum_just_below_the_separatrix_should_have_the_logarithmic_period),
+        cmocka_unit_test(pendulum_pushed_over_the_top_should_turn),
+        cmocka_unit_test(double_pendulum_energy_over_1000_periods_should_stay_bounded_only_when_symplectic),
+        cmocka_unit_test(double_pendulum_defaults_should_be_chaotic),
+        cmocka_unit_test(robot_commanded_out_of_reach_should_say_which_joint),
+        cmocka_unit_test(robot_defaults_should_start_from_the_static_torques),
+        cmocka_unit_test(slider_crank_should_coast_through_its_dead_centres),
+        cmocka_unit_test(slider_crank_with_a_torque_should_gain_its_work),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
