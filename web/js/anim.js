@@ -13,7 +13,7 @@
 // compression (coloured by the sign of the shape's value when it has one),
 // ground (hatched), highlight.
 
-import { fmtNumber, unitText, escapeHtml, el, decimalSep } from './format.js';
+import { fmtNumber, unitText, escapeHtml, el, decimalSep } from './format.js?v=__MM_ASSET_VERSION__';
 
 const SVGNS = 'http://www.w3.org/2000/svg';
 let uid = 0;

@@ -2,11 +2,11 @@
 // started the request), with a search box that filters as you type (title,
 // summary, tags, id, section; in the page's language and in English).
 
-import { el } from './format.js';
+import { el } from './format.js?v=__MM_ASSET_VERSION__';
 import {
   initLang, t, english, translateDocument, exerciseText, chapterTitle, sectionTitle, siteUrl,
-} from './i18n.js';
-import { wirePrefs } from './prefs.js';
+} from './i18n.js?v=__MM_ASSET_VERSION__';
+import { wirePrefs } from './prefs.js?v=__MM_ASSET_VERSION__';
 
 const $ = (s) => document.querySelector(s);
 const boot = window.mmBoot || {};
@@ -32,7 +32,7 @@ function render(list) {
       if (title === e.title) english(tt);
       if (summary === e.summary) english(sm);
       ol.append(el('li', { class: 'exercise', 'data-id': e.id, 'data-search': haystack(e) },
-        el('a', { href: siteUrl('/exercise.html', { id: e.id }) },
+        el('a', { href: siteUrl('exercise.html', { id: e.id }) },
           el('span', { class: 'secnum', text: e.section }), tt),
         sm,
         el('p', { class: 'exmeta' },
@@ -67,12 +67,12 @@ async function main() {
   await initLang(boot.dict);
   translateDocument();
   wirePrefs(() => {
-    for (const a of document.querySelectorAll('#toc li.exercise > a')) a.href = siteUrl('/exercise.html', { id: a.closest('li').dataset.id });
+    for (const a of document.querySelectorAll('#toc li.exercise > a')) a.href = siteUrl('exercise.html', { id: a.closest('li').dataset.id });
   });
   const q = $('#q');
   let list;
   try {
-    const r = boot.catalog ? await boot.catalog : await fetch('/api/exercises').then(async (x) => ({ ok: x.ok, body: await x.json() }));
+    const r = boot.catalog ? await boot.catalog : await fetch('api/exercises').then(async (x) => ({ ok: x.ok, body: await x.json() }));
     list = r.body;
     if (!r.ok) throw new Error(list.error ? list.error.message : 'HTTP error');
   } catch (e) {
@@ -89,7 +89,7 @@ async function main() {
     const u = new URL(location.href);
     if (q.value.trim()) u.searchParams.set('q', q.value.trim()); else u.searchParams.delete('q');
     const s = u.searchParams.toString();
-    history.replaceState(null, '', (s ? `/?${s}` : '/') + location.hash);
+    history.replaceState(null, '', location.pathname + (s ? `?${s}` : '') + location.hash);
   });
   q.addEventListener('keydown', (e) => {
     if (e.key === 'Escape') { q.value = ''; q.dispatchEvent(new Event('input')); }

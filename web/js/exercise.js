@@ -15,15 +15,15 @@
 
 import {
   fmtNumber, fmtScalar, inputText, unitHtml, unitText, escapeHtml, encodeValue, el,
-} from './format.js';
-import { planFigures, drawFigure, figureTables, pageTheme, LIGHT, standaloneSvg, svgDocument } from './plot.js';
-import { createPlayer, animFrameSvg } from './anim.js';
+} from './format.js?v=__MM_ASSET_VERSION__';
+import { planFigures, drawFigure, figureTables, pageTheme, LIGHT, standaloneSvg, svgDocument } from './plot.js?v=__MM_ASSET_VERSION__';
+import { createPlayer, animFrameSvg } from './anim.js?v=__MM_ASSET_VERSION__';
 import {
   initLang, t, english, translateDocument, currentLang, exerciseText, isTranslated, paramText,
   outputLabel, chapterTitle, sectionTitle, hasTheory, siteUrl,
-} from './i18n.js';
-import { wirePrefs } from './prefs.js';
-import { extensions } from './ex/registry.js';
+} from './i18n.js?v=__MM_ASSET_VERSION__';
+import { wirePrefs } from './prefs.js?v=__MM_ASSET_VERSION__';
+import { extensions } from './ex/registry.js?v=__MM_ASSET_VERSION__';
 
 const DEBOUNCE_MS = 150;
 const RESERVED = new Set(['id', 'lang', 'scheme', 'embed']);
@@ -56,7 +56,7 @@ const state = {
   extension: { listeners: [], undo: null, started: false },
 };
 
-const apiBase = () => `/api/exercises/${encodeURIComponent(state.id)}`;
+const apiBase = () => `api/exercises/${encodeURIComponent(state.id)}`;
 
 // ---- the query ---------------------------------------------------------------
 
@@ -163,6 +163,10 @@ async function solve(query, edit) {
     state.error = body.error || { code: 'http', param: '', message: `HTTP ${res.status}` };
     showError();
     announce(t('announce_error'));
+    // an extension hears the refusal too (the truss editor names the mechanism)
+    for (const cb of state.extension.listeners) {
+      try { cb({ error: state.error }); } catch (e) { console.error(e); }
+    }
   } else {
     state.error = null;
     state.answer = body;
@@ -942,7 +946,7 @@ function downloadAll() {
 
 function curlLine() {
   const q = state.meta ? (state.error ? state.answerQuery : queryFromForm()) : queryFromUrl();
-  return `curl '${location.origin}${solveUrl(q)}'`;
+  return `curl '${new URL(solveUrl(q), location.href).href}'`;
 }
 
 function updateCurl() {
@@ -1032,7 +1036,7 @@ function renderMeta(meta) {
   const summary = exerciseText(meta.id, 'summary', meta.summary);
   document.title = `${title} — mechmat`;
   $('#crumb-chapter').textContent = `${meta.chapter} ${chapterTitle(meta.chapter, meta.chapter_title || '')}`.trim();
-  $('#crumb-chapter').href = siteUrl('/') + `#ch-${meta.chapter}`;
+  $('#crumb-chapter').href = siteUrl('./') + `#ch-${meta.chapter}`;
   $('#crumb-section').textContent = `${meta.section} ${sectionTitle(meta.section, meta.section_title || '')}`.trim();
   $('#title').textContent = title;
   $('#summary').textContent = summary;
@@ -1042,7 +1046,7 @@ function renderMeta(meta) {
   for (const tg of meta.tags || []) $('#tags').append(english(el('li', { text: tg })));
   setTheory(meta.theory_html || '', hasTheory(meta.id) ? null : 'en');
   if (hasTheory(meta.id)) {
-    fetch(`/i18n/theory/${currentLang()}/${encodeURIComponent(meta.id)}.html`)
+    fetch(`i18n/theory/${currentLang()}/${encodeURIComponent(meta.id)}.html`)
       .then((r) => (r.ok ? r.text() : Promise.reject(new Error(r.status))))
       .then((html) => { setTheory(html, null); typeset(); })
       .catch(() => {});
@@ -1080,12 +1084,12 @@ async function typeset() {
     // KaTeX's style sheet and code are loaded only now, after the first answer is drawn
     const css = new Promise((resolve) => {
       if (document.getElementById('katex-css')) return resolve();
-      const link = el('link', { id: 'katex-css', rel: 'stylesheet', href: '/vendor/katex/dist/katex.min.css' });
+      const link = el('link', { id: 'katex-css', rel: 'stylesheet', href: 'vendor/katex/dist/katex.min.css?v=__MM_ASSET_VERSION__' });
       link.addEventListener('load', resolve);
       link.addEventListener('error', resolve);
       document.head.append(link);
     });
-    const [{ default: katex }] = await Promise.all([import('/vendor/katex/dist/katex.mjs'), css]);
+    const [{ default: katex }] = await Promise.all([import('../vendor/katex/dist/katex.mjs?v=__MM_ASSET_VERSION__'), css]);
     for (const n of nodes) {
       const display = n.classList.contains('math-display');
       try {
@@ -1096,7 +1100,14 @@ async function typeset() {
       }
     }
   }
+  // a display's width is known only in its own fonts: measure once the main
+  // ones are in, and again whenever more arrive (a box that then overflows
+  // must become reachable by keyboard)
+  try {
+    await Promise.all([document.fonts.load('1em KaTeX_Main'), document.fonts.load('italic 1em KaTeX_Math')]);
+  } catch { /* measured in the fallback font; loadingdone measures again */ }
   focusableScrollers();
+  document.fonts.addEventListener('loadingdone', focusableScrollers);
   document.documentElement.dataset.typeset = 'done';
 }
 
@@ -1118,11 +1129,11 @@ function focusableScrollers() {
 
 async function neighbours() {
   try {
-    const list = await (await fetch('/api/exercises')).json();
+    const list = await (await fetch('api/exercises')).json();
     const i = list.findIndex((e) => e.id === state.id);
     const nav = $('#pager');
     nav.textContent = '';
-    const link = (e, rel, arrow) => el('a', { href: siteUrl('/exercise.html', { id: e.id }), rel, class: rel },
+    const link = (e, rel, arrow) => el('a', { href: siteUrl('exercise.html', { id: e.id }), rel, class: rel },
       el('span', { class: 'muted', text: `${arrow} ${e.section}` }), ' ', exerciseText(e.id, 'title', e.title));
     if (i > 0) nav.append(link(list[i - 1], 'prev', '←'));
     if (i >= 0 && i < list.length - 1) nav.append(link(list[i + 1], 'next', '→'));
@@ -1143,7 +1154,7 @@ async function main() {
   translateDocument();
   wirePrefs(themeForMedia);
   wireTakeaway();
-  for (const a of document.querySelectorAll('a.brand, #crumb-home, footer.site a')) a.href = siteUrl('/');
+  for (const a of document.querySelectorAll('a.brand, #crumb-home, footer.site a')) a.href = siteUrl('./');
   if (state.embed) document.documentElement.dataset.embed = state.embed;
   if (!state.id) return fatal(t('no_id'));
   let metaResolve;

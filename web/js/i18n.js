@@ -10,7 +10,7 @@
 // translation is shown in English.  Numbers are formatted per language in
 // the page only (format.js); the API and the inputs keep the dot.
 
-import { setDecimal } from './format.js';
+import { setDecimal } from './format.js?v=__MM_ASSET_VERSION__';
 
 export const LANGS = { en: 'English', cs: 'Čeština', de: 'Deutsch' };
 
@@ -132,6 +132,33 @@ export const EN = {
   col_unit: 'unit',
   printed_from: 'Printed from {url}',
   open_in: 'Open in mechmat',
+  skip_answers: 'Skip to the answers',
+  assignment: 'Assignment',
+  a_who: 'Who is solving it?',
+  a_who_hint: 'Your variant of the assignment depends on the name or number your teacher gave you.',
+  a_name: 'Assignment',
+  a_student: 'Student',
+  a_open: 'Open my variant',
+  a_for: 'Variant of {student}',
+  a_no_such: 'There is no assignment “{name}” in this course.',
+  a_theory: 'The exercise and its theory',
+  a_answers: 'Your answers',
+  a_answers_hint: 'A number with its unit, e.g. 256.6 N, or in the unit given.',
+  a_check: 'Check',
+  a_print: 'Print the sheet',
+  a_results: 'Checked',
+  a_correct: 'correct',
+  a_wrong: 'not correct',
+  a_expected: 'expected {x}',
+  a_quantity: 'quantity',
+  a_given: 'your answer',
+  a_expected_col: 'expected',
+  a_tolerance: 'tolerance',
+  a_verdict: 'verdict',
+  a_note: 'note',
+  a_score: 'Score {score} of {max}: {right} of {n} answers correct.',
+  a_right: '{right} of {n} answers correct.',
+  a_not_checked: 'Not checked:',
 };
 
 let lang = 'en';
@@ -154,7 +181,7 @@ export async function initLang(preloaded) {
   lang = chooseLang();
   if (lang !== 'en') {
     try {
-      const m = await (preloaded || import(`/i18n/${lang}.js`));
+      const m = await (preloaded || import(`../i18n/${lang}.js?v=__MM_ASSET_VERSION__`));
       tr = { ui: {}, chapters: {}, sections: {}, exercises: {}, theory: [], ...m.default };
       dict = { ...EN, ...tr.ui };
     } catch {

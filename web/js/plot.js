@@ -15,7 +15,7 @@
 // overlaps.  One colour per quantity across the figures of a page (a method
 // keeps its colour in every figure), a reference dashed under the result.
 
-import { fmtNumber, unitText, supText, escapeHtml, decimalSep } from './format.js';
+import { fmtNumber, unitText, supText, escapeHtml, decimalSep } from './format.js?v=__MM_ASSET_VERSION__';
 
 const SVGNS = 'http://www.w3.org/2000/svg';
 const MINUS = '\u2212';

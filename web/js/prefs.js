@@ -4,8 +4,8 @@
 // so that a link or a bookmark keeps them; boot.js applies the scheme
 // before the first paint.
 
-import { el } from './format.js';
-import { t, currentLang, LANGS } from './i18n.js';
+import { el } from './format.js?v=__MM_ASSET_VERSION__';
+import { t, currentLang, LANGS } from './i18n.js?v=__MM_ASSET_VERSION__';
 
 function setParam(k, v) {
   const u = new URL(location.href);
