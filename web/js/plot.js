@@ -334,16 +334,21 @@ function locNum(s) {
  *  (none for whole numbers). */
 function linearAxis(lo, hi, count, { nice = true, integer = false } = {}) {
   if (!(Number.isFinite(lo) && Number.isFinite(hi))) { lo = 0; hi = 1; }
-  if (lo === hi) {
-    const d = lo === 0 ? 1 : Math.abs(lo) * 0.1;
-    lo -= d; hi += d;
+  // a flat series (equal values, or equal but for round-off: 84.40971508067067
+  // and …068) gets a range around its value; a step of 1e-15 beside 84 would
+  // count ticks past 2^53, where i++ no longer moves
+  if (hi - lo <= 1e-9 * Math.max(Math.abs(lo), Math.abs(hi))) {
+    const mid = (lo + hi) / 2;
+    const d = mid === 0 ? 1 : Math.abs(mid) * 0.1;
+    lo = mid - d; hi = mid + d;
   }
   let step = niceStep(hi - lo, count);
   if (integer && step < 1) step = 1;
   let a = lo, b = hi;
   if (nice) { a = Math.floor(lo / step + 1e-9) * step; b = Math.ceil(hi / step - 1e-9) * step; }
   const ticks = [];
-  for (let i = Math.ceil(a / step - 1e-9); i <= Math.floor(b / step + 1e-9); i++) ticks.push(Number((i * step).toPrecision(12)));
+  const i0 = Math.ceil(a / step - 1e-9), i1 = Math.min(Math.floor(b / step + 1e-9), i0 + 100);
+  for (let i = i0; i <= i1; i++) ticks.push(Number((i * step).toPrecision(12)));
   const m = Math.max(Math.abs(a), Math.abs(b));
   let exp = 0;
   if (m > 0 && (m >= 1e4 || m < 1e-2)) exp = 3 * Math.floor(Math.log10(m) / 3);
