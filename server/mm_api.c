@@ -1,6 +1,8 @@
 /* mm_api.c — API.md's documents and the solve pipeline (see mm_api.h). */
 #include "mm_api.h"
 
+#include "mm_assign.h"
+
 #include <cJSON.h>
 #include <math.h>
 #include <pthread.h>
@@ -18,8 +20,11 @@
 
 struct mm_api {
     mm_course *course;           /* owned */
-    mm_doc health, catalog, course_doc, openapi;
+    mm_doc health, catalog, course_doc, openapi, assignments_doc;
     mm_doc *meta;                /* one document per exercise of the course */
+    char **scripts;              /* one script body per exercise, or NULL */
+    mm_assignment **assign;      /* the course's assignments, in file order */
+    int n_assign;
 };
 
 static long long now_us(void)
@@ -1047,6 +1052,42 @@ mm_api *mm_api_alloc(const char *root, mm_error *err)
     return mm_api_alloc_course(root, c, err);
 }
 
+/* Every assignment of the course, checked against its exercise; a bad one
+ * fails the course with its line.  What the instructor should know about
+ * them (duplicate variants) goes to the log. */
+static int load_assignments(mm_api *api, mm_error *err)
+{
+    const mm_course *c = api->course;
+    int n = mm_course_assignment_count(c);
+    api->assign = calloc((size_t)n + 1, sizeof *api->assign);
+    if (!api->assign)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_buf notes;
+    mm_buf_init(&notes, 1 << 16);
+    int rc = MM_OK;
+    for (int i = 0; i < n && rc == MM_OK; i++) {
+        const cJSON *j = mm_course_assignment(c, i);
+        const char *id = mm_assign_exercise_id(j);
+        const mm_exercise *ex = id ? mm_course_find(c, id) : NULL;
+        mm_error e2;
+        mm_error_clear(&e2);
+        if (!ex)
+            rc = mm_error_set(&e2, MM_EVALUE, "exercise", "\"exercise\" must name an exercise of this course%s%.60s%s",
+                              id ? " ('" : "", id ? id : "", id ? "' is not one)" : "");
+        else
+            rc = mm_assign_load(j, ex, &api->assign[i], &notes, &e2);
+        if (rc != MM_OK)
+            mm_error_set(err, MM_EVALUE, e2.param, "line %d: assignment %s: %s", mm_course_line(c, j),
+                         mm_course_assignment_name(c, i), e2.msg);
+        else
+            api->n_assign++;
+    }
+    if (rc == MM_OK && notes.len)
+        fprintf(stderr, "mechmat: %.*s", (int)notes.len, notes.p);
+    mm_buf_free(&notes);
+    return rc;
+}
+
 mm_api *mm_api_alloc_course(const char *root, mm_course *course, mm_error *err)
 {
     mm_api *api = calloc(1, sizeof *api);
@@ -1058,7 +1099,8 @@ mm_api *mm_api_alloc_course(const char *root, mm_course *course, mm_error *err)
     api->course = course;
     int n = mm_course_exercise_count(course);
     api->meta = calloc((size_t)n + 1, sizeof *api->meta);
-    if (!api->meta)
+    api->scripts = calloc((size_t)n + 1, sizeof *api->scripts);
+    if (!api->meta || !api->scripts)
         goto nomem;
     mm_api_build_id();
 
@@ -1071,7 +1113,10 @@ mm_api *mm_api_alloc_course(const char *root, mm_course *course, mm_error *err)
                 mm_error_set(err, MM_EINTERNAL, "", "%s has over %d parameters", ex->id, MM_MAX_PARAMS);
             goto fail;
         }
+        char path[4096];
         size_t len = 0;
+        snprintf(path, sizeof path, "%s/%.*sm", root, (int)strlen(ex->theory) - 2, ex->theory);
+        api->scripts[i] = read_file(path, &len);       /* a missing body: the route says so */
         char *text = build_meta(ex, root, &len);
         mm_buf b = {.p = text, .len = len, .cap = len + 1, .max = len + 1};
         if (!text || set_doc(&api->meta[i], &b) != MM_OK) {
@@ -1120,6 +1165,23 @@ mm_api *mm_api_alloc_course(const char *root, mm_course *course, mm_error *err)
     if (set_doc(&api->course_doc, &b) != MM_OK)
         goto nomem;
 
+    if (load_assignments(api, err) != MM_OK)
+        goto fail;
+    mm_buf_init(&b, 1u << 20);
+    mm_buf_char(&b, '[');
+    for (int i = 0; i < api->n_assign; i++) {
+        if (i)
+            mm_buf_char(&b, ',');
+        mm_buf_puts(&b, "{\"name\":");
+        mm_buf_str(&b, mm_assign_name(api->assign[i]));
+        field_str(&b, "title", mm_assign_title(api->assign[i]));
+        field_str(&b, "exercise", mm_assign_exercise(api->assign[i])->id);
+        mm_buf_char(&b, '}');
+    }
+    mm_buf_char(&b, ']');
+    if (set_doc(&api->assignments_doc, &b) != MM_OK)
+        goto nomem;
+
     mm_buf_init(&b, 64u << 20);
     mm_openapi_write(&b, course);
     if (set_doc(&api->openapi, &b) != MM_OK) {
@@ -1141,6 +1203,13 @@ void mm_api_free(mm_api *api)
     int n = api->course ? mm_course_exercise_count(api->course) : 0;
     for (int i = 0; api->meta && i < n; i++)
         free_doc(&api->meta[i]);
+    for (int i = 0; api->scripts && i < n; i++)
+        free(api->scripts[i]);
+    free(api->scripts);
+    for (int i = 0; i < api->n_assign; i++)
+        mm_assign_free(api->assign[i]);
+    free(api->assign);
+    free_doc(&api->assignments_doc);
     free(api->meta);
     free_doc(&api->health);
     free_doc(&api->catalog);
@@ -1151,6 +1220,25 @@ void mm_api_free(mm_api *api)
 }
 
 const mm_course *mm_api_course(const mm_api *api) { return api->course; }
+
+const char *mm_api_script_body(const mm_api *api, const char *id)
+{
+    int n = mm_course_exercise_count(api->course);
+    for (int i = 0; i < n; i++)
+        if (strcmp(mm_course_exercise(api->course, i)->id, id) == 0)
+            return api->scripts[i];
+    return NULL;
+}
+
+const mm_assignment *mm_api_assignment(const mm_api *api, const char *name)
+{
+    for (int i = 0; i < api->n_assign; i++)
+        if (strcmp(mm_assign_name(api->assign[i]), name) == 0)
+            return api->assign[i];
+    return NULL;
+}
+
+const mm_doc *mm_api_doc_assignments(const mm_api *api) { return &api->assignments_doc; }
 
 const mm_exercise *mm_api_exercise(const mm_api *api, const char *id)
 {

@@ -53,6 +53,18 @@ mm_api *mm_api_alloc_course(const char *root, mm_course *course, mm_error *err);
 void mm_api_free(mm_api *api);
 
 const mm_course *mm_api_course(const mm_api *api);
+
+/* The body of an exercise's Octave/MATLAB script (its <name>.m beside the
+ * theory), read at start; NULL when it has none. */
+const char *mm_api_script_body(const mm_api *api, const char *id);
+
+/* The course's assignments, loaded and checked with the course (a bad one
+ * makes the whole course fail with its line); NULL when there is none of
+ * that name.  mm_assign.h has what can be done with one. */
+typedef struct mm_assignment mm_assignment;
+const mm_assignment *mm_api_assignment(const mm_api *api, const char *name);
+/* GET /api/assignments: [{"name","title","exercise"}] */
+const mm_doc *mm_api_doc_assignments(const mm_api *api);
 /* An exercise of the course (its overrides applied), NULL when the course
  * has none of that id. */
 const mm_exercise *mm_api_exercise(const mm_api *api, const char *id);

@@ -146,6 +146,7 @@ int mm_draw_text(const mm_param *p, mm_rng *g, char *out, size_t size)
 int mm_draw_request(const mm_exercise *ex, mm_rng *g, int tries, mm_draw_set *set, mm_error *err)
 {
     int rc = MM_EINTERNAL;
+    int keep[MM_MAX_PARAMS] = {0}, streak[MM_MAX_PARAMS] = {0};
     mm_error_clear(err);
     for (int t = 0; t < (tries > 0 ? tries : 1); t++) {
         set->n = 0;
@@ -154,6 +155,8 @@ int mm_draw_request(const mm_exercise *ex, mm_rng *g, int tries, mm_draw_set *se
             rc = mm_draw_text(p, g, set->texts[k], sizeof set->texts[k]);
             if (rc != MM_OK)
                 return mm_error_set(err, rc, p->name, "%s: no value could be drawn for %s", ex->id, p->name);
+            if (keep[k])
+                snprintf(set->texts[k], sizeof set->texts[k], "%s", p->def_text);
             set->in[k] = (mm_input){p->name, set->texts[k], strlen(p->name), strlen(set->texts[k])};
             set->n++;
         }
@@ -162,6 +165,14 @@ int mm_draw_request(const mm_exercise *ex, mm_rng *g, int tries, mm_draw_set *se
         rc = mm_api_resolve(&s, set->in, set->n);
         if (rc != MM_OK && err)
             *err = s.err;
+        /* A structure (a truss's members, a mesh) drawn at random rarely
+         * holds together: a vector or matrix named by three refusals in a
+         * row keeps its default, and the rest still varies. */
+        for (int k = 0; rc != MM_OK && k < ex->n_params && k < MM_MAX_PARAMS; k++)
+            if (strcmp(ex->params[k].name, s.err.param) == 0 &&
+                (ex->params[k].kind == MM_MATRIX || ex->params[k].kind == MM_VECTOR) && ex->params[k].def_text &&
+                ++streak[k] >= 3)
+                keep[k] = 1;
         mm_solve_free(&s);
         if (rc == MM_OK)
             return MM_OK;

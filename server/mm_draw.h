@@ -55,7 +55,9 @@ int mm_draw_text(const mm_param *p, mm_rng *g, char *out, size_t size);
 
 /* A whole request: every parameter of ex drawn (texts[k] for parameter k,
  * in[k] pointing at it), resolved, and drawn again while the exercise's
- * joint check refuses it, up to `tries` times.  Returns MM_OK, or the last
+ * joint check refuses it, up to `tries` times (a vector or matrix the
+ * check names three times in a row keeps its default from then on: a
+ * random truss rarely holds together).  Returns MM_OK, or the last
  * refusal (MM_ERANGE/MM_EVALUE, err filled) when every try was refused. */
 #define MM_DRAW_TEXT_MAX 8192
 typedef struct mm_draw_set {

@@ -23,8 +23,10 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include "mm_assign.h"
 #include "mm_cache.h"
 #include "mm_hash.h"
+#include "mm_script.h"
 
 #define DISCARD_MAX   (16u << 20)   /* a body over the limit read and dropped up to this */
 #define GZ_MIN        1024          /* smaller answers go as they are */
@@ -54,7 +56,7 @@ typedef struct zdoc {              /* a document and its gzip form */
 typedef struct site {
     mm_api *api;
     atomic_int refs;
-    zdoc health, catalog, course, openapi;
+    zdoc health, catalog, course, openapi, assignments;
     zdoc *meta;                    /* one per exercise of the course */
     int n_meta;
     char base[256];                /* the course's base path without its last '/', "" for "/" */
@@ -139,11 +141,22 @@ struct mm_server {
     int q_cap, q_head, q_len, stopping;
 };
 
+/* A job is a solve, or an assignment task (a check, a key, a class CSV):
+ * work that solves the exercise once or many times and so is kept off
+ * the event threads.  A task's answer goes through a private cache entry
+ * (a key no other request has, never kept) so that it reaches its request
+ * the way a solve does. */
+enum { TASK_NONE, TASK_CHECK, TASK_KEY, TASK_CSV };
+
 struct job {
     mm_solve *solve;
     mm_entry *entry;
     site *site;
     int want_gz;
+    int task;                      /* TASK_NONE for a solve */
+    const mm_assignment *asg;      /* a task's, alive while site is */
+    char *text;                    /* a task's input: the body, or the student */
+    size_t text_len;
 };
 
 /* Per-request state, from the first callback to the completion notice. */
@@ -163,6 +176,7 @@ typedef struct req {
     int shared;                    /* waited for another request's solve */
     int want_gz;
     size_t sent;
+    const char *task_type;         /* R_WAIT on a task: its Content-Type, else NULL */
 } req;
 
 static long long now_us(void)
@@ -184,6 +198,7 @@ static void site_unref(site *st)
     free(st->catalog.gz);
     free(st->course.gz);
     free(st->openapi.gz);
+    free(st->assignments.gz);
     for (int i = 0; i < st->n_meta; i++)
         free(st->meta[i].gz);
     free(st->meta);
@@ -227,6 +242,7 @@ static site *site_new(mm_api *api)
     zdoc_make(&st->catalog, mm_api_doc_catalog(api));
     zdoc_make(&st->course, mm_api_doc_course(api));
     zdoc_make(&st->openapi, mm_api_doc_openapi(api));
+    zdoc_make(&st->assignments, mm_api_doc_assignments(api));
     for (int i = 0; i < st->n_meta; i++)
         zdoc_make(&st->meta[i], mm_api_doc_meta(api, mm_course_exercise(c, i)->id));
     snprintf(st->base, sizeof st->base, "%s", mm_course_base_path(c));
@@ -898,8 +914,10 @@ static enum MHD_Result send_entry(req *r, const char *method, const char *url, m
         snprintf(timing, sizeof timing, "cache;desc=\"hit\"");
     else
         snprintf(timing, sizeof timing, "cache;desc=\"%s\", solve;dur=%.3f", how, (double)e->solve_us * 1e-3);
-    int ok = e->status == 200 || mm_http_status(MM_ESINGULAR) == e->status;
-    answer a = {.status = e->status, .type = "application/json", .body = gz ? gz_body : e->body,
+    int ok = (e->status == 200 || mm_http_status(MM_ESINGULAR) == e->status) && !r->task_type;
+    const char *type = r->task_type && e->status == 200 ? r->task_type : "application/json";
+    r->task_type = NULL;
+    answer a = {.status = e->status, .type = type, .body = gz ? gz_body : e->body,
                 .len = gz ? gz_len : e->len, .free_fn = entry_unref_cb, .free_cls = e,
                 .etag = ok ? etag : NULL, .cache_control = ok ? "no-cache" : "no-store", .gzip = gz,
                 .vary = 1, .timing = timing};
@@ -927,8 +945,35 @@ static atomic_size_t *hint_of(const char *id)
     return &size_hint[h & 255];
 }
 
+static void run_task(mm_server *s, job *j)
+{
+    mm_buf out;
+    mm_buf_init(&out, j->task == TASK_CSV ? 64u << 20 : MM_ANSWER_MAX);
+    long long t0 = now_us();
+    int status = j->task == TASK_CHECK ? mm_assign_check_json(j->asg, j->text, j->text_len, &out)
+                 : j->task == TASK_KEY ? mm_assign_key_json(j->asg, j->text, &out)
+                                       : mm_assign_csv(j->asg, j->text, j->text_len, &out);
+    size_t len = 0;
+    char *body = out.failed ? NULL : mm_buf_take(&out, &len);
+    if (!body) {
+        body = strdup("{\"error\":{\"code\":\"too_large\",\"param\":null,\"message\":\"the answer is too large\"}}");
+        len = body ? strlen(body) : 0;
+        status = 413;
+    }
+    mm_cache_fill(s->cache, j->entry, status, body, len, NULL, 0, now_us() - t0, 0, wake);
+    mm_buf_free(&out);
+    free(j->text);
+    mm_cache_unref(j->entry);
+    site_unref(j->site);
+    free(j);
+}
+
 static void run_job(mm_server *s, job *j)
 {
+    if (j->task != TASK_NONE) {
+        run_task(s, j);
+        return;
+    }
     mm_buf out;
     mm_buf_init(&out, MM_ANSWER_MAX);
     atomic_size_t *hint = hint_of(j->solve->ex->id);
@@ -1023,20 +1068,19 @@ static enum MHD_Result h_openapi(ctx *x) { return send_doc(x->r, x->method, x->f
 static enum MHD_Result h_metrics(ctx *x);
 static enum MHD_Result h_meta(ctx *x);
 static enum MHD_Result h_solve(ctx *x);
+static enum MHD_Result h_script(ctx *x);
+static enum MHD_Result h_assignments(ctx *x);
+static enum MHD_Result h_variant(ctx *x);
+static enum MHD_Result h_check(ctx *x);
+static enum MHD_Result h_key(ctx *x);
+static enum MHD_Result h_csv(ctx *x);
 static enum MHD_Result h_vendor(ctx *x);
 static enum MHD_Result h_static(ctx *x);
 
 /* The route table, tried in order.  A pattern's {name} matches one path
  * segment (x->id); a final "*" matches the rest.  A path that matches with
- * another method gets 405 with the route's methods in Allow.
- *
- * Routes still to come, each with its handler, here and in mm_openapi.c:
- *   GET  /api/exercises/{id}/script.m          (issue 18: resolve, then
- *        mm_script_write instead of a solve; ETag from the key)
- *   GET  /api/assignments                      (issue 17)
- *   GET  /api/assignments/{id}/variant         (issue 17)
- *   POST /api/assignments/{id}/check           (issue 17)
- * They go above the static catch-all, the last row. */
+ * another method gets 405 with the route's methods in Allow.  A new route
+ * goes above the static catch-all (the last row) and into mm_openapi.c. */
 typedef struct route {
     const char *methods;           /* "GET HEAD" or "GET HEAD POST" */
     const char *pattern;
@@ -1051,6 +1095,12 @@ static const route routes[] = {
     {"GET HEAD", "/api/openapi.json", h_openapi, "openapi"},
     {"GET HEAD", "/api/metrics", h_metrics, "metrics"},
     {"GET HEAD", "/api/exercises/{id}", h_meta, "metadata"},
+    {"GET HEAD", "/api/exercises/{id}/script.m", h_script, "script"},
+    {"GET HEAD", "/api/assignments", h_assignments, "assignments"},
+    {"GET HEAD", "/api/assignments/{id}/variant", h_variant, "variant"},
+    {"POST", "/api/assignments/{id}/check", h_check, "check"},
+    {"GET HEAD", "/api/assignments/{id}/key", h_key, "key"},
+    {"POST", "/api/assignments/{id}/csv", h_csv, "csv"},
     {"GET HEAD POST", "/api/exercises/{id}/solve", h_solve, "solve"},
     {"GET HEAD", "/vendor/*", h_vendor, "vendor"},
     {"GET HEAD", "/*", h_static, "static"},
@@ -1190,6 +1240,23 @@ static enum MHD_Result collect_arg(void *cls, enum MHD_ValueKind kind, const cha
     return MHD_YES;
 }
 
+/* Resolve a GET's query into sv (the failure, if any, in sv->rc/err). */
+static void resolve_query(req *r, mm_solve *sv)
+{
+    args a = {0};
+    MHD_get_connection_values_n(r->c, MHD_GET_ARGUMENT_KIND, collect_arg, &a);
+    if (a.bytes > MM_QUERY_MAX)
+        mm_error_set(&sv->err, MM_ETOOBIG, "", "the query is too long (at most 16 KiB); send large values by POST");
+    else if (a.has_nul)
+        mm_error_set(&sv->err, MM_EVALUE, "", "the query contains a NUL byte");
+    else if (a.too_many)
+        mm_error_set(&sv->err, MM_EPARAM, "", "too many parameters; %s has %d", sv->ex->id, sv->ex->n_params);
+    if (sv->err.code)
+        sv->rc = sv->err.code;
+    else
+        mm_api_resolve(sv, a.in, a.n);
+}
+
 static enum MHD_Result h_solve(ctx *x)
 {
     req *r = x->r;
@@ -1207,18 +1274,7 @@ static enum MHD_Result h_solve(ctx *x)
     if (strcmp(x->method, "POST") == 0) {
         mm_api_resolve_json(sv, r->body.p ? r->body.p : "", r->body.len);
     } else {
-        args a = {0};
-        MHD_get_connection_values_n(r->c, MHD_GET_ARGUMENT_KIND, collect_arg, &a);
-        if (a.bytes > MM_QUERY_MAX)
-            mm_error_set(&sv->err, MM_ETOOBIG, "", "the query is too long (at most 16 KiB); send large values by POST");
-        else if (a.has_nul)
-            mm_error_set(&sv->err, MM_EVALUE, "", "the query contains a NUL byte");
-        else if (a.too_many)
-            mm_error_set(&sv->err, MM_EPARAM, "", "too many parameters; %s has %d", ex->id, ex->n_params);
-        if (sv->err.code)
-            sv->rc = sv->err.code;
-        else
-            mm_api_resolve(sv, a.in, a.n);
+        resolve_query(r, sv);
     }
     if (sv->rc != MM_OK) {                   /* a 400: answered now, never cached */
         mm_buf out;
@@ -1282,7 +1338,7 @@ static enum MHD_Result h_solve(ctx *x)
     if (j) {
         atomic_fetch_add_explicit(&r->site->refs, 1, memory_order_relaxed);
         atomic_fetch_add_explicit(&e->refs, 1, memory_order_relaxed);
-        *j = (job){sv, e, r->site, r->want_gz};
+        *j = (job){.solve = sv, .entry = e, .site = r->site, .want_gz = r->want_gz};
     }
     if (!j || enqueue(s, j) != 0) {          /* no room after all: the waiters get 503 */
         if (j) {
@@ -1303,6 +1359,206 @@ static enum MHD_Result h_solve(ctx *x)
     }
     return MHD_YES;
 }
+
+/* ---- scripts and assignments ---------------------------------------------------------- */
+
+static enum MHD_Result send_text(ctx *x, int status, const char *type, mm_buf *b, const char *etag,
+                                 const char *how)
+{
+    size_t len;
+    char *text = mm_buf_take(b, &len);
+    if (!text)
+        return send_error(x->r, x->method, x->full_url, MM_ETOOBIG, "", "the answer is too large", NULL);
+    answer a = {.status = status, .type = type, .body = text, .len = len, .free_fn = free_text,
+                .free_cls = text, .etag = etag, .cache_control = etag ? "no-cache" : "no-store"};
+    return send_answer(x->r, x->method, x->full_url, &a, how);
+}
+
+/* GET /api/exercises/{id}/script.m?...: the parameters resolved as for a
+ * solve, then the Octave script instead of the solve (no solve runs). */
+static enum MHD_Result h_script(ctx *x)
+{
+    req *r = x->r;
+    const mm_exercise *ex = mm_api_exercise(r->site->api, x->id);
+    const char *body = ex ? mm_api_script_body(r->site->api, x->id) : NULL;
+    char msg[160];
+    if (!ex || !body) {
+        snprintf(msg, sizeof msg, ex ? "%.60s has no Octave script yet" : "no exercise '%.60s'; GET /api/exercises lists them",
+                 x->id);
+        return send_error(r, x->method, x->full_url, MM_ENOTFOUND, "", msg, NULL);
+    }
+    mm_solve sv;
+    mm_solve_init(&sv, ex);
+    resolve_query(r, &sv);
+    mm_buf out;
+    mm_buf_init(&out, 1u << 22);
+    enum MHD_Result ret;
+    if (sv.rc != MM_OK) {
+        int status = mm_api_write(&sv, &out);
+        ret = send_text(x, status, "application/json", &out, NULL, "refused");
+    } else {
+        char etag[MM_ETAG_SIZE + 8];
+        mm_buf_put(&sv.key, "#script.m", 9);
+        mm_api_answer_etag(sv.key.p, sv.key.len, etag);
+        const char *q = memchr(sv.key.p, '?', sv.key.len);
+        sv.key.p[sv.key.len - 9] = '\0';       /* the canonical query again */
+        if (mm_etag_matches(header(r, MHD_HTTP_HEADER_IF_NONE_MATCH), etag))
+            ret = send_not_modified(r, x->method, x->full_url, etag, "no-cache", 0);
+        else if (mm_script_write(ex, sv.vals, body, q ? q + 1 : "", MM_VERSION, &out) != MM_OK)
+            ret = send_error(r, x->method, x->full_url, MM_ETOOBIG, "", "the script is too large", NULL);
+        else
+            ret = send_text(x, 200, "text/plain; charset=utf-8", &out, etag, "script");
+    }
+    mm_buf_free(&out);
+    mm_solve_free(&sv);
+    return ret;
+}
+
+static enum MHD_Result h_assignments(ctx *x)
+{
+    return send_doc(x->r, x->method, x->full_url, &x->r->site->assignments);
+}
+
+static const mm_assignment *find_assignment(ctx *x)
+{
+    return mm_api_assignment(x->r->site->api, x->id);
+}
+
+static enum MHD_Result no_assignment(ctx *x)
+{
+    char msg[128];
+    snprintf(msg, sizeof msg, "no assignment '%.60s'; GET /api/assignments lists them", x->id);
+    return send_error(x->r, x->method, x->full_url, MM_ENOTFOUND, "", msg, NULL);
+}
+
+static enum MHD_Result h_variant(ctx *x)
+{
+    const mm_assignment *a = find_assignment(x);
+    if (!a)
+        return no_assignment(x);
+    const char *student = MHD_lookup_connection_value(x->r->c, MHD_GET_ARGUMENT_KIND, "student");
+    mm_buf out;
+    mm_buf_init(&out, 1u << 20);
+    int status = mm_assign_variant_json(a, student ? student : "", &out);
+    return send_text(x, status, "application/json", &out, NULL, "variant");
+}
+
+/* A task for the workers: the request waits on a private entry. */
+static enum MHD_Result start_task(ctx *x, int task, const mm_assignment *a, char *text, size_t len,
+                                  const char *type)
+{
+    static atomic_ullong serial;
+    req *r = x->r;
+    mm_server *s = r->s;
+    if (!text)
+        return MHD_NO;
+    if (queue_full(s)) {
+        free(text);
+        return send_error(r, x->method, x->full_url, MM_EBUSY, "", "busy", NULL);
+    }
+    char key[48];
+    int kl = snprintf(key, sizeof key, "\001task %llu", atomic_fetch_add(&serial, 1));
+    mm_entry *e = NULL;
+    MHD_suspend_connection(r->c);
+    if (mm_cache_get(s->cache, key, (size_t)kl, r, &e) != MM_CACHE_MISS) {   /* only out of memory */
+        MHD_resume_connection(r->c);
+        mm_cache_unref(e);
+        free(text);
+        return MHD_NO;
+    }
+    r->entry = e;
+    r->state = R_WAIT;
+    r->task_type = type;
+    job *j = malloc(sizeof *j);
+    if (j) {
+        atomic_fetch_add_explicit(&r->site->refs, 1, memory_order_relaxed);
+        atomic_fetch_add_explicit(&e->refs, 1, memory_order_relaxed);
+        *j = (job){.entry = e, .site = r->site, .task = task, .asg = a, .text = text, .text_len = len};
+    }
+    if (!j || enqueue(s, j) != 0) {          /* no room after all: 503 */
+        if (j) {
+            site_unref(j->site);
+            mm_cache_unref(j->entry);
+            free(j);
+        }
+        free(text);
+        mm_buf b;
+        mm_error err;
+        mm_buf_init(&b, 4096);
+        mm_error_set(&err, MM_EBUSY, "", "busy");
+        int status = mm_api_error(&b, &err);
+        size_t bl = 0;
+        char *body = mm_buf_take(&b, &bl);
+        mm_cache_fill(s->cache, e, status, body, body ? bl : 0, NULL, 0, 0, 0, wake);
+    }
+    return MHD_YES;
+}
+
+static char *copy_body(req *r, size_t *len)
+{
+    *len = r->body.len;
+    char *t = malloc(r->body.len + 1);
+    if (t) {
+        if (r->body.len)
+            memcpy(t, r->body.p, r->body.len);
+        t[r->body.len] = '\0';
+    }
+    return t;
+}
+
+static enum MHD_Result h_check(ctx *x)
+{
+    const mm_assignment *a = find_assignment(x);
+    if (!a)
+        return no_assignment(x);
+    size_t len;
+    char *t = copy_body(x->r, &len);
+    return start_task(x, TASK_CHECK, a, t, len, "application/json");
+}
+
+/* The instructor's routes need the assignment's instructor_key as ?key=. */
+static int key_ok(ctx *x, const mm_assignment *a, const char **why)
+{
+    const char *want = mm_assign_key(a);
+    const char *got = MHD_lookup_connection_value(x->r->c, MHD_GET_ARGUMENT_KIND, "key");
+    if (!want) {
+        *why = "this assignment has no \"instructor_key\" in the course file, so its key and class sheet are off";
+        return 0;
+    }
+    size_t n = strlen(want), m = got ? strlen(got) : 0;
+    unsigned diff = (unsigned)(n != m);
+    for (size_t i = 0; i < n; i++)          /* the same time for every wrong key */
+        diff |= (unsigned char)want[i] ^ (unsigned char)(i < m ? got[i] : 0);
+    *why = "the instructor key (?key=) is missing or wrong";
+    return diff == 0;
+}
+
+static enum MHD_Result h_key(ctx *x)
+{
+    const mm_assignment *a = find_assignment(x);
+    if (!a)
+        return no_assignment(x);
+    const char *why;
+    if (!key_ok(x, a, &why))
+        return send_error(x->r, x->method, x->full_url, MM_EFORBIDDEN, "key", why, NULL);
+    const char *student = MHD_lookup_connection_value(x->r->c, MHD_GET_ARGUMENT_KIND, "student");
+    char *t = strdup(student ? student : "");
+    return start_task(x, TASK_KEY, a, t, t ? strlen(t) : 0, "application/json");
+}
+
+static enum MHD_Result h_csv(ctx *x)
+{
+    const mm_assignment *a = find_assignment(x);
+    if (!a)
+        return no_assignment(x);
+    const char *why;
+    if (!key_ok(x, a, &why))
+        return send_error(x->r, x->method, x->full_url, MM_EFORBIDDEN, "key", why, NULL);
+    size_t len;
+    char *t = copy_body(x->r, &len);
+    return start_task(x, TASK_CSV, a, t, len, "text/csv; charset=utf-8");
+}
+
 
 static enum MHD_Result send_file(ctx *x, const char *root, const char *path, int vendor)
 {

@@ -39,7 +39,8 @@ static const struct {
 } errors[] = {
     {400, "BadRequest", "a value that does not parse or lies outside its limits, an unknown parameter, "
                         "a body that is not {\"params\":{...}}: the message names the parameter"},
-    {404, "NotFound", "no such exercise or path"},
+    {403, "Forbidden", "an instructor's route without the assignment's instructor key (?key=)"},
+    {404, "NotFound", "no such exercise, assignment or path"},
     {405, "MethodNotAllowed", "the route does not take this method; the Allow header lists those it takes"},
     {413, "TooLarge", "a body over 1 MiB, a query over 16 KiB, or an answer over the memory a request may use"},
     {422, "NoSolution", "the mechanics has no solution for these parameters (a singular system, no "
@@ -418,6 +419,77 @@ static void write_solve(mm_buf *b, const mm_exercise *ex)
     mm_buf_puts(b, "}}");
 }
 
+/* ---- the Octave script and the assignments ----------------------------------------- */
+
+#define NAME_PARAM "{\"name\":\"name\",\"in\":\"path\",\"required\":true,\"schema\":{\"type\":\"string\"}}"
+#define QUERY_PARAM(n, req, what) \
+    "{\"name\":\"" n "\",\"in\":\"query\",\"required\":" req ",\"description\":\"" what "\",\"schema\":{\"type\":\"string\"}}"
+
+static void write_scripts_and_assignments(mm_buf *b, const mm_course *c)
+{
+    mm_buf_puts(b, ",\"/api/exercises/{id}/script.m\":{\"get\":{\"operationId\":\"script\","
+                   "\"summary\":\"an Octave/MATLAB script that reproduces the answer's scalars for the same "
+                   "parameters (the same query as solve), printing each as a line name = value\","
+                   "\"parameters\":[{\"$ref\":\"#/components/parameters/IfNoneMatch\"},"
+                   "{\"name\":\"id\",\"in\":\"path\",\"required\":true,\"schema\":{\"type\":\"string\",\"enum\":[");
+    for (int i = 0; i < mm_course_exercise_count(c); i++) {
+        if (i)
+            mm_buf_char(b, ',');
+        mm_buf_str(b, mm_course_exercise(c, i)->id);
+    }
+    mm_buf_puts(b, "]}}]");
+    static const int script_errs[] = {400, 404, 405, 413, 503};
+    write_responses(b, "the script", "text/plain; charset=utf-8", "{\"type\":\"string\"}", script_errs, 5, 1);
+    mm_buf_puts(b, "}}");
+
+    write_get(b, "/api/assignments", "assignments", "the course's assignments", "application/json",
+              "{\"type\":\"array\",\"items\":{\"type\":\"object\",\"required\":[\"name\",\"title\",\"exercise\"],"
+              "\"properties\":{\"name\":{\"type\":\"string\"},\"title\":{\"type\":\"string\"},"
+              "\"exercise\":{\"type\":\"string\"}}}}",
+              0);
+
+    static const int errs[] = {400, 404, 405, 413, 503};
+    static const int key_errs[] = {400, 403, 404, 405, 413, 503};
+    mm_buf_puts(b, ",\"/api/assignments/{name}/variant\":{\"get\":{\"operationId\":\"variant\","
+                   "\"summary\":\"one student's variant: the same parameters for the same student, always\","
+                   "\"parameters\":[" NAME_PARAM "," QUERY_PARAM("student", "true", "the student's id (at most 128 bytes)") "]");
+    write_responses(b, "the variant", "application/json",
+                    "{\"type\":\"object\",\"required\":[\"assignment\",\"student\",\"exercise\",\"params\",\"asked\"],"
+                    "\"properties\":{\"assignment\":{\"type\":\"string\"},\"student\":{\"type\":\"string\"},"
+                    "\"exercise\":{\"type\":\"string\"},\"title\":{\"type\":\"string\"},\"params\":{\"type\":\"object\"},"
+                    "\"asked\":{\"type\":\"array\",\"items\":{\"type\":\"object\",\"required\":[\"name\",\"label\",\"unit\"]}}}}",
+                    errs, 4, 0);
+    mm_buf_puts(b, "}}");
+
+    mm_buf_puts(b, ",\"/api/assignments/{name}/check\":{\"post\":{\"operationId\":\"check\","
+                   "\"summary\":\"judge a student's answers (numbers with units) against the variant's\","
+                   "\"parameters\":[" NAME_PARAM "],"
+                   "\"requestBody\":{\"required\":true,\"content\":{\"application/json\":{\"schema\":{"
+                   "\"type\":\"object\",\"required\":[\"student\",\"answers\"],\"properties\":{"
+                   "\"student\":{\"type\":\"string\"},\"answers\":{\"type\":\"object\","
+                   "\"additionalProperties\":{\"type\":\"string\"}}}}}}}");
+    write_responses(b, "the judgement", "application/json",
+                    "{\"type\":\"object\",\"required\":[\"results\",\"score\"],\"properties\":{"
+                    "\"results\":{\"type\":\"array\",\"items\":{\"type\":\"object\",\"required\":[\"name\",\"correct\"]}},"
+                    "\"score\":{\"type\":\"number\"},\"max_score\":{\"type\":\"number\"}}}",
+                    errs, 5, 0);
+    mm_buf_puts(b, "}}");
+
+    mm_buf_puts(b, ",\"/api/assignments/{name}/key\":{\"get\":{\"operationId\":\"key\","
+                   "\"summary\":\"for the instructor: a student's variant with the expected answers\","
+                   "\"parameters\":[" NAME_PARAM "," QUERY_PARAM("student", "true", "the student's id") ","
+                   QUERY_PARAM("key", "true", "the assignment's instructor_key") "]");
+    write_responses(b, "the key", "application/json", "{\"type\":\"object\"}", key_errs, 6, 0);
+    mm_buf_puts(b, "}}");
+
+    mm_buf_puts(b, ",\"/api/assignments/{name}/csv\":{\"post\":{\"operationId\":\"csv\","
+                   "\"summary\":\"for the instructor: one row per student of a class list (variant and answers)\","
+                   "\"parameters\":[" NAME_PARAM "," QUERY_PARAM("key", "true", "the assignment's instructor_key") "],"
+                   "\"requestBody\":{\"required\":true,\"content\":{\"text/csv\":{\"schema\":{\"type\":\"string\"}}}}");
+    write_responses(b, "the class sheet", "text/csv; charset=utf-8", "{\"type\":\"string\"}", key_errs, 6, 0);
+    mm_buf_puts(b, "}}");
+}
+
 void mm_openapi_write(mm_buf *b, const mm_course *c)
 {
     mm_buf_puts(b, "{\"openapi\":\"3.1.0\",\"info\":{\"title\":");
@@ -481,6 +553,7 @@ void mm_openapi_write(mm_buf *b, const mm_course *c)
     mm_buf_puts(b, "}}");
     for (int i = 0; i < mm_course_exercise_count(c); i++)
         write_solve(b, mm_course_exercise(c, i));
+    write_scripts_and_assignments(b, c);
     mm_buf_char(b, '}');
     write_components(b);
     mm_buf_char(b, '}');

@@ -129,6 +129,8 @@ int mm_unit_parse(const char *text, mm_quantity *q, mm_error *err)
         while (*p && *p != '/' && *p != '^' && !is_sep(p, &sl) &&
                !((unsigned char)p[0] == 0xc2 && ((unsigned char)p[1] == 0xb2 || (unsigned char)p[1] == 0xb3)))
             p++;
+        if (p - s == 1 && *s == '1' && !denominator && !q->has_unit && *p == '/')
+            continue;                       /* "1/s": a numerator of one */
         double f;
         signed char dim[MM_DIM_COUNT];
         if (p == s || symbol(s, (size_t)(p - s), &f, dim) != 0)

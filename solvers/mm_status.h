@@ -23,6 +23,7 @@
     X(MM_EPARAM,      400, "unknown_param",  "unknown parameter")            \
     X(MM_EJSON,       400, "bad_json",       "body is not valid JSON")       \
     X(MM_ENOTFOUND,   404, "not_found",      "not found")                    \
+    X(MM_EFORBIDDEN,  403, "forbidden",      "forbidden")                    \
     X(MM_EMETHOD,     405, "method_not_allowed", "method not allowed")       \
     X(MM_ETOOBIG,     413, "too_large",      "request too large")            \
     X(MM_ESINGULAR,   422, "no_solution",    "the problem has no solution")  \

@@ -284,6 +284,78 @@ static void the_instructor_should_get_a_class_csv_and_an_answer_key(void **state
     mm_buf_free(&key);
 }
 
+/* Every exercise with declared answers can be assigned: an assignment that
+ * asks every answer, the key's expected values written back with their
+ * units as a student would type them, and the check finds them all right. */
+static void every_exercise_with_answers_should_be_assignable(void **state)
+{
+    (void)state;
+    int assigned = 0;
+    for (int i = 0; i < mm_exercise_count; i++) {
+        const mm_exercise *ex = mm_exercises[i];
+        cJSON *j = cJSON_CreateObject(), *ask = cJSON_CreateArray();
+        cJSON_AddStringToObject(j, "name", "all");
+        cJSON_AddStringToObject(j, "exercise", ex->id);
+        for (int k = 0; k < ex->n_outputs; k++) {
+            const mm_output *o = &ex->outputs[k];
+            if (o->kind != MM_OUT_SCALAR || !(o->flags & MM_ANSWER) || strchr(o->name, '%') ||
+                cJSON_GetArraySize(ask) >= MM_ASSIGN_MAX_ASK)
+                continue;
+            cJSON *q = cJSON_CreateObject();
+            cJSON_AddStringToObject(q, "name", o->name);
+            cJSON_AddNumberToObject(q, "rel", 1e-9);
+            cJSON_AddItemToArray(ask, q);
+        }
+        cJSON_AddItemToObject(j, "ask", ask);
+        if (cJSON_GetArraySize(ask) == 0) {
+            cJSON_Delete(j);
+            continue;
+        }
+        mm_assignment *a = NULL;
+        mm_error err;
+        mm_buf notes, key, body, out;
+        mm_buf_init(&notes, 1 << 16);
+        mm_buf_init(&key, 1 << 24);
+        mm_buf_init(&body, 1 << 16);
+        mm_buf_init(&out, 1 << 20);
+        if (mm_assign_load(j, ex, &a, &notes, &err) != MM_OK)
+            fail_msg("%s: its answers cannot be asked: %s", ex->id, err.msg);
+        assert_int_equal(mm_assign_key_json(a, "s1", &key), 200);
+        cJSON *k = cJSON_Parse(key.p);
+        mm_buf_puts(&body, "{\"student\":\"s1\",\"answers\":{");
+        const cJSON *x;
+        int n = 0;
+        cJSON_ArrayForEach(x, cJSON_GetObjectItem(k, "expected")) {
+            if (!cJSON_IsNumber(cJSON_GetObjectItem(x, "value")))
+                continue;                   /* not given for this variant (another case of the exercise) */
+            char text[160];
+            snprintf(text, sizeof text, "%.17g %s", cJSON_GetObjectItem(x, "value")->valuedouble,
+                     cJSON_GetObjectItem(x, "unit")->valuestring);
+            mm_buf_puts(&body, n++ ? "," : "");
+            mm_buf_str(&body, cJSON_GetObjectItem(x, "name")->valuestring);
+            mm_buf_char(&body, ':');
+            mm_buf_str(&body, text);
+        }
+        mm_buf_puts(&body, "}}");
+        assert_int_equal(mm_assign_check_json(a, body.p, body.len, &out), 200);
+        cJSON *c = cJSON_Parse(out.p);
+        if (cJSON_GetObjectItem(c, "score")->valuedouble != n)
+            fail_msg("%s: its own expected answers judged %g of %d right: %.3000s", ex->id,
+                     cJSON_GetObjectItem(c, "score")->valuedouble, n, out.p);
+        assigned++;
+        cJSON_Delete(c);
+        cJSON_Delete(k);
+        cJSON_Delete(j);
+        mm_assign_free(a);
+        mm_buf_free(&notes);
+        mm_buf_free(&key);
+        mm_buf_free(&body);
+        mm_buf_free(&out);
+    }
+    print_message("%d exercises with declared answers, each assignable\n", assigned);
+    assert_true(assigned >= 10);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -295,6 +367,7 @@ int main(void)
         cmocka_unit_test(a_roster_should_get_distinct_variants_and_small_sets_a_warning),
         cmocka_unit_test(bad_assignments_should_be_refused_with_the_reason),
         cmocka_unit_test(the_instructor_should_get_a_class_csv_and_an_answer_key),
+        cmocka_unit_test(every_exercise_with_answers_should_be_assignable),
     };
     return cmocka_run_group_tests_name("assign", tests, NULL, NULL);
 }

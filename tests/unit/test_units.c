@@ -65,6 +65,10 @@ static void angles_and_rates_should_convert_but_not_mix_with_hertz(void **state)
     assert_true(mm_dim_equal(&rpm, &w));
     assert_false(mm_dim_equal(&w, &hz));     /* cycles per second are not radians per second */
     dims(&hz, "s^-1");
+    mm_quantity per = q("0.5 1/s"), per_ms = q("2 1/ms");
+    check_rel(per.value, 0.5, 1e-15, "1/s: a numerator of one");
+    check_rel(per_ms.value, 2000, 1e-15, "1/ms");
+    assert_true(mm_dim_equal(&per, &hz));
 }
 
 static void unknown_units_and_bad_numbers_should_be_refused(void **state)
