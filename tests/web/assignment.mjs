@@ -18,7 +18,7 @@ const VARIANT = {
   assignment: 'hw1', student: 's042', exercise: 'sta-belt-friction',
   params: { T1: 120, mu: 0.25, theta: 3.5, r: 0.1, beta: 1.5707963267948966 },
   asked: [
-    { name: 'T2', label: 'tight-side tension at the slip limit', unit: 'N' },
+    { name: 'T2', label: 'tight-side tension at the slip limit', unit: 'N', rule: 'within 1 %, in N' },
     { name: 'torque', label: 'torque on the drum', unit: 'N m' },
   ],
 };
@@ -90,7 +90,8 @@ export async function assignmentTests(test, origin) {
     assert.equal(await page.getAttribute('#score', 'role'), 'status', 'the score is announced');
     assert.match(await page.textContent("#r-T2"), /^not correct · expected 287\.86\d\sN · the tension grows/);
     assert.equal(await page.getAttribute('#a-T2', 'aria-invalid'), 'true');
-    assert.equal(await page.getAttribute('#a-T2', 'aria-describedby'), 'r-T2', 'the verdict is read with the field');
+    assert.equal(await page.getAttribute('#a-T2', 'aria-describedby'), 'h-T2 r-T2', 'the rule and the verdict are read with the field');
+    assert.equal(await page.textContent('#h-T2'), 'within 1 %, in N');
     const rows = await page.$$eval('#results-table tbody tr', (rs) => rs.map((r) => [...r.cells].map((c) => c.textContent.trim())));
     assert.equal(rows.length, 2);
     assert.equal(rows[0][1], '285.1 N');
@@ -169,5 +170,6 @@ export async function assignmentTests(test, origin) {
     await checkOnce(page);
     const verdicts = await page.$$eval('#results-table tbody tr', (rs) => rs.map((r) => r.className));
     assert.deepEqual(verdicts, variant.asked.map(() => 'pass'));
+    assert.equal(await page.textContent('h1'), variant.title || first.title);
   });
 }

@@ -76,13 +76,14 @@ function renderAsked() {
       a.unit ? el('span', { class: 'punit', html: ` [${unitHtml(a.unit)}]` }) : '');
     const input = el('input', {
       id, name: a.name, type: 'text', class: 'input', autocomplete: 'off', spellcheck: 'false', autocapitalize: 'off',
-      inputmode: 'text', 'aria-describedby': `r-${a.name}`,
+      inputmode: 'text', 'aria-describedby': a.rule ? `h-${a.name} r-${a.name}` : `r-${a.name}`,
     });
+    const rule = a.rule ? el('p', { class: 'help', id: `h-${a.name}`, text: a.rule }) : '';
     const saved = sessionStorage.getItem(storeKey(a.name));
     if (saved) input.value = saved;
     input.addEventListener('input', () => sessionStorage.setItem(storeKey(a.name), input.value));
     const verdict = el('p', { class: 'a-verdict', id: `r-${a.name}` });
-    box.append(el('div', { class: 'field', id: `f-${a.name}`, 'data-asked': a.name }, label, input, verdict));
+    box.append(el('div', { class: 'field', id: `f-${a.name}`, 'data-asked': a.name }, label, input, rule, verdict));
   }
 }
 
@@ -210,10 +211,10 @@ async function load() {
   // assignment's own title from the list; either may fail without harm
   const [meta, list] = await Promise.all([
     fetch(`api/exercises/${encodeURIComponent(state.variant.exercise)}`).then((x) => (x.ok ? x.json() : null)).catch(() => null),
-    fetch('api/assignments').then((x) => (x.ok ? x.json() : null)).catch(() => null),
+    state.variant.title ? null : fetch('api/assignments').then((x) => (x.ok ? x.json() : null)).catch(() => null),
   ]);
   state.meta = meta;
-  const mine = Array.isArray(list) ? list.find((a) => a.name === state.name) : null;
+  const mine = state.variant.title ? state.variant : Array.isArray(list) ? list.find((a) => a.name === state.name) : null;
   const exTitle = exerciseText(state.variant.exercise, 'title', meta ? meta.title : state.variant.exercise);
   $('#title').textContent = mine && mine.title ? mine.title : exTitle;
   if (mine && mine.title && mine.title !== exTitle) $('#kicker').textContent = `${t('assignment')} · ${exTitle}`;
