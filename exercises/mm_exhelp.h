@@ -13,6 +13,15 @@
  * a + (b - a) * i / (n - 1) so that round grids print short. */
 void mm_linspace(double a, double b, int n, double *x);
 
+/* n equally spaced times from 0 to t_end (n >= 2) as mm_linspace, each the
+ * double nearest its short decimal when the step is a short decimal
+ * (t_end = 1.9, n = 501: 0.0038 i), so that a plot's times print short. */
+void mm_ex_time_grid(double t_end, int n, double *t);
+
+/* x > 0 rounded up to two significant digits (1.806 -> 1.9): a plot's end
+ * that makes a short grid.  Cannot fail. */
+double mm_ex_nice_up(double x);
+
 /* Largest |y[i]| over n values. */
 double mm_maxabs(const double *y, int n);
 
@@ -36,10 +45,95 @@ int mm_ex_sdof_run(const mm_sdof *s, double t_end, int n, const double *t,
                    double *x, double *v, int stride, mm_result *res, mm_error *err);
 
 /* The work bound of 1-DOF time responses: t_end * (largest rate of the
- * system: omega_n, omega, and the fast decay rate when overdamped) must not
- * pass MM_SDOF_MAX_RADIANS, or the request would take too long. */
-#define MM_SDOF_MAX_RADIANS 1e4
+ * system: omega_n, omega when forced, and the fast decay rate when
+ * overdamped) must not pass MM_SDOF_MAX_RADIANS, or the request would take
+ * too long: the DOP853 run shown and its error estimate at rtol / 100 cost
+ * about 10 us a radian together, so 2e4 radians (3,200 periods) stay under
+ * 250 ms (bench_limits). */
+#define MM_SDOF_MAX_RADIANS 2e4
 int mm_ex_sdof_work_check(const mm_sdof *s, double t_end, mm_error *err);
+
+/* ---- 1-DOF responses: the closed form plotted, the integrator beside it ------- */
+
+/* The relative tolerance of the DOP853 runs of the 1-DOF exercises. */
+#define MM_EX_SDOF_RTOL 1e-10
+
+/* Integrate the 1-DOF oscillator s (mm_sdof_rhs) from 0 to t_end by DOP853
+ * at rtol (atol rtol times the size of the motion, found by a first run
+ * when the guess was far off), steps at most h_max (0: one radian of the
+ * fastest motion), dense output onto t[0..n-1]: x and v (v may be NULL).
+ * r receives the counters (evaluations of both runs).  Returns MM_OK or
+ * the solver's code with err filled. */
+int mm_ex_sdof_integrate(const mm_sdof *s, double t_end, int n, const double *t, double *x,
+                         double *v, double rtol, double h_max, mm_ode_result *r, mm_result *res,
+                         mm_error *err);
+
+/* The response of s on the n times t: the closed form mm_sdof_x into x
+ * (the answer that is plotted), DOP853 (mm_ex_sdof_integrate at
+ * MM_EX_SDOF_RTOL) into xi (shown beside it), the method and its counters
+ * on res, and the check of xi against x (mm_check_curve) within ten times
+ * DOP853's error estimated by a second run at MM_EX_SDOF_RTOL / 100 (plus
+ * round-off, mm_ex_roundoff).  *worst receives the largest |xi - x|.
+ * Returns MM_OK or the solver's code. */
+int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, int n,
+                        const double *t, double *x, double *xi, double *worst, mm_result *res,
+                        mm_error *err);
+
+/* Round-off in a time response over `radians` of the fastest motion of
+ * largest size peak: 16 eps (1 + radians) peak (the closed form's cosines
+ * carry eps of their argument; an integrator adds eps a step). */
+double mm_ex_roundoff(double radians, double peak);
+
+/* The steady state of s measured in the time domain: DOP853 (rtol 1e-10)
+ * started on the steady orbit X cos(omega t + psi - phase) (mm_sdof_props)
+ * for `periods` forcing periods, 64 samples a period, projected on cos and
+ * sin (mm_fourier_harmonic).  *X and *lag receive the amplitude and the lag
+ * behind cos(omega t), the lag put within pi of lag_near; *X_est and
+ * *lag_est their errors estimated by a second run at rtol 1e-12.  A check
+ * of the steady-state formulas that does not use them beyond the start. */
+int mm_ex_sdof_steady_measure(const mm_sdof *s, const mm_sdof_props *p, int periods,
+                              double lag_near, double *X, double *lag, double *X_est,
+                              double *lag_est, mm_result *res, mm_error *err);
+
+/* ---- warnings, printed values ----------------------------------------------------- */
+
+/* A plot of n points over span s of a motion with angular frequency omega
+ * [rad/s] has (n - 1) / (span omega / 2 pi) points a period: under 8 it
+ * cannot draw the oscillation (it aliases).  Warns with the remedy and
+ * returns 1 then, else 0. */
+int mm_ex_warn_aliasing(mm_result *res, int n, double span, double omega, const char *remedy);
+
+/* A numerical value shown beside its exact value: scalar `out` gets value
+ * with the error bound |value - exact| + exact_err (exact_err bounds the
+ * exact value's own rounding).  Returns the scalar. */
+mm_scalar *mm_ex_scalar_beside(mm_result *res, int out, double value, double exact,
+                               double exact_err);
+
+/* Round y[0..n-1] to `digits` significant decimal digits (the double
+ * nearest each short decimal, so that the answer prints it short): for
+ * numbers whose further digits mean nothing, an error curve or a drawing. */
+void mm_ex_round_sig(double *y, int n, int digits);
+
+/* ---- animation of an oscillator ----------------------------------------------------- */
+
+/* Frames for a motion of shortest period `period` over t_end (24 a period,
+ * as mm_scene_frames) within a budget of MM_EX_ANIM_POINTS drawn points
+ * in all, each frame drawing npts points: fewer periods are shown, never
+ * fewer frames a period.  *t_show receives the span shown. */
+#define MM_EX_ANIM_POINTS 1800
+int mm_ex_anim_frames(double t_end, double period, int npts, double *t_show);
+
+/* A block on a spring (and damper) tied to a support, drawn over nf
+ * frames at the times t: x[f] the block's displacement, y[f] the
+ * support's (NULL: a fixed wall), F[f] a force on the block drawn as an
+ * arrow named force_name (NULL: none), a damper beside the spring when
+ * `damper`, a floor under the block when `on_floor` (dry friction).  Drawn to
+ * the scale of the motion (a rest length of 5 times its largest
+ * displacement), coordinates rounded to 1e-3 of that length so that the
+ * frames stay short in the answer.  Returns MM_OK or MM_ENOMEM. */
+int mm_ex_animate_oscillator(mm_result *res, int nf, const double *t, const double *x,
+                             const double *y, const double *F, const char *force_name, int damper,
+                             int on_floor);
 
 /* A plot grid over [a, b] that also resolves a narrow feature (a resonance
  * peak): n equally spaced points merged with nwin equally spaced points over
@@ -70,5 +164,46 @@ int mm_check_residual(mm_result *res, const char *name, double residual, double 
  * slope. */
 double mm_check_order(mm_result *res, const char *name, int n, const double *h,
                       const double *e, double expected, double tol);
+
+/* ---- one oscillator by the textbook's time integrators ------------------------------ */
+
+enum mm_ex_method {
+    MM_EX_CENTRAL,      /* central difference (mm_newmark), damping implicit */
+    MM_EX_AVERAGE,      /* Newmark average acceleration (mm_newmark) */
+    MM_EX_VERLET,       /* Stormer-Verlet (mm_newmark) */
+    MM_EX_RK4,          /* classical Runge-Kutta (mm_ode) */
+    MM_EX_DOPRI5,       /* Dormand-Prince 5(4), adaptive (mm_ode) */
+    MM_EX_DOP853,       /* Dormand-Prince 8(5,3), adaptive (mm_ode) */
+    MM_EX_METHODS
+};
+
+typedef struct mm_ex_run {
+    int rows;           /* rows written into t, x, v */
+    long steps, evals, rejected;
+    double h;           /* the step taken (fixed: t_end / ceil(t_end / h)); mean step if adaptive */
+    int failed;         /* 1: the numbers overflowed (past a stability limit), or an
+                           adaptive run needed more than its steps */
+} mm_ex_run;
+
+/* The 1-DOF oscillator s (m x'' + c x' + k x = F0 cos wt) over [0, t_end]
+ * by method m: the fixed-step ones with step h, the adaptive ones at rtol
+ * and atol.  The state at every stride-th step (and the last) goes into t,
+ * x and v (v may be NULL), at most cap rows; stride > 1 only for the
+ * fixed-step methods.  At most (cap - 1) stride steps are taken.  Returns
+ * MM_OK (also when the run failed: o->failed says so), or an error of the
+ * solvers with err filled. */
+int mm_ex_sdof_method(const mm_sdof *s, int m, double h, double rtol, double atol, double t_end, long stride,
+                      int cap, double *t, double *x, double *v, mm_ex_run *o, mm_result *res, mm_error *err);
+
+/* The observed order of convergence of errors e against steps h (n
+ * points, h decreasing): the least-squares slope of log e against log h
+ * over the (up to) four finest points whose error lies in [lo, hi] (above
+ * hi the leading error term does not rule yet, below lo round-off does).
+ * *spread receives the largest difference of a local slope (between
+ * neighbours) from the fit: how far the points are from one straight line,
+ * the error of the slope.  Returns the number of points used (the slope is
+ * written only when it is 3 or more). */
+int mm_ex_observed_order(const double *h, const double *e, int n, double lo, double hi, double *order,
+                         double *spread);
 
 #endif

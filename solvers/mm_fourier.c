@@ -7,6 +7,8 @@
  */
 #include "mm_fourier.h"
 
+#include "mm_opt.h"
+
 #include <assert.h>
 #include <math.h>
 #include <pthread.h>
@@ -361,6 +363,19 @@ int mm_fourier_series_eval(const double *a, const double *b, size_t K,
     return MM_OK;
 }
 
+typedef struct series_arg {
+    const double *a, *b;
+    size_t K;
+    double T;
+} series_arg;
+
+static int series_at(double t, double *s, void *params)
+{
+    const series_arg *p = params;
+    *s = partial_sum(p->a, p->b, p->K, p->T, t);
+    return 0;
+}
+
 int mm_fourier_series_max(const double *a, const double *b, size_t K,
                           double T, double t_lo, double t_hi,
                           double *t_max, double *s_max, mm_error *err)
@@ -392,29 +407,45 @@ int mm_fourier_series_max(const double *a, const double *b, size_t K,
         }
     }
 
-    /* golden-section search on [best_t - h, best_t + h], inside [t_lo, t_hi] */
-    const double r = 0.6180339887498948482;   /* (sqrt 5 - 1) / 2 */
+    /* golden-section search (mm_opt) on [best_t - h, best_t + h], inside [t_lo, t_hi] */
+    series_arg sa = {a, b, K, T};
+    mm_opt_result o;
     double lo = fmax(t_lo, best_t - h), hi = fmin(t_hi, best_t + h);
-    double x1 = hi - r * (hi - lo), x2 = lo + r * (hi - lo);
-    double f1 = partial_sum(a, b, K, T, x1), f2 = partial_sum(a, b, K, T, x2);
-    for (int it = 0; it < 200 && hi - lo > 1e-13 * T; it++) {
-        if (f1 >= f2) {
-            hi = x2; x2 = x1; f2 = f1;
-            x1 = hi - r * (hi - lo);
-            f1 = partial_sum(a, b, K, T, x1);
-        } else {
-            lo = x1; x1 = x2; f1 = f2;
-            x2 = lo + r * (hi - lo);
-            f2 = partial_sum(a, b, K, T, x2);
-        }
-    }
-    double tm = 0.5 * (lo + hi), sm = partial_sum(a, b, K, T, tm);
-    if (best > sm) {                  /* a bracket end (t_lo or t_hi) wins */
+    rc = mm_opt_golden_max(series_at, &sa, lo, hi, 1e-13 * T, 200, &o, err);
+    if (rc)
+        return rc;
+    double tm = o.x, sm = o.fx;
+    if (best > sm) {                  /* a scan point (t_lo or t_hi) wins */
         tm = best_t;
         sm = best;
     }
     *t_max = tm;
     *s_max = sm;
+    return MM_OK;
+}
+
+/* ==== one harmonic ========================================================= */
+
+int mm_fourier_harmonic(const double *x, size_t n, size_t per, double *amp,
+                        double *phase, mm_error *err)
+{
+    if (per < 3 || n < per || n % per != 0)
+        return mm_error_set(err, MM_ERANGE, "n",
+                            "harmonic analysis needs whole periods of at least 3 "
+                            "samples: n = %zu samples, %zu a period", n, per);
+    double a = 0, b = 0;
+    for (size_t j = 0; j < n; j++) {
+        if (!isfinite(x[j]))
+            return mm_error_set(err, MM_EVALUE, "x", "sample %zu is not finite", j);
+        size_t m = j % per;                 /* the angle reduced exactly */
+        double th = 2 * M_PI * (double)m / (double)per;
+        a += x[j] * cos(th);
+        b += x[j] * sin(th);
+    }
+    a *= 2.0 / (double)n;
+    b *= 2.0 / (double)n;
+    *amp = hypot(a, b);
+    *phase = atan2(b, a);
     return MM_OK;
 }
 

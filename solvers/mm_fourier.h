@@ -156,14 +156,30 @@ int mm_fourier_series_eval(const double *a, const double *b, size_t K,
 
 /* Maximum of S_K over [t_lo, t_hi]: a scan at 8 (K + 1) points per period
  * (at least 8 per period of the highest harmonic, so the scan cannot miss a
- * lobe) picks the best sample, then golden-section search on the two
- * neighbouring intervals refines it to |dt| <= 1e-13 T.  Writes the place
+ * lobe) picks the best sample, then golden-section search (mm_opt) on the
+ * two neighbouring intervals refines it to |dt| <= 1e-13 T.  Writes the place
  * to *t_max and the value to *s_max.  Requires t_lo < t_hi <= t_lo + T
  * (MM_EVALUE / MM_ERANGE, param "t"); other errors as mm_fourier_series_eval.
  * Never allocates. */
 int mm_fourier_series_max(const double *a, const double *b, size_t K,
                           double T, double t_lo, double t_hi,
                           double *t_max, double *s_max, mm_error *err);
+
+/* ---- one harmonic of a sampled signal --------------------------------------- */
+
+/* Amplitude and phase of the harmonic of period T in n samples
+ * x_j = x(t0 + j T / per), j = 0..n-1, that cover whole periods (n a
+ * multiple of per, per >= 3):
+ *     a = (2/n) sum x_j cos(2 pi j / per),  b = (2/n) sum x_j sin(2 pi j / per),
+ *     *amp = hypot(a, b),  *phase = atan2(b, a)   in (-pi, pi],
+ * so that x(t) = amp cos(2 pi (t - t0) / T - phase) + (the rest).  Exact
+ * (to rounding) for a harmonic of that period plus a constant and any other
+ * harmonic k / T with k < per / 2, k != 1, sampled this way (discrete
+ * orthogonality; the trapezoidal rule over whole periods).  Errors:
+ * MM_ERANGE (param "n") when per < 3, n < per or n is not a multiple of
+ * per; MM_EVALUE for a non-finite sample.  Never allocates. */
+int mm_fourier_harmonic(const double *x, size_t n, size_t per, double *amp,
+                        double *phase, mm_error *err);
 
 /* ---- continuous transform of a pulse -------------------------------------- */
 

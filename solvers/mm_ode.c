@@ -40,6 +40,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mm_roots.h"
+
 /* ==== tableaux ============================================================ */
 
 /* Classical RK4 (A&S 25.5.10):
@@ -327,7 +329,7 @@ const char *mm_ode_method_name(mm_ode_method method)
 
 /* Equal fixed steps: N = ceil(T / h), each step T / N <= h.  The 1e-12
  * slack keeps T / h = 100.00000000000001 (rounding) at 100 steps. */
-static double fixed_step_count(double T, double h)
+double mm_ode_fixed_steps(double T, double h)
 {
     double N = ceil(T / h * (1.0 - 1e-12));
     return N < 1.0 ? 1.0 : N;
@@ -383,6 +385,10 @@ int mm_ode_check(const mm_ode_problem *prob, const mm_ode_options *opt,
                                 "initial value y0[%zu] must be a finite number, "
                                 "got %g", i, prob->y0[i]);
 
+    if (prob->event_dir < -1 || prob->event_dir > 1)
+        return mm_error_set(err, MM_ERANGE, "event_dir",
+                            "event direction must be -1, 0 or +1, got %d",
+                            prob->event_dir);
     if ((unsigned)opt->method >= sizeof methods / sizeof methods[0])
         return mm_error_set(err, MM_ERANGE, "method",
                             "unknown method %d (expected rk4, dopri5 or dop853)",
@@ -416,7 +422,7 @@ int mm_ode_check(const mm_ode_problem *prob, const mm_ode_options *opt,
                             "rk4 takes fixed steps: step 'h' must be > 0, got %g",
                             opt->h);
     if (is_fixed(opt)) {
-        double N = fixed_step_count(T, opt->h);
+        double N = mm_ode_fixed_steps(T, opt->h);
         if (N > (double)opt->max_steps)
             return mm_error_set(err, MM_ERANGE, "h",
                                 "step h = %g s needs %.0f steps to cover %g s, "
@@ -877,26 +883,30 @@ static void stiffness_test(stiffness *st, const mm_ode_work *w, size_t n,
     }
 }
 
-/* Fill the grid rows with t_out in (t, t_new] from the step just accepted
- * (y at t, y_new at t_new = t + h; t_new is passed as such because t + h
- * may round to a neighbour of t_end): prepare the continuous extension
- * once, then evaluate it at each point, advancing res->nout_done.  Returns
- * f's nonzero value with *f_failed set (DOP853 calls f three more times),
- * or MM_ENONFINITE. */
+/* Fill the grid rows with t_out in (t, t_stop] from the step just accepted
+ * (y at t, y_new at t + h; t_stop is passed as such because t + h may
+ * round to a neighbour of t_end, and an event may end the step early):
+ * prepare the continuous extension once per step (*prepared says it is
+ * ready), then evaluate it at each point, advancing res->nout_done.
+ * Returns f's nonzero value with *f_failed set (DOP853 calls f three more
+ * times), or MM_ENONFINITE. */
 static int write_grid(run *r, const method_info *m, mm_ode_method method,
-                      mm_ode_result *res, double t, double t_new, double h,
-                      int *f_failed, mm_error *err)
+                      mm_ode_result *res, double t, double t_stop, double h,
+                      int *prepared, int *f_failed, mm_error *err)
 {
     const size_t n = r->n;
     size_t io = res->nout_done;
-    if (io >= res->nout || res->t_out[io] > t_new)
+    if (io >= res->nout || res->t_out[io] > t_stop)
         return MM_OK;                          /* no grid point in this step */
-    int rc = dense_prepare(r, m, method, t, h);
-    if (rc) {
-        *f_failed = 1;
-        return rc;
+    if (!*prepared) {
+        int rc = dense_prepare(r, m, method, t, h);
+        if (rc) {
+            *f_failed = 1;
+            return rc;
+        }
+        *prepared = 1;
     }
-    for (; io < res->nout && res->t_out[io] <= t_new; io++) {
+    for (; io < res->nout && res->t_out[io] <= t_stop; io++) {
         double *row = res->y_out + io * n;
         dense_eval(r->w, n, m->dense_rows, (res->t_out[io] - t) / h, row);
         if (!all_finite(n, row))
@@ -905,6 +915,85 @@ static int write_grid(run *r, const method_info *m, mm_ode_method method,
                                 "t = %.6g s", res->t_out[io]);
         res->nout_done = io + 1;
     }
+    return MM_OK;
+}
+
+/* ==== events =============================================================== */
+
+/* Did g cross zero from g0 to g1 in the direction dir (see mm_ode.h)? */
+static int crossed(int dir, double g0, double g1)
+{
+    return (dir <= 0 && g0 > 0.0 && g1 <= 0.0) || (dir >= 0 && g0 < 0.0 && g1 >= 0.0);
+}
+
+/* g on the continuous extension of the step from t of length h. */
+typedef struct event_arg {
+    run *r;
+    int rows;
+    double t, h;
+    double *y;       /* scratch: the interpolated state */
+    long evals;
+    int rc;          /* the event function's own nonzero return */
+} event_arg;
+
+static int event_at(double theta, double *g, void *ctx)
+{
+    event_arg *e = ctx;
+    const mm_ode_problem *p = e->r->p;
+    dense_eval(e->r->w, e->r->n, e->rows, theta, e->y);
+    e->evals++;
+    e->rc = p->event(e->t + theta * e->h, e->y, g, p->params);
+    return e->rc;
+}
+
+static int stopped_by_event(mm_error *err, int rc, double t)
+{
+    int code = (rc > 0 && rc < MM_STATUS_COUNT) ? rc : MM_EINTERNAL;
+    return mm_error_set(err, code, "event",
+                        "the event function stopped the integration at "
+                        "t = %.6g s (it returned %d)", t, rc);
+}
+
+/* After an accepted step from (t, y) to (t + h, y_new): has the event
+ * fired?  g_old holds g at t and receives g at the end.  On a crossing the
+ * zero is located on the continuous extension (Brent in theta to a few
+ * eps of t), *t_stop receives its time and y_new the state there. */
+static int event_step(run *r, const method_info *m, mm_ode_method method, double t,
+                      double t_new, double h, double *g_old, int *hit, double *t_stop,
+                      int *prepared, long *g_evals, mm_error *err)
+{
+    const mm_ode_problem *p = r->p;
+    mm_ode_work *w = r->w;
+    double g_new;
+    (*g_evals)++;
+    int rc = p->event(t_new, w->ynew, &g_new, p->params);
+    if (rc)
+        return stopped_by_event(err, rc, t_new);
+    if (!isfinite(g_new))
+        return mm_error_set(err, MM_ENONFINITE, "event",
+                            "the event function is not finite at t = %.6g s", t_new);
+    *hit = crossed(p->event_dir, *g_old, g_new);
+    *t_stop = t_new;
+    if (*hit && g_new != 0.0) {
+        if (!*prepared) {
+            if ((rc = dense_prepare(r, m, method, t, h)))
+                return stopped_by_f(err, rc, r->t_call);
+            *prepared = 1;
+        }
+        event_arg ea = {.r = r, .rows = m->dense_rows, .t = t, .h = h, .y = w->ytmp};
+        double theta, g_at, width;
+        rc = mm_roots_brent(event_at, &ea, 0.0, 1.0, *g_old, g_new,
+                            2.0 * DBL_EPSILON * fabs(t_new) / h, 200, &theta, &g_at,
+                            &width, NULL, NULL, err);
+        *g_evals += ea.evals;
+        if (rc)
+            return ea.rc ? stopped_by_event(err, ea.rc, t + theta * h) : rc;
+        if (theta < 1.0) {
+            *t_stop = t + theta * h;
+            dense_eval(w, r->n, m->dense_rows, theta, w->ynew);   /* the state at the zero */
+        }
+    }
+    *g_old = g_new;
     return MM_OK;
 }
 
@@ -929,6 +1018,9 @@ int mm_ode_solve(const mm_ode_problem *prob, const mm_ode_options *opt,
     double h_small = 0.0, h_large = 0.0, err_max = 0.0, err_sum = 0.0;
     stiffness st = {0, 0, 0};
     double t = t0;
+    double g_old = 0.0;          /* the event function at t */
+    long g_evals = 0;
+    res->event = 0;
     res->nout_done = 0;
     res->n_stored = 0;
     run r = {.p = prob, .w = w, .n = n, .rtol = opt->rtol, .atol = opt->atol};
@@ -950,6 +1042,18 @@ int mm_ode_solve(const mm_ode_problem *prob, const mm_ode_options *opt,
                           "the right-hand side is not finite at t0 = %g s", t0);
         goto out;
     }
+    if (prob->event) {
+        g_evals++;
+        if ((rc = prob->event(t, w->y, &g_old, prob->params))) {
+            rc = stopped_by_event(err, rc, t);
+            goto out;
+        }
+        if (!isfinite(g_old)) {
+            rc = mm_error_set(err, MM_ENONFINITE, "event",
+                              "the event function is not finite at t0 = %g s", t0);
+            goto out;
+        }
+    }
     while (res->nout_done < res->nout && res->t_out[res->nout_done] <= t0) {
         memcpy(res->y_out + res->nout_done * n, w->y, n * sizeof(double));
         res->nout_done++;
@@ -966,7 +1070,7 @@ int mm_ode_solve(const mm_ode_problem *prob, const mm_ode_options *opt,
     long n_fixed = 0;
     double h;
     if (fixed) {
-        n_fixed = (long)fixed_step_count(t_end - t0, opt->h);
+        n_fixed = (long)mm_ode_fixed_steps(t_end - t0, opt->h);
         h = (t_end - t0) / (double)n_fixed;
     } else if (opt->h_init > 0.0) {
         h = fmin(opt->h_init, hmax);
@@ -1079,8 +1183,12 @@ int mm_ode_solve(const mm_ode_problem *prob, const mm_ode_options *opt,
         if (!fixed && m->stiff_stage > 0 &&
             ((n_acc + 1) % STIFF_EVERY == 0 || st.iasti > 0))
             stiffness_test(&st, w, n, m, hs);
-        int f_failed = 0;
-        if ((rc = write_grid(&r, m, method, res, t, t_new, hs, &f_failed, err))) {
+        int f_failed = 0, prepared = 0, hit = 0;
+        double t_stop = t_new;
+        if (prob->event && (rc = event_step(&r, m, method, t, t_new, hs, &g_old, &hit, &t_stop,
+                                            &prepared, &g_evals, err)))
+            goto out;
+        if ((rc = write_grid(&r, m, method, res, t, t_stop, hs, &prepared, &f_failed, err))) {
             if (f_failed)
                 rc = stopped_by_f(err, rc, r.t_call);
             goto out;
@@ -1093,7 +1201,7 @@ int mm_ode_solve(const mm_ode_problem *prob, const mm_ode_options *opt,
                     "instead, or loosen the tolerance", res->steps_cap, t, t_end);
                 goto out;
             }
-            res->t_steps[res->n_stored] = t_new;
+            res->t_steps[res->n_stored] = t_stop;
             memcpy(res->y_steps + res->n_stored * n, w->ynew, n * sizeof(double));
             res->n_stored++;
         }
@@ -1106,7 +1214,12 @@ int mm_ode_solve(const mm_ode_problem *prob, const mm_ode_options *opt,
         err_sum += est.abs;
         swap(&w->y, &w->ynew);
         swap(&w->k[1], &w->k[m->fsal]);
-        t = t_new;
+        t = t_stop;
+        if (hit) {                            /* stopped by the event */
+            res->event = 1;
+            res->t_event = t;
+            break;
+        }
         if (last)
             break;
         if (!fixed) {
@@ -1116,7 +1229,7 @@ int mm_ode_solve(const mm_ode_problem *prob, const mm_ode_options *opt,
             rejected_last = 0;
         }
     }
-    assert(res->nout_done == res->nout);   /* every t_out <= t_end was reached */
+    assert(res->event || res->nout_done == res->nout);   /* every t_out <= t_end was reached */
     rc = MM_OK;
 
 out:
@@ -1129,6 +1242,7 @@ out:
     res->err_local_max = err_max;
     res->err_sum = err_sum;
     res->stiff = st.stiff;
+    res->n_event_evals = g_evals;
     if (res->y_end && w)
         memcpy(res->y_end, w->y, n * sizeof(double));
     return rc;

@@ -61,6 +61,11 @@
 typedef int (*mm_ode_rhs)(double t, const double *y, double *dydt,
                           void *params);
 
+/* Event function: write g(t, y) into *g.  Return 0 to go on, nonzero to
+ * stop the integration (as the right-hand side).  See "Events" below. */
+typedef int (*mm_ode_event_fn)(double t, const double *y, double *g,
+                               void *params);
+
 typedef enum mm_ode_method {
     MM_ODE_RK4 = 0,    /* classical Runge–Kutta, 4 stages, fixed step h */
     MM_ODE_DOPRI5,     /* Dormand–Prince 5(4), 7 stages (6 with FSAL) */
@@ -75,7 +80,30 @@ typedef struct mm_ode_problem {
     double t0;           /* start time [s] */
     double t_end;        /* end time [s], > t0 */
     const double *y0;    /* initial state, n values (read only) */
+    mm_ode_event_fn event; /* NULL, or g(t, y): the run stops at its first
+                            zero crossed in event_dir (see "Events") */
+    int event_dir;       /* -1: g falls through 0 (from > 0 to <= 0);
+                            +1: g rises (from < 0 to >= 0); 0: either */
 } mm_ode_problem;
+
+/* Events.  With prob.event set, the solver evaluates g at the start and at
+ * the end of every accepted step (fixed or adaptive).  When g has crossed
+ * zero in the direction asked since the last accepted step, the zero is
+ * located on the method's continuous extension (the dense output, of
+ * order 3, 4 and 7 for RK4, DOPRI5 and DOP853) by Brent's method to a few
+ * eps of t, and the run stops there:
+ *   - res.event = 1, res.t_event = t_reached = the zero (<= t_end);
+ *   - y_end and the last recorded step (t_steps / y_steps) hold the state
+ *     at the zero, from the continuous extension;
+ *   - grid rows are written only up to t_event: nout_done says how many;
+ *   - mm_ode_solve returns MM_OK.
+ * The error of t_event is the extension's error in g over |dg/dt| (plus a
+ * few eps |t|): a tolerance rtol gives an event time good to about rtol of
+ * the time scale of g.  A zero of g at t0 itself does not count (a run
+ * may start on the surface: a mass at rest whose velocity is g).  Two
+ * zeros inside one step cancel and go unseen: cap the step (h_max) below
+ * the shortest time between zeros when that can happen.  Without a zero
+ * the run ends at t_end with res.event = 0. */
 
 /* How to integrate: fill with mm_ode_options_init, then change fields. */
 typedef struct mm_ode_options {
@@ -135,10 +163,21 @@ typedef struct mm_ode_result {
                             higher-order solution actually propagated. */
     int stiff;           /* 1 if Hairer's stiffness test fired: the step size
                             was held at the stability limit for 15 steps */
+    int event;           /* 1: the run stopped at a zero of prob.event */
+    double t_event;      /* its time [s] (valid when event = 1) */
+    long n_event_evals;  /* calls of the event function */
 } mm_ode_result;
 
 /* Fill opt with the defaults above.  Cannot fail. */
 void mm_ode_options_init(mm_ode_options *opt);
+
+/* The steps of a fixed-step run (RK4, or opt.h > 0) over a span T [s]
+ * with the step asked h [s]: N = ceil(T / h), taken as N equal steps of
+ * T / N <= h; the ceiling has a relative slack of 1e-12, so that rounding
+ * (10 / 0.001 = 10000.000000000002) does not add a step.  At least 1.
+ * A double: it may be huge before mm_ode_check refuses it.  T > 0 and
+ * h > 0 finite; cannot fail. */
+double mm_ode_fixed_steps(double T, double h);
 
 /* Name of a method ("rk4", "dopri5", "dop853"), "unknown" otherwise.
  * Cannot fail. */
@@ -173,7 +212,8 @@ int mm_ode_check(const mm_ode_problem *prob, const mm_ode_options *opt,
  * mm_ode_work_alloc(m) with m >= prob->n; its contents are overwritten.
  * prob, opt and y0 are only read.  err may be NULL.
  *
- * Returns MM_OK with t_reached == t_end, nout_done == nout, or fails with:
+ * Returns MM_OK with t_reached == t_end, nout_done == nout (or, stopped by
+ * an event, t_reached == t_event and the rows up to it), or fails with:
  *   any code of mm_ode_check (then nothing else has happened);
  *   MM_ENOMEM      w is NULL (a failed mm_ode_work_alloc);
  *   MM_ENOCONV     max_steps step attempts were not enough ("max_steps";

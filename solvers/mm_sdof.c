@@ -13,7 +13,7 @@ int mm_sdof_check(const mm_sdof *s, mm_error *err)
 {
     const struct { const char *name; double v; } f[] = {
         {"m", s->m}, {"c", s->c}, {"k", s->k}, {"F0", s->F0},
-        {"omega", s->omega}, {"x0", s->x0}, {"v0", s->v0},
+        {"omega", s->omega}, {"x0", s->x0}, {"v0", s->v0}, {"G0", s->G0},
     };
     for (unsigned i = 0; i < sizeof f / sizeof f[0]; i++)
         if (!isfinite(f[i].v))
@@ -38,8 +38,15 @@ void mm_sdof_props_get(const mm_sdof *s, mm_sdof_props *p)
                                               : MM_SDOF_OVER;
     p->omega_d = p->regime == MM_SDOF_UNDER ? p->omega_n * sqrt((1 - p->zeta) * (1 + p->zeta)) : 0.0;
 
-    double re = s->k - s->m * s->omega * s->omega;   /* dynamic stiffness k - m w^2 + i c w */
-    double im = s->c * s->omega;
+    /* dynamic stiffness k - m w^2 + i c w; m w^2 as the exact sum
+     * q + e2 + e1 w (two fma products), so that k - m w^2 near resonance
+     * keeps the digits the data have */
+    double w = s->omega, mw = s->m * w, e1 = fma(s->m, w, -mw);
+    double q = mw * w, e2 = fma(mw, w, -q);
+    double re = ((s->k - q) - e2) - e1 * w;
+    double im = s->c * w;
+    double F = hypot(s->F0, s->G0);
+    p->stiffness_re = re;
     /* no damping and |k - m w^2| within 1e-9 k: the beat period is then over
      * 1e9 natural periods, so no steady state is ever reached (and X would
      * be a meaningless 1e9 F0/k or more) */
@@ -50,7 +57,7 @@ void mm_sdof_props_get(const mm_sdof *s, mm_sdof_props *p)
         p->magnification = 0.0;
     } else {
         double mod = hypot(re, im);
-        p->X = s->F0 / mod;
+        p->X = F / mod;
         p->phase = atan2(im, re);                     /* in [0, pi] since im >= 0 */
         p->magnification = s->k / mod;
     }
@@ -71,10 +78,15 @@ static double sinhc(double x)
     return sinh(x) / x;
 }
 
-/* e^(-a t) [A C(t) + B S(t)] and its derivative, lambda = omega_n^2 (1 - zeta^2). */
-static double homogeneous(double a, double lambda, double A, double B, double t, double *v)
+/* The motion with x(0) = A, x'(0) = dv of x'' + 2 a x' + wn2 x = 0, and its
+ * velocity, lambda = wn2 - a^2 = omega_n^2 (1 - zeta^2):
+ *   x = e^(-a t) [A (C + a S) + dv S],  v = e^(-a t) [dv (C - a S) - wn2 A S],
+ * C = cos(sqrt(lambda) t), S = sin(sqrt(lambda) t)/sqrt(lambda) (cosh, sinh
+ * when lambda < 0; 1, t when 0).  In this form a^2 + lambda = wn2 never
+ * appears as a difference (it loses 2 log10(2 zeta) digits when overdamped). */
+static double homogeneous(double a, double lambda, double wn2, double A, double dv, double t, double *v)
 {
-    double C, S, Cd, Sd;   /* C, S and their time derivatives: C' = -lambda S, S' = C */
+    double C, S;
     if (lambda > 0) {
         double w = sqrt(lambda);
         C = cos(w * t);
@@ -82,14 +94,16 @@ static double homogeneous(double a, double lambda, double A, double B, double t,
     } else if (lambda < 0) {
         double mu = sqrt(-lambda);
         if (mu * t > 1.0) {
-            /* overdamped, far from critical: e^(-a t) cosh and sinh as two
-             * decaying exponentials, so that cosh(mu t) cannot overflow;
-             * a - mu = (a^2 - mu^2)/(a + mu) without cancellation */
-            double slow = exp(-(a * a + lambda) / (a + mu) * t), fast = exp(-(a + mu) * t);
-            double eC = 0.5 * (slow + fast), eS = 0.5 * (slow - fast) / mu;  /* e^(-at) C, e^(-at) S */
+            /* overdamped, far from critical: the two decaying modes
+             *   x = c1 e^(-r1 t) + c2 e^(-r2 t),  r2 = a + mu,  r1 = a - mu = wn2 / r2,
+             *   c1 = (r2 A + dv) / (2 mu),  c2 = -(r1 A + dv) / (2 mu),
+             * so that neither a - mu cancels nor e^(-at) cosh, sinh overflow */
+            double r2 = a + mu, r1 = wn2 / r2;
+            double c1 = (r2 * A + dv) / (2 * mu), c2 = -(r1 * A + dv) / (2 * mu);
+            double slow = c1 * exp(-r1 * t), fast = c2 * exp(-r2 * t);
             if (v)
-                *v = A * (-lambda * eS - a * eC) + B * (eC - a * eS);
-            return A * eC + B * eS;
+                *v = -r1 * slow - r2 * fast;
+            return slow + fast;
         }
         C = cosh(mu * t);
         S = t * sinhc(mu * t);
@@ -97,12 +111,10 @@ static double homogeneous(double a, double lambda, double A, double B, double t,
         C = 1.0;
         S = t;
     }
-    Cd = -lambda * S;
-    Sd = C;
     double e = exp(-a * t);
     if (v)
-        *v = e * (A * Cd + B * Sd - a * (A * C + B * S));
-    return e * (A * C + B * S);
+        *v = e * (dv * (C - a * S) - wn2 * A * S);
+    return e * (A * (C + a * S) + dv * S);
 }
 
 double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
@@ -111,37 +123,64 @@ double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
     double a = p->zeta * wn;                                   /* decay rate c / 2m */
     double lambda = p->regime == MM_SDOF_CRITICAL ? 0.0 : wn * wn * (1 - p->zeta) * (1 + p->zeta);
 
-    if (s->c == 0.0 && s->F0 != 0.0) {
-        /* undamped: x = x0 cos + v0 S + F0/m (cos w t - cos wn t)/(wn^2 - w^2),
-         * the last term as t sin(s t) sinc(d t) / (2 s)... see the header */
+    if (s->c == 0.0 && (s->F0 != 0.0 || s->G0 != 0.0)) {
+        /* undamped: x = x0 C + v0 S + F0/m g(t) + G0/m h(t), with
+         *   g = (cos w t - cos wn t)/(wn^2 - w^2) = t sin(sm t) sinc(d t) / (2 sm),
+         *   h = (sin w t - (w/wn) sin wn t)/(wn^2 - w^2)
+         *     = (sin(wn t)/wn - t cos(sm t) sinc(d t)) / (2 sm),
+         * sm = (wn + w)/2, d = (wn - w)/2; h' = w g. */
         double sm = 0.5 * (wn + w), d = 0.5 * (wn - w);
-        double vh, xh = homogeneous(0.0, wn * wn, s->x0, s->v0, t, &vh);
-        double g = t * sin(sm * t) * sinc(d * t) / (2.0 * sm);  /* = (cos wt - cos wn t)/(wn^2 - w^2) */
-        /* g' = [wn sin wn t - w sin w t] / (wn^2 - w^2), written stably:
-         *    = [cos(sm t) sin(d t) (wn + w)/2 ... ] — use the product rule on
-         *    g = (t/(2 sm)) sin(sm t) sinc(d t) */
+        double vh, xh = homogeneous(0.0, wn * wn, wn * wn, s->x0, s->v0, t, &vh);
         double sd = sinc(d * t);
-        double dsinc = fabs(d * t) < 1e-4 ? -d * d * t / 3.0
-                                          : d * (cos(d * t) - sd) / (d * t);  /* d/dt sinc(d t) */
-        double gd = (sin(sm * t) * sd + t * sm * cos(sm * t) * sd + t * sin(sm * t) * dsinc) / (2.0 * sm);
-        if (v)
-            *v = vh + s->F0 / s->m * gd;
-        return xh + s->F0 / s->m * g;
+        double g = t * sin(sm * t) * sd / (2.0 * sm);
+        double h = (sin(wn * t) / wn - t * cos(sm * t) * sd) / (2.0 * sm);
+        if (v) {
+            /* g' by the product rule on (t/(2 sm)) sin(sm t) sinc(d t) */
+            double dsinc = fabs(d * t) < 1e-4 ? -d * d * t / 3.0
+                                              : d * (cos(d * t) - sd) / (d * t);  /* d/dt sinc(d t) */
+            double gd = (sin(sm * t) * sd + t * sm * cos(sm * t) * sd + t * sin(sm * t) * dsinc) / (2.0 * sm);
+            *v = vh + (s->F0 * gd + s->G0 * w * g) / s->m;
+        }
+        return xh + (s->F0 * g + s->G0 * h) / s->m;
     }
 
     /* damped (or free): steady state plus the homogeneous part that meets the
      * initial conditions */
     double xp0 = 0, vp0 = 0, xp = 0, vp = 0;
-    if (s->F0 != 0.0) {
-        xp0 = p->X * cos(-p->phase);
-        vp0 = -p->X * w * sin(-p->phase);
-        xp = p->X * cos(w * t - p->phase);
-        vp = -p->X * w * sin(w * t - p->phase);
+    if (s->F0 != 0.0 || s->G0 != 0.0) {
+        double lag = p->phase - atan2(-s->G0, s->F0);  /* x_p = X cos(w t - lag) */
+        xp0 = p->X * cos(-lag);
+        vp0 = -p->X * w * sin(-lag);
+        xp = p->X * cos(w * t - lag);
+        vp = -p->X * w * sin(w * t - lag);
     }
-    double A = s->x0 - xp0;
-    double B = (s->v0 - vp0) + a * A;                          /* from x_h'(0) = -a A + B */
-    double vh, xh = homogeneous(a, lambda, A, B, t, &vh);
+    double vh, xh = homogeneous(a, lambda, wn * wn, s->x0 - xp0, s->v0 - vp0, t, &vh);
     if (v)
         *v = vh + vp;
     return xh + xp;
+}
+
+int mm_sdof_rhs(double t, const double *y, double *dydt, void *params)
+{
+    const mm_sdof *s = params;
+    double wt = s->omega * t;
+    double F = s->G0 != 0.0 ? s->F0 * cos(wt) + s->G0 * sin(wt) : s->F0 * cos(wt);
+    dydt[0] = y[1];
+    dydt[1] = (F - s->c * y[1] - s->k * y[0]) / s->m;
+    return 0;
+}
+
+double mm_sdof_energy(const mm_sdof *s, double x, double v)
+{
+    return 0.5 * s->m * v * v + 0.5 * s->k * x * x;
+}
+
+double mm_sdof_fastest_rate(const mm_sdof *s, const mm_sdof_props *p)
+{
+    double rate = p->omega_n;
+    if (s->F0 != 0.0 || s->G0 != 0.0)
+        rate = fmax(rate, s->omega);
+    if (p->zeta > 1)                                  /* fast overdamped mode */
+        rate = fmax(rate, p->omega_n * (p->zeta + sqrt((p->zeta - 1) * (p->zeta + 1))));
+    return rate;
 }

@@ -1,7 +1,10 @@
 /* mm_sdof.h — the closed-form response of one mass on a spring and damper.
  *
- *     m x'' + c x' + k x = F0 cos(omega t),   x(0) = x0,  x'(0) = v0
+ *     m x'' + c x' + k x = F0 cos(omega t) + G0 sin(omega t),
+ *     x(0) = x0,  x'(0) = v0
  *
+ * (G0 is 0 for a force F0 cos(omega t); a moving support y = Y cos(omega t)
+ * pulling through the spring and damper gives F0 = k Y, G0 = -c omega Y.)
  * The reference that the 1-DOF exercises check their time integrators
  * against, so it is written to stay accurate where textbook formulas lose
  * digits:
@@ -15,7 +18,12 @@
  *       (cos omega t - cos omega_n t) / (omega_n^2 - omega^2)
  *         = t sin(s t) sinc(d t) / s,   s = (omega_n + omega)/2, d = (omega_n - omega)/2,
  *     which stays exact at and near resonance, where it becomes
- *     t sin(omega t) / (2 omega): the growth of undamped resonance.
+ *     t sin(omega t) / (2 omega): the growth of undamped resonance; the sine
+ *     force's part likewise as
+ *       (sin omega t - (omega/omega_n) sin omega_n t) / (omega_n^2 - omega^2)
+ *         = (sin(omega_n t)/omega_n - t cos(s t) sinc(d t)) / (2 s);
+ *   - the dynamic stiffness k - m omega^2 without cancellation (an exact
+ *     product by fma), so that omega = omega_n (1 + 1e-9) keeps its digits.
  * All quantities SI: m [kg], c [N s/m], k [N/m], F0 [N], omega [rad/s].
  */
 #ifndef MM_SDOF_H
@@ -33,6 +41,7 @@ typedef struct mm_sdof {
     double m, c, k;        /* mass [kg], damping [N s/m], stiffness [N/m] */
     double F0, omega;      /* forcing amplitude [N] and frequency [rad/s]; F0 = 0: free */
     double x0, v0;         /* initial displacement [m] and velocity [m/s] */
+    double G0;             /* amplitude of the sine force G0 sin(omega t) [N]; usually 0 */
 } mm_sdof;
 
 typedef struct mm_sdof_props {
@@ -42,9 +51,12 @@ typedef struct mm_sdof_props {
     int regime;            /* enum mm_sdof_regime */
     int resonant;          /* 1: c = 0 and |k - m omega^2| <= 1e-9 k: no steady
                               state is ever reached (X is then reported as 0) */
-    double X;              /* steady amplitude F0 / |k - m omega^2 + i c omega| [m]; 0 if resonant */
-    double phase;          /* lag of the steady state behind the force, in [0, pi] [rad] */
-    double magnification;  /* X / (F0/k), dimensionless (1/|1 - r^2 + 2 i zeta r|) */
+    double X;              /* steady amplitude |F0 - i G0| / |k - m omega^2 + i c omega| [m];
+                              0 if resonant */
+    double phase;          /* lag of the steady state behind the force, in [0, pi] [rad]:
+                              x = X cos(omega t + psi - phase), psi = atan2(-G0, F0) */
+    double magnification;  /* X / (|F0 - i G0|/k), dimensionless (1/|1 - r^2 + 2 i zeta r|) */
+    double stiffness_re;   /* k - m omega^2 [N/m], without cancellation */
 } mm_sdof_props;
 
 /* "underdamped", "critically damped" or "overdamped"; "" for another value.
@@ -62,5 +74,18 @@ void mm_sdof_props_get(const mm_sdof *s, mm_sdof_props *p);
  * v is not NULL.  Valid in every regime, also at undamped resonance.
  * s must pass mm_sdof_check.  Cannot fail. */
 double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v);
+
+/* The equation as a first-order system for mm_ode (an mm_ode_rhs):
+ * y = (x, v), dydt = (v, (F0 cos wt + G0 sin wt - c v - k x) / m),
+ * params a const mm_sdof *.  Returns 0. */
+int mm_sdof_rhs(double t, const double *y, double *dydt, void *params);
+
+/* The mechanical energy 1/2 m v^2 + 1/2 k x^2 [J].  Cannot fail. */
+double mm_sdof_energy(const mm_sdof *s, double x, double v);
+
+/* The largest rate of the motion [1/s]: omega_n, omega (when forced), and
+ * the fast decay rate omega_n (zeta + sqrt(zeta^2 - 1)) when overdamped.
+ * The time scale of the work of a time integration.  Cannot fail. */
+double mm_sdof_fastest_rate(const mm_sdof *s, const mm_sdof_props *p);
 
 #endif

@@ -12,7 +12,9 @@
  * content above fs/2.
  * Checks: Parseval's theorem (eq. 4), and the FFT against the defining sum
  * (1) evaluated directly, bin by bin, at the largest peaks and a few other
- * bins (a second computation that does not use FFTW).
+ * bins (a second computation that does not use FFTW).  Samples that are
+ * all zero to rounding (a sine sampled only at its zeros: exactly at fs/2)
+ * have no spectrum to speak of: that is said instead of a peak of 1e-14.
  * Reference: A. V. Oppenheim, R. W. Schafer, Discrete-Time Signal
  * Processing, 3rd ed., Pearson 2010, ch. 8 and 10; F. J. Harris, On the use
  * of windows for harmonic analysis with the DFT, Proc. IEEE 66 (1978) 51-83.
@@ -38,27 +40,46 @@ static const char *const windows[] = {"rect", "hann", NULL};
 #define LOBE 2                 /* bins either side of a peak counted as the peak (Hann main lobe) */
 #define PLOT_BINS 4097         /* most points of the amplitude series */
 #define SHOW_SAMPLES 256       /* samples drawn in the time plot */
+#define BETWEEN 4              /* points of the signal drawn between two samples */
+#define NOISE 1e-12            /* samples below this share of the signal's size are rounding noise */
 #define ALIAS_GUARD 8          /* bins above fs/2 ignored by the aliasing test */
 #define ALIAS_LEVEL 1e-3       /* amplitude above fs/2, relative to the largest, that is reported */
 
 static const mm_param params[] = {
     [P_SIGNAL] = {"signal", "signal x(t)", "", MM_EXPR, 0, 0, 0, "sin(2*pi*5*t)+0.5*sin(2*pi*12*t)",
                   .vars = "t",
-                  .help = "any expression of the time t in s: sin(2*pi*f*t) is a sine of f Hz and amplitude 1"},
+                  .help = "any expression of the time t in s: sin(2*pi*f*t) is a sine of f Hz and amplitude 1; "
+                          "its values must stay below 1e300/N (the transform adds N of them)"},
     [P_FS] = {"fs", "sampling frequency", "Hz", MM_REAL, 100, 1e-2, 1e6,
-              .help = "samples per second; frequencies above fs/2 cannot be told from lower ones"},
+              .help = "samples per second, 0.01 Hz to 1 MHz; frequencies above fs/2 cannot be told from lower ones"},
     [P_N] = {"N", "number of samples", "", MM_INT, 256, 8, MAX_N,
-             .help = "samples taken at t = 0, 1/fs, ...; the bins are fs/N apart (N times the length of the signal may be at most 8e6)"},
+             .help = "samples taken at t = 0, 1/fs, ...; the bins are fs/N apart; at most 65536, and N times "
+                     "the length of the signal at most 8e6 (the work of one request)"},
     [P_WINDOW] = {"window", "window", "", MM_CHOICE, WIN_RECT, 0, 0, .choices = windows,
                   .help = "rect: the samples as they are; hann: tapered to zero at both ends, less leakage"},
 };
 
-/* Power of bin k in the single-sided spectrum (a sine of amplitude a has
- * mean square a^2/2; the bins 0 and N/2 have no mirror image). */
-static double bin_power(const double *amp, size_t k, size_t n)
-{
-    return (k == 0 || 2 * k == n) ? amp[k] * amp[k] : 0.5 * amp[k] * amp[k];
-}
+enum { O_DF, O_NYQ, O_DUR, O_PEAK_F, O_PEAK_A, O_LEAK, O_GAIN, O_PEAKS, O_AMP, O_SAMPLES, O_SIGNAL };
+
+static const char *const peak_cols[] = {"f", "amplitude", NULL};
+static const char *const peak_units[] = {"Hz", "", NULL};
+
+static const mm_output outputs[] = {
+    [O_DF] = MM_SCALAR("df", "frequency resolution fs/N (bin spacing)", "Hz", .flags = MM_ANSWER | MM_EXACT),
+    [O_NYQ] = MM_SCALAR("nyquist", "Nyquist frequency fs/2", "Hz", .flags = MM_ANSWER | MM_EXACT),
+    [O_DUR] = MM_SCALAR("duration", "record length N/fs", "s", .flags = MM_EXACT),
+    [O_PEAK_F] = MM_SCALAR("peak_frequency", "frequency of the largest peak (a bin frequency)", "Hz",
+                           .flags = MM_ANSWER | MM_EXACT),
+    [O_PEAK_A] = MM_SCALAR("peak_amplitude", "amplitude of the largest peak", "", .flags = MM_ANSWER),
+    [O_LEAK] = MM_SCALAR("leakage",
+                         "share of the power more than 2 bins from every peak (local maximum above 1e-3 of the largest)",
+                         ""),
+    [O_GAIN] = MM_SCALAR("coherent_gain", "window coherent gain (divided out)", "", .flags = MM_EXACT),
+    [O_PEAKS] = MM_TABLE("peaks", "the largest peaks: local maxima at bin frequencies", peak_cols, peak_units),
+    [O_AMP] = MM_SERIES("amplitude", "single-sided amplitude", "", "f", "Hz", .figure = "spectrum", .mark = "bars"),
+    [O_SAMPLES] = MM_SERIES("samples", "samples x_j", "", "t", "s", .figure = "signal", .mark = "dots"),
+    [O_SIGNAL] = MM_SERIES("signal", "x(t) between the samples", "", "t", "s", .figure = "signal", .role = "reference"),
+};
 
 /* Amplitude of bin k by the defining sum (1), without FFTW: O(N) per bin.
  * cs[m] = cos(2 pi m / N), sn[m] = sin(2 pi m / N), m < N, so the angle of
@@ -97,42 +118,10 @@ static int sample(mm_expr *e, size_t m, double h, double *t, double *x, size_t *
     return MM_OK;
 }
 
-static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
+/* The largest peaks, largest first, into pk (at most MAX_PEAKS); returns
+ * how many. */
+static int find_peaks(const double *amp, size_t nb, double top, size_t *pk)
 {
-    const double fs = in[P_FS].x;
-    const size_t n = (size_t)in[P_N].x, nb = mm_fourier_bins(n);
-    const mm_window win = (int)in[P_WINDOW].x == WIN_HANN ? MM_WINDOW_HANN : MM_WINDOW_RECT;
-
-    double *t = mm_res_alloc(res, n * sizeof *t), *x = mm_res_alloc(res, n * sizeof *x);
-    double *w = mm_res_alloc(res, n * sizeof *w), *wx = mm_res_alloc(res, n * sizeof *wx);
-    double *freq = mm_res_alloc(res, nb * sizeof *freq), *amp = mm_res_alloc(res, nb * sizeof *amp);
-    if (!t || !x || !w || !wx || !freq || !amp)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-
-    size_t bad;
-    if (sample(e, n, 1 / fs, t, x, &bad) != MM_OK)
-        return mm_error_set(err, MM_EVALUE, "signal",
-                            "signal is not a finite number at t = %g s (sample %zu: %g); "
-                            "every sample must be finite", t[bad], bad, x[bad]);
-
-    /* the spectrum, eq. (3), by FFTW */
-    mm_fourier_options opt;
-    mm_fourier_options_init(&opt);
-    opt.window = win;
-    int rc = mm_fourier_spectrum(x, n, fs, &opt, freq, amp, NULL, err);
-    if (rc != MM_OK)
-        return rc;
-    double gain;
-    if ((rc = mm_fourier_window(win, n, w, &gain, err)) != MM_OK)
-        return rc;
-    for (size_t j = 0; j < n; j++)
-        wx[j] = w[j] * x[j];
-
-    /* ---- peaks: local maxima at bins, largest first ---- */
-    double top = 0;
-    for (size_t k = 0; k < nb; k++)
-        top = fmax(top, amp[k]);
-    size_t pk[MAX_PEAKS];
     int np = 0;
     for (size_t k = 0; k < nb; k++) {
         if (!is_peak(amp, nb, k, PEAK_FLOOR * top))
@@ -149,88 +138,35 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
         if (np < MAX_PEAKS)
             np++;
     }
-    static const char *const cols[] = {"f", "amplitude"};
-    static const char *const units[] = {"Hz", ""};
-    mm_table *tab = mm_res_table_v1(res, "peaks", np, 2, cols, units);
-    if (!tab)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    for (int i = 0; i < np; i++) {
-        tab->cell[2 * i] = freq[pk[i]];
-        tab->cell[2 * i + 1] = amp[pk[i]];
-    }
+    return np;
+}
 
-    /* ---- leakage, eq. (5): the share of power farther than LOBE bins from
-     * every significant peak (a local maximum above LEAK_PEAK of the largest;
-     * the table lists only the largest MAX_PEAKS of them) ---- */
-    unsigned char *lobe = mm_res_alloc(res, nb);
-    if (!lobe)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+/* Leakage, eq. (5): the share of power farther than LOBE bins from every
+ * significant peak (a local maximum above LEAK_PEAK of the largest).  Powers
+ * relative to the largest amplitude, so that nothing overflows. */
+static double leakage(const double *amp, size_t nb, size_t n, double top, unsigned char *lobe)
+{
     for (size_t k = 0; k < nb; k++)
         if (is_peak(amp, nb, k, LEAK_PEAK * top))
             for (size_t i = k > LOBE ? k - LOBE : 0; i <= k + LOBE && i < nb; i++)
                 lobe[i] = 1;
     double total = 0, near = 0;
     for (size_t k = 0; k < nb; k++) {
-        double p = bin_power(amp, k, n);
+        double a = amp[k] / top, p = (k == 0 || 2 * k == n) ? a * a : 0.5 * a * a;
         total += p;
         if (lobe[k])
             near += p;
     }
-    double leakage = total > 0 ? fmax(0, 1 - near / total) : 0;
+    return total > 0 ? fmax(0, 1 - near / total) : 0;
+}
 
-    /* ---- scalars ---- */
-    mm_res_scalar_v1(res, "df", "frequency resolution fs/N (bin spacing)", "Hz", fs / (double)n);
-    mm_res_scalar_v1(res, "nyquist", "Nyquist frequency fs/2", "Hz", fs / 2);
-    mm_res_scalar_v1(res, "duration", "record length N/fs", "s", (double)n / fs);
-    if (np > 0) {
-        mm_res_scalar_v1(res, "peak_frequency", "frequency of the largest peak", "Hz", freq[pk[0]]);
-        mm_res_scalar_v1(res, "peak_amplitude", "amplitude of the largest peak", "", amp[pk[0]]);
-    }
-    mm_res_scalar_v1(res, "leakage",
-                  "share of the power more than 2 bins from every peak (local maximum above 1e-3 of the largest)",
-                  "", leakage);
-    mm_res_scalar_v1(res, "coherent_gain", "window coherent gain (divided out)", "", gain);
-
-    /* ---- checks ---- */
-    /* Parseval, eq. (4): sum (w x)^2 = N g^2 [a_0^2 + sum a_k^2 / 2 + a_{N/2}^2] */
-    double e_time = 0, e_freq = 0, sum_abs = 0;
-    for (size_t j = 0; j < n; j++) {
-        e_time += wx[j] * wx[j];
-        sum_abs += fabs(wx[j]);
-    }
-    for (size_t k = 0; k < nb; k++)
-        e_freq += bin_power(amp, k, n);
-    e_freq *= (double)n * gain * gain;
-    mm_res_check_rel(res, "Parseval: sum of squared (windowed) samples vs spectrum energy, eq. (4)", e_freq,
-                     e_time, 1e-12);
-    /* the FFT against the direct sum (1) at the peaks and a few more bins;
-     * rounding: the direct sum of N terms, <= 2 eps N sum|w x| before scaling */
-    size_t bins[MAX_PEAKS + 4];
-    int nbins = 0;
-    for (int i = 0; i < np && i < 5; i++)
-        bins[nbins++] = pk[i];
-    bins[nbins++] = 0;
-    bins[nbins++] = nb - 1;
-    bins[nbins++] = nb / 3;
-    bins[nbins++] = (2 * nb) / 3;
-    double *cs = mm_res_alloc(res, n * sizeof *cs), *sn = mm_res_alloc(res, n * sizeof *sn);
-    if (!cs || !sn)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    for (size_t m = 0; m < n; m++) {
-        cs[m] = cos(2 * M_PI * (double)m / (double)n);
-        sn[m] = sin(2 * M_PI * (double)m / (double)n);
-    }
-    double worst = 0;
-    for (int i = 0; i < nbins; i++)
-        worst = fmax(worst, fabs(amp[bins[i]] - direct_amp(wx, n, bins[i], cs, sn, gain)));
-    double tol = 2 * DBL_EPSILON * (double)(n + 16) * 2 * sum_abs / ((double)n * gain);
-    mm_res_check_abs(res, "FFT vs the direct sum (1) at the 5 largest peaks and 4 more bins: worst |amplitude error|",
-                     worst, 0, fmax(tol, 1e-300));
-
-    /* ---- aliasing: the same record sampled m >= 2N times (a power of 2, so
-     * its FFT plan is cached), over the same duration N/fs: its bins are
-     * the same fs/N apart and reach R fs/2, R = m/N ---- */
-    size_t len = strlen(in[P_SIGNAL].text);
+/* Aliasing: the same record sampled m >= 2N times (a power of 2, so its FFT
+ * plan is cached) over the same duration N/fs: its bins are the same fs/N
+ * apart and reach R fs/2, R = m/N.  *fine_size receives its largest |x|. */
+static int aliasing(const mm_value *in, mm_expr *e, size_t n, double fs, double *fine_size, mm_result *res,
+                    mm_error *err)
+{
+    size_t len = strlen(in[P_SIGNAL].text), bad;
     size_t budget = ((size_t)1 << 24) / (32 + len);  /* ~10 ms of evaluations whatever the length */
     if (budget > ((size_t)1 << 18))
         budget = (size_t)1 << 18;
@@ -239,64 +175,63 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
     size_t m = 1;
     while (2 * m <= budget)
         m *= 2;
-    double R = (double)m / (double)n, above = 0;
-    if (m >= 2 * n) {
-        size_t mb = mm_fourier_bins(m);
-        double *tf = mm_res_alloc(res, m * sizeof *tf), *xf = mm_res_alloc(res, m * sizeof *xf);
-        double *af = mm_res_alloc(res, mb * sizeof *af);
-        if (!tf || !xf || !af)
-            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-        if (sample(e, m, 1 / (fs * R), tf, xf, &bad) != MM_OK) {
-            mm_res_warn(res, "aliasing not tested: the signal is not finite at t = %g s, between the samples",
-                        tf[bad]);
-        } else {
-            mm_fourier_options fo;
-            mm_fourier_options_init(&fo);
-            fo.window = MM_WINDOW_HANN;               /* keeps the leak of components below fs/2 close */
-            if ((rc = mm_fourier_spectrum(xf, m, fs * R, &fo, NULL, af, NULL, err)) != MM_OK)
-                return rc;
-            double ftop = 0, hi = 0, p_all = 0, p_above = 0;
-            size_t khi = 0;
-            for (size_t k = 0; k < mb; k++) {
-                double p = bin_power(af, k, m);
-                p_all += p;
-                ftop = fmax(ftop, af[k]);
-                if (2 * k > n + 2 * ALIAS_GUARD) {    /* above fs/2 + guard: f_k = k fs / N */
-                    p_above += p;
-                    if (af[k] > hi) {
-                        hi = af[k];
-                        khi = k;
-                    }
-                }
-            }
-            above = p_all > 0 ? p_above / p_all : 0;
-            if (hi > ALIAS_LEVEL * ftop) {
-                double f = (double)khi * fs / (double)n, fa = fabs(f - fs * nearbyint(f / fs));
-                mm_res_warn(res, "aliasing: the signal has content above fs/2 = %g Hz (largest near %g Hz, "
-                                 "amplitude %.3g, %.2g %% of the power); sampled at %g Hz it shows up at "
-                                 "|f - m fs| = %g Hz. Raise fs above %g Hz or remove that component",
-                            fs / 2, f, hi, 100 * above, fs, fa, 2 * f);
-            }
-        }
-        mm_res_scalar_v1(res, "alias_check_up_to", "highest frequency the aliasing test can see (R fs / 2)", "Hz",
-                      R * fs / 2);
-        mm_res_scalar_v1(res, "above_nyquist", "share of the power above fs/2 (from the finer sampling)", "", above);
-    } else {
+    double R = (double)m / (double)n;
+    *fine_size = 0;
+    if (m < 2 * n) {
         mm_res_warn(res, "aliasing not tested: the expression is long and N large (the finer sampling would "
                          "take too long); lower N to test it");
+        return MM_OK;
     }
+    size_t mb = mm_fourier_bins(m);
+    double *tf = mm_res_alloc(res, m * sizeof *tf), *xf = mm_res_alloc(res, m * sizeof *xf);
+    double *af = mm_res_alloc(res, mb * sizeof *af);
+    if (!tf || !xf || !af)
+        return MM_ENOMEM;
+    mm_res_method_stat(res, "alias_check_up_to", R * fs / 2);
+    mm_res_method_stat(res, "alias_oversampling", R);
+    if (sample(e, m, 1 / (fs * R), tf, xf, &bad) != MM_OK) {
+        mm_res_warn(res, "aliasing not tested: the signal is not finite at t = %g s, between the samples", tf[bad]);
+        return MM_OK;
+    }
+    *fine_size = mm_maxabs(xf, (int)m);
+    mm_fourier_options fo;
+    mm_fourier_options_init(&fo);
+    fo.window = MM_WINDOW_HANN;                       /* keeps the leak of components below fs/2 close */
+    int rc = mm_fourier_spectrum(xf, m, fs * R, &fo, NULL, af, NULL, err);
+    if (rc != MM_OK)
+        return rc;
+    double ftop = mm_maxabs(af, (int)mb), hi = 0, p_all = 0, p_above = 0;
+    size_t khi = 0;
+    for (size_t k = 0; k < mb && ftop > 0; k++) {
+        double a = af[k] / ftop, p = (k == 0 || 2 * k == m) ? a * a : 0.5 * a * a;
+        p_all += p;
+        if (2 * k > n + 2 * ALIAS_GUARD) {            /* above fs/2 + guard: f_k = k fs / N */
+            p_above += p;
+            if (af[k] > hi)
+                hi = af[k], khi = k;
+        }
+    }
+    double above = p_all > 0 ? p_above / p_all : 0;
+    mm_res_method_stat(res, "above_nyquist", above);
+    if (hi > ALIAS_LEVEL * ftop) {
+        double f = (double)khi * fs / (double)n, fa = fabs(f - fs * nearbyint(f / fs));
+        mm_res_warn(res, "aliasing: the signal has content above fs/2 = %g Hz (largest near %g Hz, "
+                         "amplitude %.3g, %.2g %% of the power); sampled at %g Hz it shows up at "
+                         "|f - m fs| = %g Hz. Raise fs above %g Hz or remove that component",
+                    fs / 2, f, hi, 100 * above, fs, fa, 2 * f);
+    }
+    return MM_OK;
+}
 
-    /* ---- leakage and resolution remarks ---- */
-    if (np > 0 && leakage > 0.01)
-        mm_res_warn(res, "%.1f %% of the power lies more than 2 bins from every peak: leakage (a frequency "
-                         "between bins, or a record that is not a whole number of periods)%s",
-                    100 * leakage, win == MM_WINDOW_RECT ? "; try window=hann" : "");
-
-    /* ---- series ---- */
+static int curves(mm_expr *e, size_t n, size_t nb, double fs, const double *t, const double *x,
+                  const double *freq, const double *amp, mm_result *res)
+{
     size_t group = (nb + PLOT_BINS - 1) / PLOT_BINS, ns = (nb + group - 1) / group;
-    mm_series *sa = mm_res_series_v1(res, "amplitude", "single-sided amplitude", "", "f", "Hz", (int)ns);
-    if (!sa)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_series *sa = mm_res_series(res, O_AMP, (int)ns);
+    size_t nshow = n < SHOW_SAMPLES ? n : SHOW_SAMPLES, nfine = BETWEEN * (nshow - 1) + 1;
+    mm_series *sx = mm_res_series(res, O_SAMPLES, (int)nshow), *sf = mm_res_series(res, O_SIGNAL, (int)nfine);
+    if (!sa || !sx || !sf)
+        return MM_ENOMEM;
     for (size_t g = 0; g < ns; g++) {                 /* the largest bin of each group */
         size_t best = g * group;
         for (size_t k = g * group; k < nb && k < (g + 1) * group; k++)
@@ -307,32 +242,143 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
     }
     if (group > 1)
         mm_res_warn(res, "the amplitude plot shows the largest of every %zu bins (%zu bins in all)", group, nb);
-
-    size_t nshow = n < SHOW_SAMPLES ? n : SHOW_SAMPLES, nfine = 8 * (nshow - 1) + 1;
-    mm_series *sx = mm_res_series_v1(res, "samples", "samples x_j", "", "t", "s", (int)nshow);
-    mm_series *sf = mm_res_series_v1(res, "signal", "x(t) between the samples", "", "t", "s", (int)nfine);
-    if (!sx || !sf)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     memcpy(sx->x, t, nshow * sizeof *t);
     memcpy(sx->y, x, nshow * sizeof *x);
     for (size_t i = 0; i < nfine; i++)
-        sf->x[i] = (double)i / (8 * fs);
+        sf->x[i] = (double)i / (BETWEEN * fs);
     mm_expr_eval_bulk(e, sf->x, nfine, sf->y);
     size_t holes = 0;
     for (size_t i = 0; i < nfine; i++)
-        if (!isfinite(sf->y[i])) {                   /* a pole between samples: no number to draw */
+        if (!isfinite(sf->y[i])) {                    /* a pole between samples: no number to draw */
             sf->y[i] = 0;
             holes++;
         }
+    mm_ex_round_sig(sf->y, (int)nfine, 6);            /* the curve between the samples, for the eye */
     if (holes)
         mm_res_warn(res, "the signal is not finite at %zu points between the samples; the curve "
                          "\"signal\" is drawn at 0 there", holes);
+    return MM_OK;
+}
 
-    mm_res_method(res, win == MM_WINDOW_HANN ? "FFT (FFTW, real input), Hann window" : "FFT (FFTW, real input)",
-                  1 / fs);
-    mm_res_method_stat(res, "samples", (double)n);
+static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
+{
+    const double fs = in[P_FS].x;
+    const size_t n = (size_t)in[P_N].x, nb = mm_fourier_bins(n);
+    const mm_window win = (int)in[P_WINDOW].x == WIN_HANN ? MM_WINDOW_HANN : MM_WINDOW_RECT;
+
+    double *t = mm_res_alloc(res, n * sizeof *t), *x = mm_res_alloc(res, n * sizeof *x);
+    double *w = mm_res_alloc(res, n * sizeof *w), *wx = mm_res_alloc(res, n * sizeof *wx);
+    double *freq = mm_res_alloc(res, nb * sizeof *freq), *amp = mm_res_alloc(res, nb * sizeof *amp);
+    double *cs = mm_res_alloc(res, n * sizeof *cs), *sn = mm_res_alloc(res, n * sizeof *sn);
+    unsigned char *lobe = mm_res_alloc(res, nb);
+    if (!t || !x || !w || !wx || !freq || !amp || !cs || !sn || !lobe)
+        return MM_ENOMEM;
+
+    size_t bad;
+    if (sample(e, n, 1 / fs, t, x, &bad) != MM_OK)
+        return mm_error_set(err, MM_EVALUE, "signal",
+                            "signal is not a finite number at t = %g s (sample %zu: %g); "
+                            "every sample must be finite", t[bad], bad, x[bad]);
+    double size = mm_maxabs(x, (int)n);
+    if (size > 1e300 / (double)n)
+        return mm_error_set(err, MM_ERANGE, "signal",
+                            "signal reaches %g: the transform adds %zu samples, which would overflow; "
+                            "scale the signal below %g", size, n, 1e300 / (double)n);
+
+    /* the spectrum, eq. (3), by FFTW */
+    mm_fourier_options opt;
+    mm_fourier_options_init(&opt);
+    opt.window = win;
+    double gain;
+    int rc = mm_fourier_spectrum(x, n, fs, &opt, freq, amp, NULL, err);
+    if (rc == MM_OK)
+        rc = mm_fourier_window(win, n, w, &gain, err);
+    if (rc != MM_OK)
+        return rc;
+    for (size_t j = 0; j < n; j++)
+        wx[j] = w[j] * x[j];
+    mm_res_scalar(res, O_DF, fs / (double)n);
+    mm_res_scalar(res, O_NYQ, fs / 2);
+    mm_res_scalar(res, O_DUR, (double)n / fs);
+    mm_res_scalar(res, O_GAIN, gain);
+
+    /* the finer sampling: aliasing, and the signal's size between the samples */
+    double fine_size;
+    if ((rc = aliasing(in, e, n, fs, &fine_size, res, err)) != MM_OK)
+        return rc;
+    /* samples that are all zero to rounding: nothing to analyse */
+    double scale = fmax(fine_size, size);
+    int noise = size <= NOISE * scale;
+
+    /* ---- peaks, leakage ---- */
+    double top = mm_maxabs(amp, (int)nb), sum_abs = 0;
+    for (size_t j = 0; j < n; j++)
+        sum_abs += fabs(wx[j]);
+    /* rounding of an amplitude by the FFT or the direct sum (1): 2 eps N sum|w x| over N g */
+    double tol = 2 * DBL_EPSILON * (double)(n + 16) * 2 * sum_abs / ((double)n * gain);
+    size_t pk[MAX_PEAKS];
+    int np = noise ? 0 : find_peaks(amp, nb, top, pk);
+    mm_table *tab = mm_res_table(res, O_PEAKS, np);
+    if (!tab)
+        return MM_ENOMEM;
+    for (int i = 0; i < np; i++) {
+        tab->cell[2 * i] = freq[pk[i]];
+        tab->cell[2 * i + 1] = amp[pk[i]];
+    }
+    double leak = noise || top == 0 ? 0 : leakage(amp, nb, n, top, lobe);
+    if (noise) {
+        mm_res_scalar_text(res, O_LEAK, 0, "none: the samples are rounding noise")->exact = 1;
+        mm_res_warn(res, "the samples are all zero to rounding (largest %.3g, the signal reaches %.3g between "
+                         "them): sampling at %g Hz meets the signal only at its zeros (a sine at exactly fs/2 "
+                         "= %g Hz, or a multiple of it); the spectrum of the samples is rounding noise, with no "
+                         "peak and no leakage to speak of. Sample at another rate or shift the signal's phase",
+                    size, scale, fs, fs / 2);
+    } else {
+        mm_res_scalar_err(res, O_LEAK, leak, 8 * DBL_EPSILON * (double)nb, MM_ERR_BOUND);
+    }
+    if (np > 0) {
+        mm_res_scalar(res, O_PEAK_F, freq[pk[0]]);
+        mm_res_scalar_err(res, O_PEAK_A, amp[pk[0]], tol, MM_ERR_BOUND);
+    }
+
+    /* ---- checks ---- */
+    /* Parseval, eq. (4), relative to the largest sample (no overflow):
+     * sum (w x)^2 = N g^2 [a_0^2 + sum a_k^2 / 2 + a_{N/2}^2] */
+    double s = fmax(size, 1e-300), e_time = 0, e_freq = 0;
+    for (size_t j = 0; j < n; j++)
+        e_time += (wx[j] / s) * (wx[j] / s);
+    for (size_t k = 0; k < nb; k++)
+        e_freq += (k == 0 || 2 * k == n ? 1 : 0.5) * (amp[k] / s) * (amp[k] / s);
+    e_freq *= (double)n * gain * gain;
+    mm_res_check_rel(res, "Parseval: sum of squared (windowed) samples vs spectrum energy, eq. (4)", e_freq,
+                     e_time, 8 * DBL_EPSILON * log2((double)n) + 1e-300);
+    /* the FFT against the direct sum (1) at the peaks and a few more bins */
+    size_t bins[MAX_PEAKS + 4];
+    int nbins = 0;
+    for (int i = 0; i < np && i < 5; i++)
+        bins[nbins++] = pk[i];
+    bins[nbins++] = 0;
+    bins[nbins++] = nb - 1;
+    bins[nbins++] = nb / 3;
+    bins[nbins++] = (2 * nb) / 3;
+    for (size_t m = 0; m < n; m++) {
+        cs[m] = cos(2 * M_PI * (double)m / (double)n);
+        sn[m] = sin(2 * M_PI * (double)m / (double)n);
+    }
+    double worst = 0;
+    for (int i = 0; i < nbins; i++)
+        worst = fmax(worst, fabs(amp[bins[i]] - direct_amp(wx, n, bins[i], cs, sn, gain)));
+    mm_res_check_abs(res, "FFT vs the direct sum (1) at the 5 largest peaks and 4 more bins: worst |amplitude error|",
+                     worst, 0, fmax(tol, 1e-300));
+
+    if (np > 0 && leak > 0.01)
+        mm_res_warn(res, "%.1f %% of the power lies more than 2 bins from every peak: leakage (a frequency "
+                         "between bins, or a record that is not a whole number of periods)%s",
+                    100 * leak, win == MM_WINDOW_RECT ? "; try window=hann" : "");
+    if ((rc = curves(e, n, nb, fs, t, x, freq, amp, res)) != MM_OK)
+        return rc;
+    mm_res_method(res, win == MM_WINDOW_HANN ? "FFT (FFTW, real input), Hann window" : "FFT (FFTW, real input)", 1 / fs);
     mm_res_method_stat(res, "bins", (double)nb);
-    mm_res_method_stat(res, "alias_oversampling", m >= 2 * n ? R : 0);
     return MM_OK;
 }
 
@@ -386,6 +432,8 @@ const mm_exercise mm_ex_vib_dft = {
                "the Hann window, and aliasing above fs/2.",
     .tags = "DFT, FFT, spectrum, sampling, aliasing, leakage, window",
     .theory = "exercises/vib/dft.md",
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .params = params,
     .n_params = MM_COUNT(params),
     .references = references,

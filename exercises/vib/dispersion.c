@@ -14,10 +14,12 @@
  * Fourier coefficients taken by the FFT, and every mode advanced exactly in
  * time by its own phase exp(-i omega(k) t) and summed again (eq. 6).  No
  * time stepping: the only errors are sampling and rounding.
+ * The answers are the closed forms (eqs. 1-4, 7, 8: speeds, travel,
+ * widths); what is measured on the superposed modes (the centroid's speed
+ * and travel, the r.m.s. widths) is shown beside them with its error.
  * Checks: the packet at time t against the closed forms (the translated
- * packet for the bar; the Gaussian chirp of eq. 7 for the beam); the speed
- * of the envelope's centroid, measured on the superposed modes, against the
- * group velocity; the measured r.m.s. width against eq. (8).
+ * packet for the bar; the Gaussian chirp of eq. 7 for the beam); the
+ * measured centroid speed and width against eqs. (4) and (8).
  * Reference: K. F. Graff, Wave Motion in Elastic Solids, Dover 1991,
  * sections 1.3 and 3.1; G. B. Whitham, Linear and Nonlinear Waves, Wiley
  * 1974, ch. 11.
@@ -41,17 +43,55 @@ static const char *const media[] = {"beam", "bar", NULL};
 static const mm_param params[] = {
     [P_MEDIUM] = {"medium", "medium", "", MM_CHOICE, M_BEAM, 0, 0, .choices = media,
                   .help = "beam: bending waves, omega = a k^2 (dispersive); bar: longitudinal waves, omega = c k"},
-    [P_E] = {"E", "Young's modulus", "Pa", MM_REAL, 2.1e11, 1e6, 1e12, .help = "steel 2.1e11, aluminium 7e10"},
-    [P_RHO] = {"rho", "density", "kg/m^3", MM_REAL, 7850, 10, 3e4, .help = "steel 7850, aluminium 2700"},
+    [P_E] = {"E", "Young's modulus", "Pa", MM_REAL, 2.1e11, 1e6, 1e12,
+             .help = "steel 2.1e11, aluminium 7e10; 1 MPa (foam) to 1 TPa (diamond)"},
+    [P_RHO] = {"rho", "density", "kg/m^3", MM_REAL, 7850, 10, 3e4,
+               .help = "steel 7850, aluminium 2700; 10 (foam) to 3e4 (beyond osmium)"},
     [P_H] = {"h", "beam thickness", "m", MM_REAL, 0.01, 1e-4, 1,
-             .help = "depth of the rectangular section, I/A = h^2/12 (beam only)"},
+             .help = "depth of the rectangular section, I/A = h^2/12 (beam only); 0.1 mm to 1 m"},
     [P_LAMBDA] = {"wavelength", "carrier wavelength", "m", MM_REAL, 0.2, 1e-3, 100,
-                  .help = "wavelength 2 pi/k0 of the waves inside the packet"},
+                  .help = "wavelength 2 pi/k0 of the waves inside the packet, 1 mm to 100 m"},
     [P_CYCLES] = {"cycles", "packet width in wavelengths", "", MM_REAL, 1.5, 1.3, 6,
-                  .help = "sigma, the Gaussian envelope's half-width, in carrier wavelengths"},
-    [P_AMP] = {"A", "amplitude", "m", MM_REAL, 1e-3, 1e-9, 1, .help = "largest displacement at t = 0"},
+                  .help = "sigma, the Gaussian envelope's half-width, in carrier wavelengths: from 1.3 (below, "
+                          "the packet's spectrum reaches k = 0 and it is no longer one carrier) to 6"},
+    [P_AMP] = {"A", "amplitude", "m", MM_REAL, 1e-3, 1e-9, 1,
+               .help = "largest displacement at t = 0 (the theory is linear: it only scales)"},
     [P_T] = {"t", "time", "s", MM_REAL, 3e-3, 1e-7, 10,
-             .help = "when the packet is shown the second time; the domain must stay under 250 wavelengths"},
+             .help = "when the packet is shown the second time; the domain must stay under 250 wavelengths "
+                     "(what a plot can show)"},
+};
+
+enum { O_K0, O_OMEGA0, O_F0, O_CP, O_CG, O_RATIO, O_SPEED, O_TRAVEL, O_SLIP, O_WIDTH0, O_WIDTH, O_SPREAD,
+       O_SPEED_M, O_TRAVEL_M, O_WIDTH0_M, O_WIDTH_M, O_SPREAD_M, O_U0, O_U, O_ENV0, O_ENV, O_VP, O_VG };
+
+static const mm_output outputs[] = {
+    [O_K0] = MM_SCALAR("k0", "carrier wavenumber 2 pi / wavelength", "rad/m", .flags = MM_EXACT),
+    [O_OMEGA0] = MM_SCALAR("omega0", "carrier angular frequency omega(k0)", "rad/s", .flags = MM_EXACT),
+    [O_F0] = MM_SCALAR("f0", "carrier frequency", "Hz", .flags = MM_ANSWER | MM_EXACT),
+    [O_CP] = MM_SCALAR("phase_velocity", "phase velocity omega/k at k0, eq. (3)", "m/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_CG] = MM_SCALAR("group_velocity", "group velocity d omega/dk at k0, eq. (4)", "m/s",
+                       .flags = MM_ANSWER | MM_EXACT),
+    [O_RATIO] = MM_SCALAR("ratio", "group / phase velocity", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_SPEED] = MM_SCALAR("centre_speed", "speed of the envelope's centroid: the group velocity, eq. (7)", "m/s",
+                          .flags = MM_EXACT),
+    [O_TRAVEL] = MM_SCALAR("travel", "distance the packet travelled, c_g t", "m", .flags = MM_EXACT),
+    [O_SLIP] = MM_SCALAR("crest_slip", "wavelengths the crests slip through the envelope, (c_g - c_p) t / wavelength",
+                         "", .flags = MM_EXACT),
+    [O_WIDTH0] = MM_SCALAR("width0", "r.m.s. width of the envelope at t = 0, sigma/sqrt 2", "m", .flags = MM_EXACT),
+    [O_WIDTH] = MM_SCALAR("width", "r.m.s. width of the envelope at t, sigma_t/sqrt 2, eq. (8)", "m",
+                          .flags = MM_ANSWER | MM_EXACT),
+    [O_SPREAD] = MM_SCALAR("spread", "width at t / width at 0, sigma_t/sigma", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_SPEED_M] = MM_SCALAR("centre_speed_measured", "speed of the centroid of |psi|^2, measured on the modes", "m/s"),
+    [O_TRAVEL_M] = MM_SCALAR("travel_measured", "distance the centroid travelled, measured", "m"),
+    [O_WIDTH0_M] = MM_SCALAR("width0_measured", "r.m.s. width at t = 0, measured", "m"),
+    [O_WIDTH_M] = MM_SCALAR("width_measured", "r.m.s. width at t, measured", "m"),
+    [O_SPREAD_M] = MM_SCALAR("spread_measured", "width at t / width at 0, measured", ""),
+    [O_U0] = MM_SERIES("u0", "packet at t = 0", "m", "x", "m", .figure = "packet"),
+    [O_U] = MM_SERIES("u", "packet at time t", "m", "x", "m", .figure = "packet"),
+    [O_ENV0] = MM_SERIES("envelope0", "envelope at t = 0", "m", "x", "m", .figure = "packet", .role = "reference"),
+    [O_ENV] = MM_SERIES("envelope", "envelope at time t", "m", "x", "m", .figure = "packet", .role = "reference"),
+    [O_VP] = MM_SERIES("phase_velocity", "phase velocity omega/k", "m/s", "k", "rad/m", .figure = "dispersion"),
+    [O_VG] = MM_SERIES("group_velocity", "group velocity d omega/dk", "m/s", "k", "rad/m", .figure = "dispersion"),
 };
 
 typedef struct wave {
@@ -158,7 +198,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     wave w = model(in);
     const double t = w.t, lambda = in[P_LAMBDA].x, h = in[P_H].x;
-    const double w0 = omega_of(&w, w.k0), cp = w0 / w.k0, cg = group_of(&w, w.k0);
+    /* c_p = omega/k0 is c (bar) or a k0 (beam) itself; omega(k0)/k0 would round */
+    const double w0 = omega_of(&w, w.k0), cp = w.medium == M_BAR ? w.c : w.a * w.k0, cg = group_of(&w, w.k0);
     double xl, xr;
     domain(&w, &xl, &xr);
     const double L = xr - xl;
@@ -173,7 +214,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     size_t nb = mm_fourier_bins((size_t)N);
     double *cr = mm_res_alloc(res, sizeof *cr * nb), *ci = mm_res_alloc(res, sizeof *ci * nb);
     if (!u0 || !cr || !ci)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     for (long n = 0; n < N; n++)
         u0[n] = creal(exact_psi(&w, xl + (double)n * dx, 0));           /* eq. (5) */
     int rc = mm_fourier_dft(u0, (size_t)N, cr, ci, err);
@@ -193,7 +234,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     int nm = jhi - jlo + 1;
     double complex *C0 = mm_res_alloc(res, sizeof *C0 * (size_t)nm), *Ct = mm_res_alloc(res, sizeof *Ct * (size_t)nm);
     if (!C0 || !Ct)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     for (int j = jlo; j <= jhi; j++) {
         double k = j * dk;
         double ph = fmod(omega_of(&w, k) * t, 2 * M_PI);
@@ -204,13 +245,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- the packet at 0 and at t on the plot grid ---- */
     int np = (int)ceil(8 * L / lambda) + 1;
     np = np < 501 ? 501 : np > 2001 ? 2001 : np;
-    mm_series *s0 = mm_res_series_v1(res, "u0", "packet at t = 0", "m", "x", "m", np);
-    mm_series *st = mm_res_series_v1(res, "u", "packet at time t", "m", "x", "m", np);
-    mm_series *e0 = mm_res_series_v1(res, "envelope0", "envelope at t = 0", "m", "x", "m", np);
-    mm_series *et = mm_res_series_v1(res, "envelope", "envelope at time t", "m", "x", "m", np);
+    mm_series *s0 = mm_res_series(res, O_U0, np), *st = mm_res_series(res, O_U, np);
+    mm_series *e0 = mm_res_series(res, O_ENV0, np), *et = mm_res_series(res, O_ENV, np);
     double complex *p0 = mm_res_alloc(res, sizeof *p0 * (size_t)np), *pt = mm_res_alloc(res, sizeof *pt * (size_t)np);
     if (!s0 || !st || !e0 || !et || !p0 || !pt)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     mm_linspace(xl, xr, np, s0->x);
     double complex c0 = cr[0];
     mode_sum(C0, jlo, jhi, dk, c0, s0->x, np, xl, p0);
@@ -226,16 +265,22 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         worst = fmax(worst, fabs(st->y[i] - creal(exact_psi(&w, x, t))));
         worst0 = fmax(worst0, fabs(s0->y[i] - creal(exact_psi(&w, x, 0))));
     }
+    /* the curves are for the eye: six digits, once the checks and the
+     * moments have used them all */
     double xc0, xct, wd0, wdt;
     moments(s0->x, p0, np, &xc0, &wd0);
     moments(s0->x, pt, np, &xct, &wdt);
+    mm_series *sr[4] = {s0, st, e0, et};
+    for (int k = 0; k < 4; k++) {
+        mm_ex_round_sig(sr[k]->x, np, 8);
+        mm_ex_round_sig(sr[k]->y, np, 6);
+    }
     double speed = (xct - xc0) / t;
 
     /* ---- dispersion curves: phase and group velocity against k ---- */
-    mm_series *vp = mm_res_series_v1(res, "phase_velocity", "phase velocity omega/k", "m/s", "k", "rad/m", 201);
-    mm_series *vg = mm_res_series_v1(res, "group_velocity", "group velocity d omega/dk", "m/s", "k", "rad/m", 201);
+    mm_series *vp = mm_res_series(res, O_VP, 201), *vg = mm_res_series(res, O_VG, 201);
     if (!vp || !vg)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     mm_linspace(0, 2.5 * w.k0, 201, vp->x);
     for (int i = 0; i < 201; i++) {
         double k = vp->x[i];
@@ -243,34 +288,58 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         vp->y[i] = w.medium == M_BAR ? w.c : w.a * k;
         vg->y[i] = group_of(&w, k);
     }
+    mm_ex_round_sig(vp->x, 201, 8);
+    mm_ex_round_sig(vg->x, 201, 8);
+    mm_ex_round_sig(vp->y, 201, 6);
+    mm_ex_round_sig(vg->y, 201, 6);
 
-    /* ---- scalars ---- */
-    mm_res_scalar_v1(res, "k0", "carrier wavenumber 2 pi / wavelength", "rad/m", w.k0);
-    mm_res_scalar_v1(res, "omega0", "carrier angular frequency omega(k0)", "rad/s", w0);
-    mm_res_scalar_v1(res, "f0", "carrier frequency", "Hz", w0 / (2 * M_PI));
-    mm_res_scalar_v1(res, "phase_velocity", "phase velocity omega/k at k0", "m/s", cp);
-    mm_res_scalar_v1(res, "group_velocity", "group velocity d omega/dk at k0", "m/s", cg);
-    mm_res_scalar_v1(res, "ratio", "group / phase velocity", "", cg / cp);
-    mm_res_scalar_v1(res, "centre_speed", "speed of the envelope's centroid (measured)", "m/s", speed);
-    mm_res_scalar_v1(res, "travel", "distance the packet travelled", "m", xct - xc0);
-    mm_res_scalar_v1(res, "crest_slip", "wavelengths the crests slip through the envelope, (c_g - c_p) t / wavelength", "",
-                  (cg - cp) * t / lambda);
-    mm_res_scalar_v1(res, "width0", "r.m.s. width of the envelope at t = 0 (measured)", "m", wd0);
-    mm_res_scalar_v1(res, "width", "r.m.s. width of the envelope at t (measured)", "m", wdt);
-    mm_res_scalar_v1(res, "spread", "width at t / width at 0", "", wdt / wd0);
+    /* ---- scalars: the closed forms, the measurements beside them ---- */
+    double w_0 = w.sigma / M_SQRT2, w_t = sigma_t(&w) / M_SQRT2, rnd = 4 * DBL_EPSILON;
+    mm_res_scalar(res, O_K0, w.k0);
+    mm_res_scalar(res, O_OMEGA0, w0);
+    mm_res_scalar(res, O_F0, w0 / (2 * M_PI));
+    mm_res_scalar(res, O_CP, cp);
+    mm_res_scalar(res, O_CG, cg);
+    mm_res_scalar(res, O_RATIO, cg / cp);
+    mm_res_scalar(res, O_SPEED, cg);
+    mm_res_scalar(res, O_TRAVEL, cg * t);
+    mm_res_scalar(res, O_SLIP, (cg - cp) * t / lambda);
+    mm_res_scalar(res, O_WIDTH0, w_0);
+    mm_res_scalar(res, O_WIDTH, w_t);
+    mm_res_scalar(res, O_SPREAD, sigma_t(&w) / w.sigma);
+    /* each measured value carries its distance from the closed form plus the
+     * rounding bound of the checks below (another summation order, a
+     * learner's script, lands anywhere within it: a short t leaves the
+     * centroids' difference mostly rounding) */
+    double r_xc = 12 * DBL_EPSILON * (fabs(xl) + fabs(xr)), r_w = 8 * DBL_EPSILON * sqrt((double)np);
+    mm_ex_scalar_beside(res, O_SPEED_M, speed, cg, rnd * cg + r_xc / t);
+    mm_ex_scalar_beside(res, O_TRAVEL_M, xct - xc0, cg * t, rnd * cg * t + r_xc);
+    mm_ex_scalar_beside(res, O_WIDTH0_M, wd0, w_0, (rnd + r_w) * w_0);
+    mm_ex_scalar_beside(res, O_WIDTH_M, wdt, w_t, (rnd + r_w) * w_t);
+    mm_ex_scalar_beside(res, O_SPREAD_M, wdt / wd0, sigma_t(&w) / w.sigma, (rnd + 2 * r_w) * sigma_t(&w) / w.sigma);
 
     /* ---- checks ---- */
-    double tol_u = 1e-9 * w.A;
+    /* the mode sums round by a few eps of the sum of the sizes of their
+     * terms, for each of the log2 N levels of the FFT and the rotations;
+     * both sides carry phases k x - omega t rounded to eps of their size;
+     * the spectrum was cut at exp(-50) and the domain at exp(-81/2) */
+    double S = fabs(cr[0]);
+    for (int j = jlo; j <= jhi; j++)
+        S += 2 * cabs(C0[j - jlo]);
+    double phase = w.k0 * fmax(fabs(xl), fabs(xr)) + w0 * t;
+    double tol_u = 16 * DBL_EPSILON * S * log2((double)N) + 2 * DBL_EPSILON * phase * w.A + 4e-18 * w.A;
     mm_res_check_abs(res, "packet at t = 0: mode sum vs eq. (5) (sampling and FFT) [m]", worst0, 0, tol_u);
     mm_res_check_abs(res, w.medium == M_BAR
                               ? "packet at t: mode sum vs the initial packet moved by c t, eq. (7) with beta = 0 [m]"
                               : "packet at t: mode sum vs the Gaussian chirp, eq. (7) [m]",
                      worst, 0, tol_u);
-    /* the centroid is found to ~1e-12 sigma; the speed then to that over t */
-    mm_res_check_abs(res, "centroid speed of |psi|^2 (measured) vs group velocity d omega/dk [m/s]", speed, cg,
-                     1e-8 * cg + 1e-9 * w.sigma / t);
-    mm_res_check_rel(res, "r.m.s. width at t (measured) vs sigma_t / sqrt 2, eq. (8) [m]", wdt, sigma_t(&w) / M_SQRT2,
-                     1e-8);
+    /* the centroids are sums of positive terms times x: they round by a
+     * few eps of the domain's extent; the speed then to that over t; the
+     * r.m.s. width by a few eps times sqrt(points) relative */
+    mm_res_check_abs(res, "centroid speed of |psi|^2 (measured) vs group velocity d omega/dk, to rounding [m/s]",
+                     speed, cg, r_xc / t);
+    mm_res_check_rel(res, "r.m.s. width at t (measured) vs sigma_t / sqrt 2, eq. (8), to rounding [m]", wdt, w_t,
+                     r_w);
 
     mm_res_method(res, "FFT of the sampled packet, each mode advanced by exp(-i omega(k) t), modes summed", 0);
     mm_res_method_stat(res, "samples", (double)N);
@@ -299,6 +368,8 @@ const mm_exercise mm_ex_vib_dispersion = {
                "beam the packet spreads, in a bar it keeps its shape.",
     .tags = "waves, dispersion, phase velocity, group velocity, wave packet, beam, bar",
     .theory = "exercises/vib/dispersion.md",
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .params = params,
     .n_params = MM_COUNT(params),
     .references = references,

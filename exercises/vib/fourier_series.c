@@ -3,14 +3,15 @@
  *
  *     f(t) ~ S_K(t) = a_0/2 + sum_{k=1..K} (a_k cos k w t + b_k sin k w t)   (1)
  *
- * Goal: compute the coefficients numerically (one period sampled and
- * transformed by the FFT, eq. 5 of the theory), see that they match the
- * closed forms (eqs. 6-8), and watch the partial sum ring at a jump: its
- * maximum overshoots by about 8.95 % of the jump however many terms are
- * taken (Gibbs).  The overshoot is found by refining the maximum of S_K
- * (scan + golden section), and checked against the value of S_K at its
- * known maximum (eqs. 10, 12) and against the Gibbs constant with a bound
- * that depends honestly on K (eqs. 11, 13).
+ * Goal: the coefficients in closed form (eqs. 6-8), and the same computed
+ * numerically (one period sampled and transformed by the FFT, eq. 5) beside
+ * them with their errors; the partial sum S_K from the exact coefficients
+ * rings at a jump: its maximum overshoots by about 8.95 % of the jump
+ * however many terms are taken (Gibbs).  The overshoot is S_K at its known
+ * maximum (eqs. 10, 12, 14); the maximum refined numerically (scan + golden
+ * section, mm_fourier_series_max) and the one of the FFT's series are shown
+ * beside it, and the overshoot is checked against the Gibbs constant with a
+ * bound that depends honestly on K (eqs. 11, 13).
  * Reference: S. S. Rao, Mechanical Vibrations, 6th ed., section 1.11;
  * H. S. Carslaw, Introduction to the Theory of Fourier's Series and
  * Integrals, 3rd ed., Dover 1930, ch. IX (Gibbs's phenomenon).
@@ -33,10 +34,37 @@ static const mm_param params[] = {
                 .help = "square: +A then -A; sawtooth: a ramp from -A to A, then a jump back; "
                         "triangle: straight lines between A and -A (no jump)"},
     [P_TERMS] = {"terms", "highest harmonic K", "", MM_INT, 25, 1, MAX_TERMS,
-                 .help = "harmonics 1..K are summed; the ripple narrows as K grows, the overshoot does not"},
-    [P_T] = {"T", "period", "s", MM_REAL, 1, 1e-3, 1e3, .help = "the wave repeats every T seconds"},
+                 .help = "harmonics 1..K are summed; the ripple narrows as K grows, the overshoot does not; "
+                         "at most 1000 (refining max S_K costs 8 K^2 terms)"},
+    [P_T] = {"T", "period", "s", MM_REAL, 1, 1e-3, 1e3,
+             .help = "the wave repeats every T seconds (1 ms to 1000 s: only the time axis scales)"},
     [P_A] = {"A", "amplitude", "", MM_REAL, 1, 1e-6, 1e6,
-             .help = "peak value of the wave (any unit: m, N, V); the wave swings between -A and A"},
+             .help = "peak value of the wave (any unit: m, N, V); the wave swings between -A and A; "
+                     "1e-6 to 1e6 (it only scales)"},
+};
+
+enum { O_OVERSHOOT, O_FRACTION, O_TMAX, O_GIBBS, O_SAMPLES, O_OMEGA, O_COEFFS, O_WAVE, O_SUM, O_WAVE_ZOOM,
+       O_SUM_ZOOM };
+
+static const char *const coef_cols[] = {"k", "a_k", "b_k", "a_k_fft", "b_k_fft", "fft_error", "fft_error_bound",
+                                        NULL};
+static const char *const coef_units[] = {"", "", "", "", "", "", "", NULL};
+
+static const mm_output outputs[] = {
+    [O_OVERSHOOT] = MM_SCALAR("overshoot", "overshoot max S_K - A (negative: no overshoot), eqs. (10), (12), (14)",
+                              "", .flags = MM_ANSWER | MM_EXACT),
+    [O_FRACTION] = MM_SCALAR("overshoot_fraction", "overshoot / jump", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_TMAX] = MM_SCALAR("t_max", "time of the maximum of S_K, eqs. (10), (12), (14)", "s", .flags = MM_EXACT),
+    [O_GIBBS] = MM_SCALAR("gibbs_constant", "Gibbs constant Si(pi)/pi - 1/2 (limit of overshoot/jump)", "",
+                          .flags = MM_EXACT),
+    [O_SAMPLES] = MM_SCALAR("samples", "samples per period N of the FFT", "", .flags = MM_EXACT),
+    [O_OMEGA] = MM_SCALAR("omega", "fundamental angular frequency 2 pi / T", "rad/s", .flags = MM_EXACT),
+    [O_COEFFS] = MM_TABLE("coefficients", "coefficients: exact (6)-(8), and by FFT (5) with their error",
+                          coef_cols, coef_units),
+    [O_WAVE] = MM_SERIES("wave", "the wave f(t)", "", "t", "s", .figure = "period", .role = "reference"),
+    [O_SUM] = MM_SERIES("partial_sum", "partial sum S_K(t)", "", "t", "s", .figure = "period"),
+    [O_WAVE_ZOOM] = MM_SERIES("wave_zoom", "the wave near t = 0", "", "t", "s", .figure = "zoom", .role = "reference"),
+    [O_SUM_ZOOM] = MM_SERIES("partial_sum_zoom", "S_K(t) near t = 0", "", "t", "s", .figure = "zoom"),
 };
 
 /* The wave at t = u T, u in [0, 1), sampled on j/N: exact jumps (u = 0, and
@@ -122,6 +150,92 @@ static double si_pi(void)
     return sum;
 }
 
+/* The maximum of S_K at its known place, eqs. (10), (12), (14): the value
+ * (a K-term sum) and the time. */
+static double known_max(int wave, double A, double T, int K, double *t)
+{
+    double s = 0;
+    int n_odd = (K + 1) / 2;                       /* odd harmonics 1, 3, .., <= K */
+    if (wave == W_SQUARE) {
+        for (int j = 1; j <= n_odd; j++)
+            s += sin((2 * j - 1) * M_PI / (2 * n_odd)) / (2 * j - 1);
+        *t = T / (4 * n_odd);
+        return s * 4 * A / M_PI;
+    }
+    if (wave == W_SAWTOOTH) {
+        for (int k = 1; k <= K; k++)
+            s += sin(k * M_PI / (K + 1)) / k;
+        *t = -T / (2.0 * (K + 1));
+        return s * 2 * A / M_PI;
+    }
+    for (int k = 1; k <= K; k += 2)
+        s += 1.0 / ((double)k * k);
+    *t = 0;
+    return s * 8 * A / (M_PI * M_PI);
+}
+
+/* |S_K''(t)| = |sum k^2 w^2 (a_k cos k w t + b_k sin k w t)|: the curvature
+ * at the maximum, which sets how far rounding can move it. */
+static double curvature(const double *a, const double *b, int K, double T, double t)
+{
+    double w = 2 * M_PI / T, s = 0;
+    for (int k = 1; k <= K; k++)
+        s += (double)k * k * (a[k] * cos(k * w * t) + b[k] * sin(k * w * t));
+    return fabs(s) * w * w;
+}
+
+/* The table: exact coefficients, the FFT's, their error and its bound (9). */
+static int table(int wave, double A, int K, long N, const double *ax, const double *bx, const double *a,
+                 const double *b, double *worst, double *tol_coef, mm_result *res)
+{
+    mm_table *tab = mm_res_table(res, O_COEFFS, K + 1);
+    if (!tab)
+        return MM_ENOMEM;
+    *worst = *tol_coef = 0;
+    for (int k = 0; k <= K; k++) {
+        double *row = tab->cell + 7 * k, e = fmax(fabs(a[k] - ax[k]), k ? fabs(b[k] - bx[k]) : 0);
+        row[0] = k;
+        row[1] = ax[k];
+        row[2] = bx[k];
+        row[3] = a[k];
+        row[4] = k ? b[k] : 0;
+        row[5] = e;
+        row[6] = alias_bound(wave, A, k, N) + 64 * DBL_EPSILON * A;
+        *worst = fmax(*worst, e);
+        *tol_coef = fmax(*tol_coef, alias_bound(wave, A, k, N));
+    }
+    return MM_OK;
+}
+
+static int curves(int wave, double A, double T, int K, const double *ax, const double *bx, mm_result *res,
+                  mm_error *err)
+{
+    int np = 16 * (K + 1) + 1;
+    np = np < 601 ? 601 : np > 2001 ? 2001 : np;
+    double half = fmin(T / 2, 6.0 * T / (K + 1));  /* six ripples either side */
+    int nz = 401;
+    mm_series *sf = mm_res_series(res, O_WAVE, np), *ss = mm_res_series(res, O_SUM, np);
+    mm_series *zf = mm_res_series(res, O_WAVE_ZOOM, nz), *zs = mm_res_series(res, O_SUM_ZOOM, nz);
+    if (!sf || !ss || !zf || !zs)
+        return MM_ENOMEM;
+    mm_linspace(-T / 2, T / 2, np, sf->x);
+    mm_linspace(-half, half, nz, zf->x);
+    mm_ex_round_sig(sf->x, np, 12);
+    mm_ex_round_sig(zf->x, nz, 12);
+    for (int i = 0; i < np; i++) {
+        ss->x[i] = sf->x[i];
+        sf->y[i] = wave_t(wave, A, T, sf->x[i]);
+    }
+    for (int i = 0; i < nz; i++) {
+        zs->x[i] = zf->x[i];
+        zf->y[i] = wave_t(wave, A, T, zf->x[i]);
+    }
+    int rc = mm_fourier_series_eval(ax, bx, (size_t)K, T, ss->x, (size_t)np, ss->y, err);
+    if (rc == MM_OK)
+        rc = mm_fourier_series_eval(ax, bx, (size_t)K, T, zs->x, (size_t)nz, zs->y, err);
+    return rc;
+}
+
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     int wave = (int)in[P_WAVE].x, K = (int)in[P_TERMS].x;
@@ -133,157 +247,79 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     long N = 4096;
     while (N < 256L * K)
         N *= 2;
-    double *x = mm_res_alloc(res, sizeof *x * (size_t)N);
-    double *a = mm_res_alloc(res, sizeof *a * (size_t)(K + 1));
-    double *b = mm_res_alloc(res, sizeof *b * (size_t)(K + 1));
-    if (!x || !a || !b)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    double *x = mm_res_alloc(res, sizeof *x * (size_t)N), *a = mm_res_alloc(res, 4 * sizeof *a * (size_t)(K + 1));
+    if (!x || !a)
+        return MM_ENOMEM;
+    double *b = a + K + 1, *ax = b + K + 1, *bx = ax + K + 1;
     for (long j = 0; j < N; j++)
         x[j] = wave_at(wave, A, j, N);
     int rc = mm_fourier_series_coeffs(x, (size_t)N, (size_t)K, a, b, err);
     if (rc != MM_OK)
         return rc;
-
-    /* table of coefficients, eq. (5) */
-    static const char *const cols[] = {"k", "a_k", "b_k"};
-    static const char *const units[] = {"", "", ""};
-    mm_table *tab = mm_res_table_v1(res, "coefficients", K + 1, 3, cols, units);
-    if (!tab)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    double worst = 0, tol_coef = 0;
-    for (int k = 0; k <= K; k++) {
-        double ae, be;
-        exact_coeff(wave, A, k, &ae, &be);
-        tab->cell[3 * k] = k;
-        tab->cell[3 * k + 1] = a[k];
-        tab->cell[3 * k + 2] = k ? b[k] : 0;
-        worst = fmax(worst, fmax(fabs(a[k] - ae), k ? fabs(b[k] - be) : 0));
-        tol_coef = fmax(tol_coef, alias_bound(wave, A, k, N));
-    }
-
-    /* The maximum of S_K over one period [-T/2, T/2], refined (the solver
-     * scans 8 points per period of harmonic K + 1, then golden section).
-     * S_K is defined by the true coefficients, so the reported overshoot
-     * uses the closed forms (6)-(8): from the sampled ones it would carry
-     * their aliasing error (about 7e-6 A at K = 25).  The maximum of the
-     * sampled series is found too, and compared below. */
-    double *ax = mm_res_alloc(res, sizeof *ax * (size_t)(K + 1));
-    double *bx = mm_res_alloc(res, sizeof *bx * (size_t)(K + 1));
-    if (!ax || !bx)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int k = 0; k <= K; k++)
         exact_coeff(wave, A, k, &ax[k], &bx[k]);
-    double t_max, s_max, t_fft, s_fft;
+    double worst, tol_coef;
+    if ((rc = table(wave, A, K, N, ax, bx, a, b, &worst, &tol_coef, res)) != MM_OK)
+        return rc;
+
+    /* the maximum of S_K: at its known place (the answer), refined
+     * numerically from the exact coefficients, and from the FFT's */
+    double t_ref, s_ref = known_max(wave, A, T, K, &t_ref), t_max, s_max, t_fft, s_fft;
     rc = mm_fourier_series_max(ax, bx, (size_t)K, T, -T / 2, T / 2, &t_max, &s_max, err);
     if (rc == MM_OK)
         rc = mm_fourier_series_max(a, b, (size_t)K, T, -T / 2, T / 2, &t_fft, &s_fft, err);
     if (rc != MM_OK)
         return rc;
-    double overshoot = s_max - A;
-
-    /* The same maximum from the closed-form coefficients at its known place:
-     * square eq. (10), sawtooth eq. (12), triangle the corner t = 0. */
-    double s_ref = 0, t_ref = 0;
-    int n_odd = (K + 1) / 2;                       /* odd harmonics 1, 3, .., <= K */
-    if (wave == W_SQUARE) {
-        for (int j = 1; j <= n_odd; j++)
-            s_ref += sin((2 * j - 1) * M_PI / (2 * n_odd)) / (2 * j - 1);
-        s_ref *= 4 * A / M_PI;
-        t_ref = T / (4 * n_odd);
-    } else if (wave == W_SAWTOOTH) {
-        for (int k = 1; k <= K; k++)
-            s_ref += sin(k * M_PI / (K + 1)) / k;
-        s_ref *= 2 * A / M_PI;
-        t_ref = -T / (2.0 * (K + 1));
-    } else {
-        for (int k = 1; k <= K; k += 2)
-            s_ref += 1.0 / ((double)k * k);
-        s_ref *= 8 * A / (M_PI * M_PI);
-    }
-    /* |S_K(numerical coefficients) - S_K(exact)| <= sum of the coefficient
-     * errors; plus rounding of a K-term sum */
-    double tol_round = 16 * DBL_EPSILON * A * (K + 10);
-    double tol_max = 0;
+    /* rounding of a K-term sum; the FFT's series is off by at most the sum
+     * of its coefficients' errors (9) */
+    double tol_round = 4 * DBL_EPSILON * A * (K + 10), tol_max = 0;
     for (int k = 1; k <= K; k++)
         tol_max += alias_bound(wave, A, k, N);
     tol_max = 1.5 * tol_max + tol_round;
-
-    /* ---- scalars ---- */
-    const char *ov_label = wave == W_TRIANGLE
-                               ? "overshoot max S_K - A (negative: the corner is rounded off, no overshoot)"
-                               : "Gibbs overshoot max S_K - A";
-    mm_res_scalar_v1(res, "overshoot", ov_label, "", overshoot);
-    if (jump > 0)
-        mm_res_scalar_v1(res, "overshoot_fraction", "overshoot / jump", "", overshoot / jump);
-    mm_res_scalar_v1(res, "t_max", "time of the maximum of S_K", "s", t_max);
     double G = si_pi() / M_PI - 0.5;
-    mm_res_scalar_v1(res, "gibbs_constant", "Gibbs constant Si(pi)/pi - 1/2 (limit of overshoot/jump)", "", G);
-    mm_res_scalar_v1(res, "samples", "samples per period N", "", (double)N);
-    mm_res_scalar_v1(res, "omega", "fundamental angular frequency 2 pi / T", "rad/s", 2 * M_PI / T);
+    /* S_K at its known place is a K-term sum: exact but for its rounding,
+     * which matters when the overshoot is a small part of A (the triangle) */
+    mm_res_scalar_err(res, O_OVERSHOOT, s_ref - A, tol_round, MM_ERR_BOUND);
+    if (jump > 0)
+        mm_res_scalar_err(res, O_FRACTION, (s_ref - A) / jump, tol_round / jump, MM_ERR_BOUND);
+    mm_res_scalar(res, O_TMAX, t_ref);
+    mm_res_scalar(res, O_GIBBS, G);
+    mm_res_scalar(res, O_SAMPLES, (double)N);
+    mm_res_scalar(res, O_OMEGA, 2 * M_PI / T);
+    /* the square's S_K is symmetric about T/4: its maximum sits at T/(4n)
+     * and at T/2 - T/(4n); the refined one is compared with the nearer */
+    double t_near = wave == W_SQUARE && fabs(t_max - (T / 2 - t_ref)) < fabs(t_max - t_ref) ? T / 2 - t_ref : t_ref;
 
     /* ---- checks ---- */
-    mm_res_check_abs(res, "coefficients: FFT of a sampled period vs the closed forms (6)-(8), worst |error|",
-                     worst, 0, 1.5 * tol_coef + 64 * DBL_EPSILON * A);
-    /* the refined maximum against the analytic one: only rounding of the
-     * K-term sums separates them (the value at a maximum is flat in t) */
-    if (wave == W_SQUARE)
-        mm_res_check_abs(res, "max S_K: refined vs S_K at t = T/(4n) from eq. (10)", s_max, s_ref, tol_round);
-    else if (wave == W_SAWTOOTH)
-        mm_res_check_abs(res, "max S_K: refined vs S_K at t = -T/(2(K+1)) from eq. (12)", s_max, s_ref, tol_round);
-    else
-        mm_res_check_abs(res, "max S_K: refined vs the value at the corner t = 0, eq. (14)", s_max, s_ref, tol_round);
-    mm_res_check_abs(res, "max S_K from the FFT coefficients vs from the closed forms (aliasing bound)",
-                     s_fft, s_max, tol_max);
+    mm_res_check_abs(res, "coefficients: FFT of a sampled period vs the closed forms (6)-(8), worst |error|, "
+                          "within the aliasing bound (9)", worst, 0, 1.5 * tol_coef + 64 * DBL_EPSILON * A);
+    mm_res_check_abs(res, "max S_K: refined numerically vs S_K at its known place, eqs. (10), (12), (14) "
+                          "(rounding of the K-term sums)", s_max, s_ref, tol_round);
+    mm_res_check_abs(res, "max S_K from the FFT coefficients vs from the closed forms, within the sum of the "
+                          "aliasing bounds (9)", s_fft, s_ref, tol_max);
+    /* the place: golden section's bracket (1e-13 T), and the width where S_K
+     * is flat to its rounding, sqrt(4 tol_round / |S_K''|) */
+    if (wave != W_TRIANGLE)
+        mm_res_check_abs(res, "time of the maximum: refined vs eqs. (10), (12) [s], within the bracket and the "
+                              "width where S_K is flat to rounding", t_max, t_near,
+                         1e-13 * T + sqrt(4 * tol_round / curvature(ax, bx, K, T, t_ref)));
     if (wave == W_SQUARE) {
         /* midpoint rule for Si(pi): |error| <= pi^2 / (72 n^2), eq. (11) */
-        double bound = M_PI * M_PI / (72.0 * n_odd * n_odd);
+        int n = (K + 1) / 2;
         mm_res_check_abs(res, "overshoot / jump vs the Gibbs constant, bound pi^2/(72 n^2) of eq. (11)",
-                         overshoot / jump, G, bound + tol_max / jump);
+                         (s_ref - A) / jump, G, M_PI * M_PI / (72.0 * n * n) + tol_round / jump);
     } else if (wave == W_SAWTOOTH) {
         /* trapezoidal rule: G - 1/(2(K+1)) within pi^2 / (36 (K+1)^2), eq. (13) */
         double h = 1.0 / (K + 1);
         mm_res_check_abs(res, "overshoot / jump vs G - 1/(2(K+1)), bound pi^2/(36 (K+1)^2) of eq. (13)",
-                         overshoot / jump, G - 0.5 * h, M_PI * M_PI / 36 * h * h + tol_max / jump);
-    }
-    /* the place of the maximum: the aliasing errors of the coefficients move
-     * it by about 5e-6 T / K (their slope error over the curvature of S_K) */
-    if (wave == W_SQUARE) {
-        /* S_K of the square is symmetric about T/4: the same maximum sits at
-         * T/(4n) and at T/2 - T/(4n); either is right */
-        double dt = fmin(fabs(t_max - t_ref), fabs(t_max - (T / 2 - t_ref)));
-        mm_res_check_abs(res, "time of the maximum: refined vs T/(4n) or T/2 - T/(4n), eq. (10) [s]", dt, 0,
-                         1e-4 * T / (K + 1));
-    } else if (wave == W_SAWTOOTH) {
-        mm_res_check_abs(res, "time of the maximum: refined vs -T/(2(K+1)), eq. (12) [s]", t_max, t_ref,
-                         1e-4 * T / (K + 1));
+                         (s_ref - A) / jump, G - 0.5 * h, M_PI * M_PI / 36 * h * h + tol_round / jump);
     }
 
     /* ---- series: one period, and a zoom on the jump (or the corner) ---- */
-    int np = 16 * (K + 1) + 1;
-    np = np < 1001 ? 1001 : np > 2001 ? 2001 : np;
-    mm_series *sf = mm_res_series_v1(res, "wave", "the wave f(t)", "", "t", "s", np);
-    mm_series *ss = mm_res_series_v1(res, "partial_sum", "partial sum S_K(t)", "", "t", "s", np);
-    double half = fmin(T / 2, 6.0 * T / (K + 1));  /* six ripples either side */
-    int nz = 601;
-    mm_series *zf = mm_res_series_v1(res, "wave_zoom", "the wave near t = 0", "", "t", "s", nz);
-    mm_series *zs = mm_res_series_v1(res, "partial_sum_zoom", "S_K(t) near t = 0", "", "t", "s", nz);
-    if (!sf || !ss || !zf || !zs)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    mm_linspace(-T / 2, T / 2, np, sf->x);
-    mm_linspace(-half, half, nz, zf->x);
-    for (int i = 0; i < np; i++) {
-        ss->x[i] = sf->x[i];
-        sf->y[i] = wave_t(wave, A, T, sf->x[i]);
-    }
-    for (int i = 0; i < nz; i++) {
-        zs->x[i] = zf->x[i];
-        zf->y[i] = wave_t(wave, A, T, zf->x[i]);
-    }
-    if ((rc = mm_fourier_series_eval(a, b, (size_t)K, T, ss->x, (size_t)np, ss->y, err)) != MM_OK ||
-        (rc = mm_fourier_series_eval(a, b, (size_t)K, T, zs->x, (size_t)nz, zs->y, err)) != MM_OK)
+    if ((rc = curves(wave, A, T, K, ax, bx, res, err)) != MM_OK)
         return rc;
-
-    mm_res_method(res, "FFT of one sampled period (FFTW), golden-section refinement of max S_K", 0);
+    mm_res_method(res, "closed forms; FFT of one sampled period (FFTW), golden-section refinement of max S_K "
+                       "(mm_opt) beside them", 0);
     mm_res_method_stat(res, "samples", (double)N);
     mm_res_method_stat(res, "terms", K);
     mm_res_method_stat(res, "scan_points", ceil(8.0 * (K + 1)));
@@ -309,6 +345,8 @@ const mm_exercise mm_ex_vib_fourier_series = {
                "the 9 % overshoot at a jump.",
     .tags = "Fourier series, harmonics, FFT, Gibbs phenomenon, periodic motion",
     .theory = "exercises/vib/fourier_series.md",
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .params = params,
     .n_params = MM_COUNT(params),
     .references = references,

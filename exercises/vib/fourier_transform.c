@@ -10,10 +10,12 @@
  * (eq. 8: the spectrum folded back from multiples of fs; first order at a
  * jump), and that a pulse centred at t_c has the phase exp(-2 pi i f t_c)
  * (eq. 2), handled by measuring time from t = 0, not from the first sample.
- * Checks: the complex FFT spectrum against the closed form in a band, within
- * the error bound of eq. (8) or (9); the first zero (or, for the Gaussian,
- * the half-amplitude frequency) located by Brent's method on the transform
- * of the samples summed directly (no FFT) against the closed form.
+ * The printed answers are the closed forms (area, first zero or
+ * half-amplitude frequency); the FFT's area and the zero located by Brent's
+ * method on the transform of the samples summed directly (no FFT) are shown
+ * beside them with their errors.  Checks: the complex FFT spectrum against
+ * the closed form in a band, within the error bound of eq. (8) or (9); the
+ * located zero and the FFT's area against the closed forms.
  * Reference: R. N. Bracewell, The Fourier Transform and Its Applications,
  * 3rd ed., McGraw-Hill 2000, ch. 2-6 and 10; S. S. Rao, Mechanical
  * Vibrations, 6th ed., section 4.8 (response spectrum of pulses).
@@ -33,22 +35,46 @@ static const char *const pulses[] = {"rectangular", "triangular", "gaussian", "h
 #define MAX_N 65536
 #define MIN_PER_PULSE 8        /* samples across the pulse, at least */
 #define GAUSS_SIGMAS 8         /* the Gaussian is kept out to +-8 sigma: exp(-32) */
-#define PLOT_MAX 2001
+#define PLOT_MAX 1001
 
 static const mm_param params[] = {
     [P_PULSE] = {"pulse", "pulse shape", "", MM_CHOICE, PU_RECT, 0, 0, .choices = pulses,
                  .help = "rectangular: a constant A; triangular: up to A and down; gaussian: bell with "
                          "sigma = duration/6; half-sine: A sin over the duration"},
     [P_TAU] = {"duration", "pulse duration", "s", MM_REAL, 0.1, 1e-4, 10,
-               .help = "length of the pulse; the spectrum's width scales as 1/duration"},
+               .help = "length of the pulse, 0.1 ms (an impact) to 10 s; the spectrum's width scales as 1/duration"},
     [P_A] = {"A", "peak value", "", MM_REAL, 1, 1e-6, 1e6,
-             .help = "the pulse's largest value (a force in N, an acceleration in m/s^2, ...)"},
+             .help = "the pulse's largest value (a force in N, an acceleration in m/s^2, ...); it only scales"},
     [P_TC] = {"t_c", "pulse centre", "s", MM_REAL, 0.2, -10, 10,
-              .help = "time of the middle of the pulse; it changes only the phase of the spectrum"},
+              .help = "time of the middle of the pulse, within 10 s of t = 0; it changes only the phase of the spectrum"},
     [P_FS] = {"fs", "sampling frequency", "Hz", MM_REAL, 1000, 1, 1e6,
-              .help = "samples per second; at least 8 across the pulse"},
+              .help = "samples per second, up to 1 MHz; at least 8 across the pulse"},
     [P_N] = {"N", "number of samples", "", MM_INT, 1024, 16, MAX_N,
-             .help = "samples in the window of N/fs seconds centred on the pulse; frequency step fs/N"},
+             .help = "samples in the window of N/fs seconds centred on the pulse; frequency step fs/N; "
+                     "at most 65536 (the direct sums that locate the zero cost N each)"},
+};
+
+enum { O_AREA, O_AREA_FFT, O_HALF_F, O_HALF_FT, O_ZERO, O_ZERO_T, O_DF, O_WINDOW, O_MAXERR, O_BAND, O_MAG,
+       O_MAG_EXACT, O_PULSE };
+
+static const mm_output outputs[] = {
+    [O_AREA] = MM_SCALAR("area", "pulse area X(0) = int x dt, eqs. (3)-(6)", "s", .flags = MM_ANSWER | MM_EXACT),
+    [O_AREA_FFT] = MM_SCALAR("area_fft", "X(0) by the FFT of the samples, eq. (7)", "s"),
+    [O_HALF_F] = MM_SCALAR("half_amplitude_frequency", "frequency where |X| falls to half of X(0), eq. (5)", "Hz",
+                           .flags = MM_ANSWER | MM_EXACT),
+    [O_HALF_FT] = MM_SCALAR("half_amplitude_times_duration", "that frequency times the duration", "",
+                            .flags = MM_EXACT),
+    [O_ZERO] = MM_SCALAR("first_zero", "first zero of the spectrum, eqs. (3), (4), (6)", "Hz",
+                         .flags = MM_ANSWER | MM_EXACT),
+    [O_ZERO_T] = MM_SCALAR("first_zero_times_duration", "first zero times the duration", "", .flags = MM_EXACT),
+    [O_DF] = MM_SCALAR("df", "frequency step fs/N", "Hz", .flags = MM_EXACT),
+    [O_WINDOW] = MM_SCALAR("window", "window length N/fs", "s", .flags = MM_EXACT),
+    [O_MAXERR] = MM_SCALAR("max_error_band", "largest |FFT - exact| below the band edge, relative to X(0)", ""),
+    [O_BAND] = MM_SCALAR("band", "band edge of the check: min(fs/4, 10/duration)", "Hz", .flags = MM_EXACT),
+    [O_MAG] = MM_SERIES("magnitude", "|X(f)| by FFT", "s", "f", "Hz", .figure = "spectrum", .mark = "dots"),
+    [O_MAG_EXACT] = MM_SERIES("magnitude_exact", "|X(f)| exact", "s", "f", "Hz", .figure = "spectrum",
+                              .role = "reference"),
+    [O_PULSE] = MM_SERIES("pulse", "the pulse x(t)", "", "t", "s", .figure = "pulse"),
 };
 
 static double sigma_of(double tau) { return tau / 6; }
@@ -192,7 +218,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double *freq = mm_res_alloc(res, sizeof *freq * (size_t)nb);
     double *re = mm_res_alloc(res, sizeof *re * (size_t)nb), *im = mm_res_alloc(res, sizeof *im * (size_t)nb);
     if (!x || !freq || !re || !im)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     for (long j = 0; j < n; j++)
         x[j] = pulse_at(pulse, tau, A, (double)(j - m) * dt, dt);   /* s from whole steps: exactly symmetric */
 
@@ -211,7 +237,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- the band check: complex error, phase included ---- */
     double X0 = exact_c(pulse, tau, A, 0);
     double f_band = fmin(fs / 4, 10 / tau);
-    double worst = 0, worst_ratio = 0, tol_at_worst = 0;
+    double worst = 0, worst_ratio = 0, tol_at_worst = 0, max_err = 0;
     long nband = 0;
     for (long k = 0; k < nb && freq[k] <= f_band; k++, nband++) {
         double xc = exact_c(pulse, tau, A, freq[k]);
@@ -223,6 +249,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
          * round f t_c and f t0, each to eps |f t| cycles) */
         double tol = error_bound(pulse, tau, A, fs, freq[k], w_eff) + 64 * DBL_EPSILON * log2((double)n) * X0 +
                      8 * M_PI * DBL_EPSILON * freq[k] * (fabs(tc) + fabs(t0) + dt) * X0;
+        max_err = fmax(max_err, e);
         if (e / tol > worst_ratio) {
             worst_ratio = e / tol;
             tol_at_worst = tol;
@@ -282,30 +309,47 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * closed form).  The triangle's double zero X ~ c (f - f_ref)^2,
      * c = A tau^3 / 8: an error B can move the minimum by sqrt(2 B / c);
      * taken with c/2 for the curvature's change nearby. */
-    double B = error_bound(pulse, tau, A, fs, f_ref, w_eff) + 64 * DBL_EPSILON * (double)half * A * dt;
-    double tol_f;
-    if (pulse == PU_TRI) {
-        tol_f = sqrt(4 * B / (A * tau * tau * tau / 8)) + 1e-9 / tau;
+    /* The samples of a rectangle whose ends fall on samples (half weight
+     * there) and of a triangle whose half-width is a whole number of steps
+     * have a transform with exactly the continuous pulse's zeros and area:
+     * A dt sin(pi f tau) cot(pi f dt), and (A/M) dt sin^2(M th/2)/sin^2(th/2),
+     * th = 2 pi f dt, M = tau/(2 dt).  Then only rounding separates them. */
+    long M2 = (long)nearbyint(tau / (2 * dt));
+    int exact_samples = (pulse == PU_RECT && on_edge) ||
+                        (pulse == PU_TRI && M2 > 0 && fabs((double)M2 * dt - tau / 2) <= 1e-9 * dt);
+    double rnd = 64 * DBL_EPSILON * (double)half * A * dt;       /* rounding of a direct sum */
+    double B = (exact_samples ? 0 : error_bound(pulse, tau, A, fs, f_ref, w_eff)) + rnd;
+    double tol_f, brent = 4 * (2 * DBL_EPSILON * f_ref + 1e-12 / tau);
+    if (pulse == PU_TRI && exact_samples) {
+        /* the minimum of X ~ c (f - f_ref)^2 by the zero of X': its rounding
+         * (times 2 pi half dt) over X'' = 2 c, c = A tau^3 / 8 */
+        tol_f = brent + rnd * 2 * M_PI * (double)half * dt / (A * tau * tau * tau / 4);
+    } else if (pulse == PU_TRI) {
+        /* an error B can move the double zero X ~ c (f - f_ref)^2 by sqrt(2 B / c);
+         * taken with c/2 for the curvature's change nearby */
+        tol_f = sqrt(4 * B / (A * tau * tau * tau / 8)) + brent;
     } else {
         double dfd = 1e-6 / tau;
         double slope = (exact_c(pulse, tau, A, f_ref + dfd) - exact_c(pulse, tau, A, f_ref - dfd)) / (2 * dfd);
-        tol_f = 2 * B / fabs(slope) + 1e-9 / tau;
+        tol_f = 2 * B / fabs(slope) + brent;
     }
+    double tol_area = (exact_samples ? 0 : error_bound(pulse, tau, A, fs, 0, w_eff)) +
+                      4 * DBL_EPSILON * (double)n * A * dt;
 
-    /* ---- scalars ---- */
-    mm_res_scalar_v1(res, "area", "pulse area X(0) = int x dt (FFT)", "s", re[0]);
+    /* ---- scalars: the closed forms, the numerical values beside them ---- */
+    mm_res_scalar(res, O_AREA, X0);
+    mm_ex_scalar_beside(res, O_AREA_FFT, re[0], X0, 4 * DBL_EPSILON * X0);
     if (pulse == PU_GAUSS) {
-        mm_res_scalar_v1(res, "half_amplitude_frequency", "frequency where |X| falls to half of X(0)", "Hz", fz);
-        mm_res_scalar_v1(res, "half_amplitude_times_duration", "that frequency times the duration", "", fz * tau);
+        mm_res_scalar(res, O_HALF_F, f_ref);
+        mm_res_scalar(res, O_HALF_FT, f_ref * tau);
     } else {
-        mm_res_scalar_v1(res, "first_zero", "first zero of the spectrum", "Hz", fz);
-        mm_res_scalar_v1(res, "first_zero_times_duration", "first zero times the duration", "", fz * tau);
+        mm_res_scalar(res, O_ZERO, f_ref);
+        mm_res_scalar(res, O_ZERO_T, zero_times_tau[pulse]);
     }
-    mm_res_scalar_v1(res, "df", "frequency step fs/N", "Hz", fs / (double)n);
-    mm_res_scalar_v1(res, "window", "window length N/fs", "s", (double)n / fs);
-    mm_res_scalar_v1(res, "max_error_band", "largest |FFT - exact| below the band edge, relative to X(0)", "",
-                  worst / X0);
-    mm_res_scalar_v1(res, "band", "band edge of the check: min(fs/4, 10/duration)", "Hz", f_band);
+    mm_res_scalar(res, O_DF, fs / (double)n);
+    mm_res_scalar(res, O_WINDOW, (double)n / fs);
+    mm_res_scalar_err(res, O_MAXERR, max_err / X0, 64 * DBL_EPSILON * log2((double)n), MM_ERR_BOUND);
+    mm_res_scalar(res, O_BAND, f_band);
 
     /* ---- checks ---- */
     mm_res_check_abs(res, pulse == PU_RECT
@@ -318,8 +362,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                               ? "half-amplitude frequency: Brent on the direct sum vs sqrt(ln 2 / 2)/(pi sigma) [Hz]"
                               : "first zero: Brent on the direct sum of the samples vs eqs. (3)-(6) [Hz]",
                      fz, f_ref, tol_f);
-    mm_res_check_rel(res, "area X(0): FFT vs the closed form A tau, A tau/2, ... [s]", re[0], X0,
-                     error_bound(pulse, tau, A, fs, 0, w_eff) / X0 + 1e-12);
+    mm_res_check_abs(res, "area X(0): FFT vs the closed form A tau, A tau/2, ... [s]", re[0], X0, tol_area);
 
     /* ---- series ---- */
     double f_plot = fmin(fs / 2, 8 / tau);
@@ -327,23 +370,28 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     while (nplot < nb && freq[nplot] <= f_plot)
         nplot++;
     long stride = (nplot + PLOT_MAX - 1) / PLOT_MAX, np = (nplot + stride - 1) / stride;
-    mm_series *sn = mm_res_series_v1(res, "magnitude", "|X(f)| by FFT", "s", "f", "Hz", (int)np);
-    mm_series *se = mm_res_series_v1(res, "magnitude_exact", "|X(f)| exact", "s", "f", "Hz", 1001);
-    mm_series *sp = mm_res_series_v1(res, "pulse", "the pulse x(t)", "", "t", "s", 501);
+    mm_series *sn = mm_res_series(res, O_MAG, (int)np), *se = mm_res_series(res, O_MAG_EXACT, 401);
+    mm_series *sp = mm_res_series(res, O_PULSE, 301);
     if (!sn || !se || !sp)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     for (long i = 0; i < np; i++) {
         long k = i * stride;
         sn->x[i] = freq[k];
         sn->y[i] = hypot(re[k], im[k]);
     }
-    mm_linspace(0, f_plot, 1001, se->x);
-    for (int i = 0; i < 1001; i++)
+    mm_linspace(0, f_plot, 401, se->x);
+    for (int i = 0; i < 401; i++)
         se->y[i] = fabs(exact_c(pulse, tau, A, se->x[i]));
     double wshow = 0.75 * support(pulse, tau);
-    mm_linspace(tc - wshow, tc + wshow, 501, sp->x);
-    for (int i = 0; i < 501; i++)
+    mm_linspace(tc - wshow, tc + wshow, 301, sp->x);
+    for (int i = 0; i < 301; i++)
         sp->y[i] = pulse_at(pulse, tau, A, sp->x[i] - tc, 0);
+    /* the curves for the eye: six digits */
+    mm_ex_round_sig(sn->y, (int)np, 6);
+    mm_ex_round_sig(se->x, 401, 8);
+    mm_ex_round_sig(se->y, 401, 6);
+    mm_ex_round_sig(sp->x, 301, 8);
+    mm_ex_round_sig(sp->y, 301, 6);
 
     mm_res_method(res, "FFT of the sampled pulse times dt, origin shifted to t = 0 (FFTW); zero by Brent", dt);
     mm_res_method_stat(res, "samples", (double)n);
@@ -376,6 +424,8 @@ const mm_exercise mm_ex_vib_fourier_transform = {
                "forms; shorter pulse, wider spectrum.",
     .tags = "Fourier transform, Fourier integral, pulse, spectrum, FFT, sampling",
     .theory = "exercises/vib/fourier_transform.md",
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .params = params,
     .n_params = MM_COUNT(params),
     .references = references,

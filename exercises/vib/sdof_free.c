@@ -3,12 +3,15 @@
  *     m x'' + c x' + k x = 0,   x(0) = x0,  x'(0) = v0              (1)
  *
  * Goal: the three regimes of damping (under, critical, over) and how the
- * damping ratio sets the decay.  The response is integrated (DOP853, dense
- * output) and checked against the closed form at every fifth point; a third
- * equation integrates the power lost in the damper so that the energy
- * balance E(0) = E(t_end) + dissipated work is a second, independent check.
+ * damping ratio sets the decay.  The plotted x(t) is the closed form of the
+ * regime (eq. 4 and its critical and overdamped forms, mm_sdof); DOP853
+ * integrates eq. (1) beside it and its error is shown.  The energy balance
+ * (5) is the second check: a third equation adds up the damper's work
+ * during the integration, and it must equal what the closed form says the
+ * block has lost.
  * Reference: S. S. Rao, Mechanical Vibrations, ch. 2.
  */
+#include <float.h>
 #include <math.h>
 
 #include "mm_exhelp.h"
@@ -17,16 +20,38 @@
 enum { P_M, P_K, P_C, P_X0, P_V0, P_TEND, P_POINTS };
 
 static const mm_param params[] = {
-    [P_M] = {"m", "mass", "kg", MM_REAL, 1, 1e-3, 1e3, .help = "the moving mass"},
-    [P_K] = {"k", "stiffness", "N/m", MM_REAL, 100, 1e-2, 1e6, .help = "spring force per metre of stretch"},
+    [P_M] = {"m", "mass", "kg", MM_REAL, 1, 1e-3, 1e3,
+             .help = "the moving mass, 1 g to 1 t (a lab model to a machine)"},
+    [P_K] = {"k", "stiffness", "N/m", MM_REAL, 100, 1e-2, 1e6,
+             .help = "spring force per metre of stretch; with m it sets omega_n between 3e-3 and 3e4 rad/s"},
     [P_C] = {"c", "damping coefficient", "N s/m", MM_REAL, 2, 0, 1e4,
              .help = "viscous damper force per m/s; c = 2 sqrt(k m) is critical damping"},
-    [P_X0] = {"x0", "initial displacement", "m", MM_REAL, 0.01, -10, 10, .help = "x at t = 0"},
+    [P_X0] = {"x0", "initial displacement", "m", MM_REAL, 0.01, -10, 10,
+              .help = "x at t = 0; within 10 m, where a linear spring is still a fair model"},
     [P_V0] = {"v0", "initial velocity", "m/s", MM_REAL, 0, -1e3, 1e3, .help = "dx/dt at t = 0"},
     [P_TEND] = {"t_end", "duration", "s", MM_REAL, 5, 1e-3, 1e4,
-                .help = "simulated time; at most 1e4 radians of the fastest motion"},
+                .help = "simulated time; at most 2e4 radians of the fastest motion (3,200 periods), "
+                        "what one request integrates in 250 ms"},
     [P_POINTS] = {"points", "plot points", "", MM_INT, 501, 11, 4001,
-                  .help = "samples of the time response returned for the plot"},
+                  .help = "samples of the time response returned for the plot (a plot shows no more)"},
+};
+
+enum { O_OMEGA_N, O_ZETA, O_OMEGA_D, O_REGIME, O_TD, O_LOGDEC, O_CCRIT, O_EDISS, O_X, O_ERR, O_ANIM };
+
+static const mm_output outputs[] = {
+    [O_OMEGA_N] = MM_SCALAR("omega_n", "natural frequency", "rad/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_ZETA] = MM_SCALAR("zeta", "damping ratio", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_OMEGA_D] = MM_SCALAR("omega_d", "damped frequency (0: no oscillation)", "rad/s",
+                            .flags = MM_ANSWER | MM_EXACT),
+    [O_REGIME] = MM_SCALAR("regime", "damping regime", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_TD] = MM_SCALAR("T_d", "damped period", "s", .flags = MM_EXACT),
+    [O_LOGDEC] = MM_SCALAR("log_decrement", "logarithmic decrement", "", .flags = MM_EXACT),
+    [O_CCRIT] = MM_SCALAR("c_critical", "critical damping coefficient", "N s/m", .flags = MM_EXACT),
+    [O_EDISS] = MM_SCALAR("energy_dissipated", "energy taken by the damper, E(0) - E(t_end), eq. (5)", "J",
+                          .flags = MM_ANSWER),
+    [O_X] = MM_SERIES("x", "displacement (closed form)", "m", "t", "s", .figure = "response"),
+    [O_ERR] = MM_SERIES("error_dop853", "x by DOP853 minus the closed form", "m", "t", "s", .figure = "error"),
+    [O_ANIM] = MM_ANIMATION("the block on its spring and damper"),
 };
 
 static mm_sdof model(const mm_value *in)
@@ -44,37 +69,33 @@ static int check(const mm_value *in, mm_error *err)
 /* y = (x, v, D): D' = c v^2 is the work the damper has taken (eq. 5). */
 static int rhs_energy(double t, const double *y, double *dy, void *ctx)
 {
-    (void)t;
     const mm_sdof *s = ctx;
-    dy[0] = y[1];
-    dy[1] = -(s->c * y[1] + s->k * y[0]) / s->m;
+    mm_sdof_rhs(t, y, dy, ctx);
     dy[2] = s->c * y[1] * y[1];
     return 0;
 }
 
-static int energy_balance(const mm_sdof *s, double t_end, double *E0, double *Eend,
-                          double *D, mm_error *err)
+/* The damper's work over [0, t_end] integrated with the motion (DOP853;
+ * the absolute tolerance at rtol of the smallest scale of x, v and D). */
+static int damper_work(const mm_sdof *s, const mm_sdof_props *p, double t_end, double rtol,
+                       double *D, mm_error *err)
 {
-    double y0[3] = {s->x0, s->v0, 0}, yend[3];
-    mm_ode_problem prob = {.n = 3, .f = rhs_energy, .params = (void *)s, .t0 = 0,
-                           .t_end = t_end, .y0 = y0};
+    double E0 = mm_sdof_energy(s, s->x0, s->v0), size = sqrt(2 * E0 / s->k);
+    double y0[3] = {s->x0, s->v0, 0}, y[3];
+    mm_ode_problem prob = {.n = 3, .f = rhs_energy, .params = (void *)s, .t_end = t_end, .y0 = y0};
     mm_ode_options opt;
     mm_ode_options_init(&opt);
     opt.method = MM_ODE_DOP853;
-    opt.rtol = 1e-9;
-    opt.atol = 1e-14;
+    opt.rtol = rtol;
+    opt.atol = rtol * fmin(fmin(size, size * p->omega_n), E0);
+    opt.h_max = 1 / mm_sdof_fastest_rate(s, p);
     opt.max_steps = 1000000;
-    mm_ode_result r = {0};
-    r.y_end = yend;
+    mm_ode_result r = {.y_end = y};
     mm_ode_work *w = mm_ode_work_alloc(3);
-    int rc = mm_ode_solve(&prob, &opt, w, &r, err);
+    int rc = w ? mm_ode_solve(&prob, &opt, w, &r, err) : MM_ENOMEM;
     mm_ode_work_free(w);
-    if (rc != MM_OK)
-        return rc;
-    *E0 = 0.5 * s->m * s->v0 * s->v0 + 0.5 * s->k * s->x0 * s->x0;
-    *Eend = 0.5 * s->m * yend[1] * yend[1] + 0.5 * s->k * yend[0] * yend[0];
-    *D = yend[2];
-    return MM_OK;
+    *D = y[2];
+    return rc;
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -85,42 +106,67 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double t_end = in[P_TEND].x;
     int n = (int)in[P_POINTS].x;
 
-    mm_res_scalar_v1(res, "omega_n", "natural frequency", "rad/s", p.omega_n);
-    mm_res_scalar_v1(res, "zeta", "damping ratio", "", p.zeta);
-    mm_res_scalar_v1(res, "omega_d", "damped frequency", "rad/s", p.omega_d);
-    mm_res_scalar_text_v1(res, "regime", "damping regime", "", p.regime, mm_sdof_regime_name(p.regime));
+    mm_res_scalar(res, O_OMEGA_N, p.omega_n);
+    mm_res_scalar(res, O_ZETA, p.zeta);
+    mm_res_scalar_text(res, O_OMEGA_D, p.omega_d, p.regime == MM_SDOF_UNDER ? NULL : "no oscillation");
+    mm_res_scalar_text(res, O_REGIME, p.regime, mm_sdof_regime_name(p.regime));
     if (p.regime == MM_SDOF_UNDER) {
-        mm_res_scalar_v1(res, "T_d", "damped period", "s", 2 * M_PI / p.omega_d);
-        mm_res_scalar_v1(res, "log_decrement", "logarithmic decrement", "",
-                      2 * M_PI * p.zeta / sqrt((1 - p.zeta) * (1 + p.zeta)));
+        mm_res_scalar(res, O_TD, 2 * M_PI / p.omega_d);
+        mm_res_scalar(res, O_LOGDEC, 2 * M_PI * p.zeta / sqrt((1 - p.zeta) * (1 + p.zeta)));
     }
-    mm_res_scalar_v1(res, "c_critical", "critical damping coefficient", "N s/m", 2 * sqrt(s.k * s.m));
+    mm_res_scalar(res, O_CCRIT, 2 * sqrt(s.k * s.m));
 
-    mm_series *sx = mm_res_series_v1(res, "x", "displacement", "m", "t", "s", n);
-    if (!sx)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_series *sx = mm_res_series(res, O_X, n), *se = mm_res_series(res, O_ERR, n);
+    double *xi = mm_res_alloc(res, (size_t)n * sizeof *xi);
+    if (!sx || !se || !xi)
+        return MM_ENOMEM;
     mm_linspace(0, t_end, n, sx->x);
-    int rc = mm_ex_sdof_run(&s, t_end, n, sx->x, sx->y, NULL, 5, res, err);
+    double worst;
+    int rc = mm_ex_sdof_response(&s, &p, t_end, n, sx->x, sx->y, xi, &worst, res, err);
     if (rc != MM_OK)
         return rc;
+    for (int i = 0; i < n; i++) {
+        se->x[i] = sx->x[i];
+        se->y[i] = xi[i] - sx->y[i];
+    }
+    mm_ex_round_sig(se->y, n, 3);                             /* an error needs no more digits */
 
-    double E0, Eend, D;
-    rc = energy_balance(&s, t_end, &E0, &Eend, &D, err);
-    if (rc != MM_OK)
+    /* eq. (5): what the block has lost, by the closed form; its rounding
+     * grows with the phase w t_end carried by the cosines */
+    double v_end, x_end = mm_sdof_x(&s, &p, t_end, &v_end);
+    double E0 = mm_sdof_energy(&s, s.x0, s.v0), E1 = mm_sdof_energy(&s, x_end, v_end);
+    double D_exact = E0 - E1, D_round = (16 + 4 * p.omega_n * t_end) * DBL_EPSILON * (E0 + E1);
+    if (s.c == 0)
+        D_exact = D_round = 0;                                /* no damper: nothing is lost */
+    mm_res_scalar_err(res, O_EDISS, D_exact, D_round, MM_ERR_BOUND);
+    double D = 0, Df = 0;                                      /* at rest: nothing to integrate */
+    if (E0 > 0 && ((rc = damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL, &D, err)) != MM_OK ||
+                   (rc = damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL / 100, &Df, err)) != MM_OK))
         return rc;
-    mm_res_scalar_v1(res, "energy_dissipated", "energy taken by the damper", "J", D);
-    /* the balance holds to the integrator's tolerance (rtol 1e-9) of E0 */
-    mm_res_check_abs(res, "energy balance: E(t_end) + damper work vs E(0)", Eend + D, E0,
-                     1e-7 * E0 + 1e-300);
+    double radians = t_end * mm_sdof_fastest_rate(&s, &p);
+    mm_res_check_abs(res, "energy balance (5): damper work by DOP853 vs E(0) - E(t_end) of the closed form, "
+                          "within 10 times its error estimated at rtol/100",
+                     D, D_exact, 10 * fabs(D - Df) + D_round + mm_ex_roundoff(radians, E0) + 1e-300);
 
-    if (p.regime == MM_SDOF_UNDER && (n - 1) / (t_end / (2 * M_PI / p.omega_d)) < 8)
-        mm_res_warn(res, "the plot has under 8 points per period: it cannot show the oscillation "
-                         "(it aliases); shorten t_end or raise points");
-    return MM_OK;
+    mm_ex_warn_aliasing(res, n, t_end, p.regime == MM_SDOF_UNDER ? p.omega_d : 0,
+                        "shorten t_end or raise points");
+
+    /* the block moving, frames from the closed form */
+    double t_show;
+    int nf = mm_ex_anim_frames(t_end, 2 * M_PI / p.omega_n, 33, &t_show);
+    double *ta = mm_res_alloc(res, 2 * (size_t)nf * sizeof *ta), *xa = ta + nf;
+    if (!ta)
+        return MM_ENOMEM;
+    for (int f = 0; f < nf; f++) {
+        ta[f] = t_show * f / (nf - 1);
+        xa[f] = mm_sdof_x(&s, &p, ta[f], NULL);
+    }
+    return mm_ex_animate_oscillator(res, nf, ta, xa, NULL, NULL, NULL, 1, 0);
 }
 
 static const char *const references[] = {
     "S. S. Rao, Mechanical Vibrations, 6th ed., Pearson 2017, section 2.6",
+    "E. Hairer, S. P. Norsett, G. Wanner, Solving Ordinary Differential Equations I, Springer 1993 (DOP853)",
     NULL,
 };
 
@@ -134,6 +180,8 @@ const mm_exercise mm_ex_vib_sdof_free = {
     .theory = "exercises/vib/sdof_free.md",
     .params = params,
     .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .references = references,
     .check = check,
     .solve = solve,

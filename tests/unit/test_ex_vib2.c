@@ -37,6 +37,34 @@ static double scalar(const cJSON *doc, const char *name)
     return NAN;
 }
 
+static int has_scalar(const cJSON *doc, const char *name)
+{
+    const cJSON *s;
+    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, "scalars"))
+        if (strcmp(cJSON_GetObjectItem(s, "name")->valuestring, name) == 0)
+            return 1;
+    return 0;
+}
+
+static double stat(const cJSON *doc, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItem(cJSON_GetObjectItem(doc, "method"), key);
+    if (!cJSON_IsNumber(v))
+        fail_msg("no method figure %s", key);
+    return v->valuedouble;
+}
+
+/* The value of the check whose name starts with prefix. */
+static double check_value(const cJSON *doc, const char *prefix)
+{
+    const cJSON *c;
+    cJSON_ArrayForEach(c, cJSON_GetObjectItem(doc, "checks"))
+        if (strncmp(cJSON_GetObjectItem(c, "name")->valuestring, prefix, strlen(prefix)) == 0)
+            return cJSON_GetObjectItem(c, "value")->valuedouble;
+    fail_msg("no check '%s...'", prefix);
+    return NAN;
+}
+
 static int warned(const cJSON *doc, const char *text)
 {
     const cJSON *w;
@@ -44,6 +72,27 @@ static int warned(const cJSON *doc, const char *text)
         if (strstr(w->valuestring, text))
             return 1;
     }
+    return 0;
+}
+
+/* A series' x and y (malloc'd; free both). */
+static int series_xy(const cJSON *doc, const char *name, double **x, double **y)
+{
+    const cJSON *s;
+    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, "series")) {
+        if (strcmp(cJSON_GetObjectItem(s, "name")->valuestring, name))
+            continue;
+        const cJSON *xs = cJSON_GetObjectItem(s, "x"), *ys = cJSON_GetObjectItem(s, "y");
+        int n = cJSON_GetArraySize(xs);
+        *x = malloc((size_t)n * sizeof **x);
+        *y = malloc((size_t)n * sizeof **y);
+        for (int i = 0; i < n; i++) {
+            (*x)[i] = cJSON_GetArrayItem(xs, i)->valuedouble;
+            (*y)[i] = cJSON_GetArrayItem(ys, i)->valuedouble;
+        }
+        return n;
+    }
+    fail_msg("no series %s", name);
     return 0;
 }
 
@@ -115,7 +164,7 @@ static void dft_component_above_nyquist_should_be_warned_and_seen_at_its_alias(v
     assert_true(warned(d, "aliasing"));
     assert_true(warned(d, "30 Hz"));              /* |70 - 100| */
     check_abs(scalar(d, "peak_frequency"), 30, 1e-9, "70 Hz sampled at 100 Hz reads 30 Hz");
-    check_abs(scalar(d, "above_nyquist"), 1, 1e-6, "all the power lies above fs/2");
+    check_abs(stat(d, "above_nyquist"), 1, 1e-6, "all the power lies above fs/2");
     cJSON_Delete(d);
 
     /* a square wave has harmonics without end: always aliased */
@@ -126,7 +175,7 @@ static void dft_component_above_nyquist_should_be_warned_and_seen_at_its_alias(v
     /* the default (5 and 12 Hz at 100 Hz): no warning */
     d = solve_ok("vib-dft", "");
     assert_false(warned(d, "aliasing"));
-    assert_true(scalar(d, "above_nyquist") < 1e-9);
+    assert_true(stat(d, "above_nyquist") < 1e-9);
     check_rel(cell(d, "peaks", 0, "f"), 5.078125, 1e-12, "largest peak at the bin nearest 5 Hz");
     check_rel(cell(d, "peaks", 1, "f"), 12.109375, 1e-12, "second peak at the bin nearest 12 Hz (30.72 bins)");
     cJSON_Delete(d);
@@ -240,11 +289,13 @@ static void pulse_spectra_should_have_their_first_zeros_where_the_closed_forms_s
         snprintf(q, sizeof q, "pulse=%s&duration=0.1&fs=1000&N=1024", p[i]);
         cJSON *d = solve_ok("vib-fourier-transform", q);
         /* 100 samples across the pulse: the zero moves by O(dt^2) (kinks) or not at all */
-        check_rel(scalar(d, "first_zero_times_duration"), z[i], 1e-3, p[i]);
+        check_rel(scalar(d, "first_zero_times_duration"), z[i], 1e-15, p[i]);
+        check_rel(check_value(d, "first zero") * 0.1, z[i], 1e-3, p[i]);
         cJSON_Delete(d);
     }
     cJSON *d = solve_ok("vib-fourier-transform", "pulse=gaussian&duration=0.1");
-    check_rel(scalar(d, "half_amplitude_frequency"), sqrt(log(2) / 2) / (M_PI * 0.1 / 6), 1e-9, "Gaussian");
+    check_rel(scalar(d, "half_amplitude_frequency"), sqrt(log(2) / 2) / (M_PI * 0.1 / 6), 1e-15, "Gaussian");
+    check_rel(check_value(d, "half-amplitude"), sqrt(log(2) / 2) / (M_PI * 0.1 / 6), 1e-9, "found");
     cJSON_Delete(d);
 
     /* moving the pulse changes only the phase: the same magnitudes */
@@ -262,10 +313,12 @@ static void pulse_spectra_should_have_their_first_zeros_where_the_closed_forms_s
     cJSON_Delete(a);
     cJSON_Delete(b);
 
-    /* jumps between samples: first-order error, warned */
+    /* jumps between samples: first-order error, warned; the answer is the
+     * continuous pulse's zero, the samples' zero is beside it */
     d = solve_ok("vib-fourier-transform", "duration=0.1055");
     assert_true(warned(d, "between samples"));
-    check_rel(scalar(d, "first_zero"), 1 / 0.105, 1e-6, "the sampled rectangle is 0.105 s long");
+    check_rel(scalar(d, "first_zero"), 1 / 0.1055, 1e-15, "the pulse's first zero, eq. (3)");
+    check_rel(check_value(d, "first zero"), 1 / 0.105, 1e-6, "the sampled rectangle is 0.105 s long");
     cJSON_Delete(d);
 }
 
@@ -296,7 +349,7 @@ static void beat_period_should_be_measured_on_the_signal(void **state)
 {
     (void)state;
     cJSON *d = solve_ok("vib-harmonics", "omega1=10&omega2=10.7071&A2=0.7&phi2=1&t_end=60");
-    check_rel(scalar(d, "beat_period_measured"), 2 * M_PI / 0.7071, 1e-3, "beat period from the envelope minima");
+    check_rel(stat(d, "beat_period_measured"), 2 * M_PI / 0.7071, 1e-3, "beat period from the envelope minima");
     check_abs(scalar(d, "peak_max"), 1.7, 0.02, "highest carrier peak reaches A1 + A2");
     check_abs(scalar(d, "periodic"), 0, 0, "10 : 10.7071 is no small ratio");
     cJSON_Delete(d);
@@ -304,6 +357,69 @@ static void beat_period_should_be_measured_on_the_signal(void **state)
     check_abs(scalar(d, "periodic"), 1, 0, "10 : 11");
     check_rel(scalar(d, "period"), 2 * M_PI, 1e-12, "period of 10 : 11 rad/s");
     cJSON_Delete(d);
+}
+
+
+/* ---- issue 10, #6: exact Fourier coefficients, the FFT's beside them ---------------- */
+
+static void fourier_series_should_print_the_exact_coefficients(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-fourier-series", "");
+    for (int k = 0; k <= 25; k++) {
+        /* a_k of the square wave is exactly 0, printed as 0; b_k = 4/(k pi) for odd k */
+        check_abs(cell(d, "coefficients", k, "a_k"), 0, 0, "a_k exactly 0");
+        check_rel(cell(d, "coefficients", k, "b_k"), k % 2 ? 4 / (k * M_PI) : 0, 1e-15, "b_k = 4A/(k pi)");
+        /* the FFT's beside it, within the aliasing bound (9) */
+        double e = fmax(fabs(cell(d, "coefficients", k, "a_k_fft")), fabs(cell(d, "coefficients", k, "b_k_fft") -
+                                                                           cell(d, "coefficients", k, "b_k")));
+        check_rel(cell(d, "coefficients", k, "fft_error"), e, 1e-15, "the FFT's error, as printed");
+        assert_true(e <= cell(d, "coefficients", k, "fft_error_bound"));
+    }
+    check_rel(cell(d, "coefficients", 1, "b_k"), 1.2732395447351628, 1e-16, "b_1 = 4/pi to the last digit");
+    /* the partial sum is built from the exact coefficients: the square's S_25 at
+     * t = 0.1 summed here */
+    double *t = NULL, *y = NULL, want = 0;
+    int n = series_xy(d, "partial_sum", &t, &y), i = 0;
+    while (i < n && t[i] < 0.1)
+        i++;
+    for (int k = 1; k <= 25; k += 2)
+        want += 4 / (k * M_PI) * sin(2 * M_PI * k * t[i]);
+    check_abs(y[i], want, 1e-14, "S_K from the closed-form coefficients");
+    free(t);
+    free(y);
+    /* the overshoot: S_K at its known place, eq. (10) */
+    double s = 0;
+    for (int j = 1; j <= 13; j++)
+        s += sin((2 * j - 1) * M_PI / 26) / (2 * j - 1);
+    check_rel(scalar(d, "overshoot") + 1, 4 / M_PI * s, 1e-15, "max S_25 from eq. (10)");
+    assert_true(check_value(d, "max S_K from the FFT") - 1 - scalar(d, "overshoot") < 2e-5);   /* the FFT's, beside */
+    cJSON_Delete(d);
+}
+
+/* ---- #9: vib-dft at exactly the Nyquist frequency; huge signals ---------------------- */
+
+static void dft_should_say_when_the_samples_are_all_zero(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-dft", "signal=sin(2*pi*50*t)");
+    assert_true(warned(d, "all zero to rounding"));
+    assert_false(has_scalar(d, "peak_frequency"));
+    assert_false(has_scalar(d, "peak_amplitude"));
+    assert_false(warned(d, "leakage (a frequency"));
+    const cJSON *t;
+    cJSON_ArrayForEach(t, cJSON_GetObjectItem(d, "tables"))
+        assert_int_equal(cJSON_GetArraySize(cJSON_GetObjectItem(t, "rows")), 0);   /* no peaks */
+    cJSON_Delete(d);
+    /* a huge signal: the spectrum without overflow */
+    d = solve_ok("vib-dft", "signal=1e200*sin(2*pi*5*t)&N=200");
+    check_rel(scalar(d, "peak_amplitude"), 1e200, 1e-12, "5 Hz on bin 10 of 0.5 Hz: amplitude 1e200");
+    cJSON_Delete(d);
+    /* beyond what a sum of N samples can hold: refused naming the signal */
+    answer a = solve("vib-dft", "signal=1e307*sin(2*pi*5*t)");
+    assert_int_equal(a.status, 400);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetObjectItem(a.doc, "error"), "param")->valuestring, "signal");
+    cJSON_Delete(a.doc);
 }
 
 /* FFTW's cached plans freed at the end, so leak checkers see nothing left. */
@@ -325,6 +441,8 @@ int main(void)
         cmocka_unit_test(pulse_spectra_should_have_their_first_zeros_where_the_closed_forms_say),
         cmocka_unit_test(beam_packet_should_travel_at_twice_the_phase_velocity_and_spread),
         cmocka_unit_test(beat_period_should_be_measured_on_the_signal),
+        cmocka_unit_test(fourier_series_should_print_the_exact_coefficients),
+        cmocka_unit_test(dft_should_say_when_the_samples_are_all_zero),
     };
     return cmocka_run_group_tests_name("vibration signal exercises", tests, NULL, teardown);
 }

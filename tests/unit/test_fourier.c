@@ -537,6 +537,36 @@ static int teardown(void **state)
     return 0;
 }
 
+
+static void one_harmonic_should_be_read_exactly_from_whole_periods(void **state)
+{
+    (void)state;
+    /* x = 0.7 + 2.5 cos(th - 0.4) + 0.3 cos(3 th + 1) + 0.2 sin(5 th), th = 2 pi j / 16,
+     * over 3 periods: discrete orthogonality gives 2.5 and 0.4 to rounding */
+    enum { PER = 16, N = 3 * PER };
+    double x[N], amp, phase;
+    for (int j = 0; j < N; j++) {
+        double th = 2 * M_PI * j / PER;
+        x[j] = 0.7 + 2.5 * cos(th - 0.4) + 0.3 * cos(3 * th + 1) + 0.2 * sin(5 * th);
+    }
+    assert_int_equal(mm_fourier_harmonic(x, N, PER, &amp, &phase, NULL), MM_OK);
+    check_rel(amp, 2.5, 1e-14, "amplitude of the fundamental, other harmonics and the mean rejected");
+    check_abs(phase, 0.4, 1e-14, "its phase lag");
+    /* a sine has phase pi/2: sin th = cos(th - pi/2) */
+    for (int j = 0; j < N; j++)
+        x[j] = -3 * sin(2 * M_PI * j / PER);
+    assert_int_equal(mm_fourier_harmonic(x, N, PER, &amp, &phase, NULL), MM_OK);
+    check_rel(amp, 3, 1e-14, "amplitude of -3 sin");
+    check_abs(phase, -M_PI / 2, 1e-14, "-sin th = cos(th + pi/2)");
+    /* not whole periods, too few samples a period: refused */
+    mm_error err;
+    assert_int_equal(mm_fourier_harmonic(x, N - 1, PER, &amp, &phase, &err), MM_ERANGE);
+    assert_string_equal(err.param, "n");
+    assert_int_equal(mm_fourier_harmonic(x, 4, 2, &amp, &phase, &err), MM_ERANGE);
+    x[5] = NAN;
+    assert_int_equal(mm_fourier_harmonic(x, N, PER, &amp, &phase, &err), MM_EVALUE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -555,6 +585,7 @@ int main(void)
         cmocka_unit_test(gaussian_pulse_transform_should_match_the_closed_form),
         cmocka_unit_test(concurrent_spectra_of_different_sizes_should_all_be_right),
         cmocka_unit_test(errors_should_name_the_parameter),
+        cmocka_unit_test(one_harmonic_should_be_read_exactly_from_whole_periods),
     };
     return cmocka_run_group_tests(tests, NULL, teardown);
 }

@@ -1157,6 +1157,150 @@ static void concurrent_solves_should_match_a_serial_solve_bit_for_bit(void **sta
     }
 }
 
+
+/* ======================================================================== */
+/* Events and the fixed-step rule                                           */
+/* ======================================================================== */
+
+/* x'' = -x as y = (x, v): x = cos t, v = -sin t from (1, 0). */
+static int cos_rhs(double t, const double *y, double *dydt, void *params)
+{
+    (void)t;
+    (void)params;
+    dydt[0] = y[1];
+    dydt[1] = -y[0];
+    return 0;
+}
+
+static int event_x(double t, const double *y, double *g, void *params)
+{
+    (void)t;
+    (void)params;
+    *g = y[0];
+    return 0;
+}
+
+static int event_minus_v(double t, const double *y, double *g, void *params)
+{
+    (void)t;
+    (void)params;
+    *g = -y[1];
+    return 0;
+}
+
+/* Run x'' = -x from (1, 0) over [0, t_end] with an event; grid of nout
+ * points over [0, t_end] into y_out (2 nout); returns the result. */
+static mm_ode_result run_event(mm_ode_method method, mm_ode_event_fn g, int dir, double t_end,
+                               double rtol, double *y_end, size_t nout, const double *t_out, double *y_out)
+{
+    double y0[2] = {1, 0};
+    mm_ode_problem prob = {.n = 2, .f = cos_rhs, .t0 = 0, .t_end = t_end, .y0 = y0, .event = g,
+                           .event_dir = dir};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = method;
+    opt.rtol = rtol;
+    opt.atol = rtol;
+    if (method == MM_ODE_RK4)
+        opt.h = 1e-3;
+    mm_ode_result r = {.y_end = y_end, .t_out = t_out, .nout = nout, .y_out = y_out};
+    mm_ode_work *w = mm_ode_work_alloc(2);
+    mm_error err;
+    assert_int_equal(mm_ode_solve(&prob, &opt, w, &r, &err), MM_OK);
+    mm_ode_work_free(w);
+    return r;
+}
+
+static void an_event_should_stop_the_run_at_the_zero_of_its_function(void **state)
+{
+    (void)state;
+    /* x = cos t falls through 0 at pi/2: DOP853 at rtol 1e-12, its 7th-order
+     * continuous extension, Brent to a few eps: t and the state to ~1e-12 */
+    double y[2], tg[5] = {0, 0.5, 1.0, 1.5, 1.6}, yg[10];
+    mm_ode_result r = run_event(MM_ODE_DOP853, event_x, -1, 10, 1e-12, y, 5, tg, yg);
+    assert_int_equal(r.event, 1);
+    check_abs(r.t_event, M_PI / 2, 1e-11, "cos t = 0 at pi/2");
+    check_abs(r.t_reached, r.t_event, 0, "the run ends at the event");
+    check_abs(y[0], 0, 1e-11, "x at the event");
+    check_abs(y[1], -1, 1e-11, "v = -sin(pi/2) at the event");
+    /* the grid is written up to the event only: 1.6 > pi/2 is left out */
+    assert_int_equal((int)r.nout_done, 4);
+    check_abs(yg[6], cos(1.5), 1e-11, "grid value before the event");
+    assert_true(r.n_event_evals >= 3);
+    /* DOPRI5 (4th-order extension) and RK4 (cubic Hermite, h = 1e-3:
+     * error ~ h^4 = 1e-12) locate it too */
+    r = run_event(MM_ODE_DOPRI5, event_x, -1, 10, 1e-10, y, 0, NULL, NULL);
+    check_abs(r.t_event, M_PI / 2, 1e-8, "DOPRI5 at rtol 1e-10");
+    r = run_event(MM_ODE_RK4, event_x, -1, 10, 1e-10, y, 0, NULL, NULL);
+    check_abs(r.t_event, M_PI / 2, 1e-10, "RK4 with h = 1e-3");
+}
+
+static void an_event_should_respect_its_direction_and_ignore_the_start(void **state)
+{
+    (void)state;
+    double y[2];
+    /* x = cos t rises through 0 at 3 pi/2 only */
+    mm_ode_result r = run_event(MM_ODE_DOP853, event_x, +1, 10, 1e-12, y, 0, NULL, NULL);
+    assert_int_equal(r.event, 1);
+    check_abs(r.t_event, 1.5 * M_PI, 1e-11, "first rising zero of cos t");
+    /* either direction: the first zero, pi/2 */
+    r = run_event(MM_ODE_DOP853, event_x, 0, 10, 1e-12, y, 0, NULL, NULL);
+    check_abs(r.t_event, M_PI / 2, 1e-11, "first zero of cos t");
+    /* -v = sin t is 0 at the start (a mass at rest): that zero does not
+     * count; it falls through 0 at pi */
+    r = run_event(MM_ODE_DOP853, event_minus_v, -1, 10, 1e-12, y, 0, NULL, NULL);
+    check_abs(r.t_event, M_PI, 1e-11, "sin t falls through 0 at pi, not at 0");
+    check_abs(y[0], -1, 1e-11, "x = cos(pi)");
+    /* no zero before t_end: the run ends there, no event */
+    r = run_event(MM_ODE_DOP853, event_x, -1, 1.5, 1e-12, y, 0, NULL, NULL);
+    assert_int_equal(r.event, 0);
+    check_abs(r.t_reached, 1.5, 0, "to t_end");
+}
+
+/* Free fall y'' = -g from rest at height H: y = H - g t^2 / 2 is a
+ * polynomial the methods integrate exactly, so the ground is reached at
+ * sqrt(2 H / g) to rounding. */
+static int fall_rhs(double t, const double *y, double *dydt, void *params)
+{
+    (void)t;
+    (void)params;
+    dydt[0] = y[1];
+    dydt[1] = -9.81;
+    return 0;
+}
+
+static void a_falling_body_should_hit_the_ground_at_the_closed_form_time(void **state)
+{
+    (void)state;
+    double y0[2] = {20, 0}, y[2];
+    mm_ode_problem prob = {.n = 2, .f = fall_rhs, .t0 = 0, .t_end = 5, .y0 = y0, .event = event_x,
+                           .event_dir = -1};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = MM_ODE_DOPRI5;
+    mm_ode_result r = {.y_end = y};
+    mm_ode_work *w = mm_ode_work_alloc(2);
+    mm_error err;
+    assert_int_equal(mm_ode_solve(&prob, &opt, w, &r, &err), MM_OK);
+    mm_ode_work_free(w);
+    /* Brent to 2 eps |t| on a quadratic that the extension reproduces */
+    check_rel(r.t_event, sqrt(2 * 20 / 9.81), 1e-14, "ground at sqrt(2 H / g)");
+    check_rel(y[1], -sqrt(2 * 9.81 * 20), 1e-13, "speed sqrt(2 g H)");
+    /* a bad direction is refused before anything runs */
+    prob.event_dir = 2;
+    assert_int_equal(mm_ode_check(&prob, &opt, NULL, &err), MM_ERANGE);
+    assert_string_equal(err.param, "event_dir");
+}
+
+static void fixed_steps_should_be_equal_and_never_one_too_many(void **state)
+{
+    (void)state;
+    check_abs(mm_ode_fixed_steps(10, 0.001), 10000, 0, "10 / 0.001 rounds to 10000.000000000002");
+    check_abs(mm_ode_fixed_steps(10, 0.03), 334, 0, "333.3 -> 334 steps of 0.0299");
+    check_abs(mm_ode_fixed_steps(1, 5), 1, 0, "a step longer than the span: one step");
+    check_abs(mm_ode_fixed_steps(1, 0.1), 10, 0, "1 / 0.1 = 10 exactly");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1189,6 +1333,10 @@ int main(void)
         cmocka_unit_test(blow_up_should_end_with_an_error_not_a_hang),
         cmocka_unit_test(step_record_should_report_when_it_is_full),
         cmocka_unit_test(concurrent_solves_should_match_a_serial_solve_bit_for_bit),
+        cmocka_unit_test(an_event_should_stop_the_run_at_the_zero_of_its_function),
+        cmocka_unit_test(an_event_should_respect_its_direction_and_ignore_the_start),
+        cmocka_unit_test(a_falling_body_should_hit_the_ground_at_the_closed_form_time),
+        cmocka_unit_test(fixed_steps_should_be_equal_and_never_one_too_many),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

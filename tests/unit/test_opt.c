@@ -72,12 +72,27 @@ static void golden_should_refuse_bad_arguments_and_pass_on_stops(void **state)
     assert_int_equal(mm_opt_golden_max(stop, NULL, 0, 1, 1e-9, 200, &r, &err), MM_ENOCONV);
 }
 
+
+static void golden_should_reach_the_height_of_a_flat_maximum_at_an_end(void **state)
+{
+    (void)state;
+    /* zeta = 1/sqrt 2: |H| = 1/sqrt(1 + r^4) is largest at r = 0 and flat
+     * there to fourth order: values within 8 eps of 1 span r < (16 eps)^(1/4)
+     * = 8e-4, so the place is known only that well; the height to rounding */
+    double z = M_SQRT1_2;
+    mm_opt_result r;
+    assert_int_equal(mm_opt_golden_max(resonance, &z, 0, 1.5, 1e-12, 200, &r, NULL), MM_OK);
+    check_abs(r.x, 0, r.bracket + pow(16 * 2.2204460492503131e-16, 0.25), "peak at r = 0, flat to r^4");
+    check_rel(r.fx, 1, 8 * 2.2204460492503131e-16, "height |H(0)| = 1");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(golden_should_find_a_parabola_vertex),
         cmocka_unit_test(golden_should_find_the_resonance_peak),
         cmocka_unit_test(golden_should_find_a_maximum_at_the_end),
+        cmocka_unit_test(golden_should_reach_the_height_of_a_flat_maximum_at_an_end),
         cmocka_unit_test(golden_should_refuse_bad_arguments_and_pass_on_stops),
     };
     return cmocka_run_group_tests_name("opt", tests, NULL, NULL);
