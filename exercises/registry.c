@@ -21,6 +21,19 @@ extern const mm_exercise mm_ex_num_plot;
 /* ==== end of 1 ==== */
 
 /* ==== 2 Kinematics ==== */
+extern const mm_exercise mm_ex_kin_particle_path;
+extern const mm_exercise mm_ex_kin_relative_motion;
+extern const mm_exercise mm_ex_kin_path_coordinates;
+extern const mm_exercise mm_ex_kin_rotation_plane;
+extern const mm_exercise mm_ex_kin_rigid_rotation;
+extern const mm_exercise mm_ex_kin_plane_motion;
+extern const mm_exercise mm_ex_kin_space_motion;
+extern const mm_exercise mm_ex_kin_rolling_wheel;
+extern const mm_exercise mm_ex_kin_mobility;
+extern const mm_exercise mm_ex_kin_slider_crank;
+extern const mm_exercise mm_ex_kin_four_bar;
+extern const mm_exercise mm_ex_kin_cam_follower;
+extern const mm_exercise mm_ex_kin_quick_return;
 /* ==== end of 2 ==== */
 
 /* ==== 3 Statics ==== */
@@ -80,6 +93,19 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 1 ==== */
 
     /* ==== 2 Kinematics ==== */
+    &mm_ex_kin_particle_path,
+    &mm_ex_kin_relative_motion,
+    &mm_ex_kin_path_coordinates,
+    &mm_ex_kin_rotation_plane,
+    &mm_ex_kin_rigid_rotation,
+    &mm_ex_kin_plane_motion,
+    &mm_ex_kin_space_motion,
+    &mm_ex_kin_rolling_wheel,
+    &mm_ex_kin_mobility,
+    &mm_ex_kin_slider_crank,
+    &mm_ex_kin_four_bar,
+    &mm_ex_kin_cam_follower,
+    &mm_ex_kin_quick_return,
     /* ==== end of 2 ==== */
 
     /* ==== 3 Statics ==== */

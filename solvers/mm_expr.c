@@ -8,6 +8,8 @@
 #include "mm_expr.h"
 
 #include <ctype.h>
+#include <fenv.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -387,6 +389,46 @@ double mm_expr_eval(mm_expr *e, const double *vars)
     /* muParser raises nothing at run time; if it ever did, say NaN so the
      * caller's isfinite() check catches it */
     return mupError(e->h) ? (double)NAN : v;
+}
+
+double mm_expr_eval_err(mm_expr *e, const double *vars, double *err)
+{
+    double v = mm_expr_eval(e, vars);
+    if (!isfinite(v)) {
+        *err = INFINITY;
+        return v;
+    }
+    /* Kahan's test: the same evaluation in the three directed rounding
+     * modes; every operation rounds the other way, so the spread shows how
+     * much rounding the expression amplifies (cancellation, ill-conditioned
+     * functions) */
+    static const int modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    int saved = fegetround();
+    double spread = 0;
+    for (int m = 0; m < 3; m++) {
+        if (fesetround(modes[m]) != 0)
+            continue;
+        double w = mm_expr_eval(e, vars);
+        spread = fmax(spread, fabs(w - v));
+    }
+    fesetround(saved);
+    /* the rounding of the constants (pi, 0.1) and of the variables acts like
+     * a relative change of about u in them: what 2u in each variable does */
+    double sens = 0, x[MM_EXPR_MAX_VARS];
+    for (size_t i = 0; i < e->nvars; i++)
+        x[i] = vars[i];
+    for (size_t i = 0; i < e->nvars; i++) {
+        double h = 2 * DBL_EPSILON * fabs(vars[i]);
+        x[i] = vars[i] + h;
+        double up = mm_expr_eval(e, x);
+        x[i] = vars[i] - h;
+        double dn = mm_expr_eval(e, x);
+        x[i] = vars[i];
+        sens += 0.5 * fabs(up - dn);
+    }
+    double total = 2 * spread + sens + DBL_EPSILON / 2 * fabs(v);
+    *err = isfinite(total) ? total : INFINITY;
+    return v;
 }
 
 void mm_expr_eval_bulk(mm_expr *e, const double *vars, size_t n, double *out)

@@ -92,6 +92,18 @@ size_t mm_expr_nvars(const mm_expr *e);
  * file comment: the caller checks). */
 double mm_expr_eval(mm_expr *e, const double *vars);
 
+/* The value at vars, as mm_expr_eval, with an ESTIMATE of its error in
+ * *err: twice the largest change when the expression is evaluated again
+ * in the three directed rounding modes (Kahan's test of how much the
+ * rounding of each operation is amplified), plus half the change that a
+ * relative 2 eps in each variable makes (which stands for the rounding of
+ * constants such as pi and of the variables), plus u |value|.  An estimate,
+ * not a bound: a systematic error that no rounding mode and no change of
+ * the inputs reveals is not seen.  Costs 4 + 2 nvars evaluations; restores
+ * the caller's rounding mode.  *err is inf when the value is not finite.
+ * Cannot fail. */
+double mm_expr_eval_err(mm_expr *e, const double *vars, double *err);
+
 /* out[i] = value at the i-th row of vars, i < n, where vars is row-major
  * n x nvars (for one variable simply the array of its values).  Same
  * result as n calls of mm_expr_eval, at about 15 ns a point for

@@ -10,8 +10,11 @@
  *     LAPACK would destroy into scratch memory it allocates and frees
  *     itself.  Outputs go to arrays the caller owns, with the sizes given in
  *     each comment.  No function keeps a pointer after it returns.
- *   - No globals, no locks: safe to call from many threads at once (the
- *     BLAS is Debian's serial OpenBLAS, which runs in the calling thread).
+ *   - No globals but one lock: safe to call from many threads at once.
+ *     Debian's serial OpenBLAS (the default BLAS/LAPACK) shares scratch
+ *     buffers between threads without a lock, so mm_linalg.c makes every
+ *     LAPACK/BLAS call under one mutex (see there); the double-double
+ *     routines (mm_linalg_*_dd) need no lock.
  *   - Every fallible function returns MM_OK or an MM_E* code and fills err
  *     (may be NULL) with the parameter concerned and a message for a
  *     learner.  Sizes are checked against the MM_LINALG_MAX_* limits, and
@@ -47,13 +50,20 @@
  *                                    of the ~16 digits of x may be wrong) */
 #define MM_LINALG_RCOND_WARN 1e-10
 
-/* Symmetry test of K and M in the symmetric eigen solvers: |a_ij - a_ji| must
- * be <= MM_LINALG_SYM_TOL * max |a_kl|.  Loose enough for an assembly that
- * rounds differently above and below the diagonal, tight enough to catch a
- * typing error. */
-#define MM_LINALG_SYM_TOL    1e-10
+/* The symmetry rule of the whole project (mm_linalg_is_symmetric): a
+ * matrix is symmetric when |a_ij - a_ji| <= MM_LINALG_SYM_TOL * max |a_kl|.
+ * A matrix typed in decimal is exactly symmetric, and one assembled from
+ * element matrices is symmetric to a few units of rounding (~1e-15); a
+ * difference in the 12th digit is a typing error.  The symmetric solvers
+ * use the upper triangle. */
+#define MM_LINALG_SYM_TOL    1e-12
 
 /* ---- helpers ------------------------------------------------------------- */
+
+/* 1 when the row-major n x n a is symmetric by the rule of
+ * MM_LINALG_SYM_TOL, else 0 with the first offending pair (0-based, i < j)
+ * in *bad_i, *bad_j (each may be NULL).  Cannot fail. */
+int mm_linalg_is_symmetric(int n, const double *a, int *bad_i, int *bad_j);
 
 /* MM_OK if all count values of a are finite, else MM_EVALUE naming param and
  * the first bad entry (by 0-based flat index).  Cannot fail otherwise. */
@@ -207,5 +217,71 @@ int mm_linalg_sbgv_first(int n, int kd, int nev, const double *Kb,
  * not converge), MM_ENOMEM, MM_EINTERNAL. */
 int mm_linalg_geev(int n, const double *A, double *wr, double *wi, double *VR,
                    mm_error *err);
+
+/* ---- double-double: small problems with every digit, and its bound -------- */
+/*
+ * The same problems, solved in double-double arithmetic (~32 digits,
+ * solvers/mm_dd.h) by simple methods (Jacobi rotations, Gaussian
+ * elimination) and returned rounded to double with an error bound that
+ * comes from residuals computed from the given data, not from trust in the
+ * method.  For the learner's exercises (n <= 12), where a printed number
+ * must be right to its last digit, and as an independent reference for the
+ * LAPACK results above.  Work: n^3 operations in software arithmetic, about
+ * 1 ms at n = 12 (24 for an SVD).  Thread-safe, no LAPACK.
+ *
+ * A bound err for a value x means |x - x_exact| <= err, where x_exact is
+ * the exact answer for the given doubles, up to the double-double rounding
+ * of the bound's own computation (a relative 1e-30 of it).  A double
+ * rounding of x_exact is in every bound, so err is never below half an ulp
+ * of x unless x is exact.
+ */
+
+#define MM_LINALG_DD_MAX_N 32     /* largest order (m + n for the SVD) */
+
+/* Eigenvalues of the symmetric pencil K v = lambda M v (M symmetric
+ * positive definite; M NULL means the identity), ascending, each with its
+ * bound lambda_err[j].  V (n x n, or NULL) receives the modes, rounded to
+ * double, M-normalised, signs as in mm_linalg_sygv.  Fails with MM_ERANGE
+ * (n outside 1..MM_LINALG_DD_MAX_N, "n"), MM_EVALUE (non-finite or not
+ * symmetric, "K"/"M"), MM_ESINGULAR (M not positive definite to ~32
+ * digits, "M"), MM_ENOMEM. */
+int mm_linalg_sygv_dd(int n, const double *K, const double *M, double *lambda, double *lambda_err,
+                      double *V, mm_error *err);
+
+/* Singular values of the m x n A, descending, into s[min(m,n)], each with
+ * its bound s_err (s >= 0; a singular value whose bound reaches 0 may be
+ * 0).  Needs m + n <= MM_LINALG_DD_MAX_N.  Fails with MM_ERANGE ("A"),
+ * MM_EVALUE ("A"), MM_ENOMEM. */
+int mm_linalg_svdvals_dd(int m, int n, const double *A, double *s, double *s_err, mm_error *err);
+
+/* x = A^-1 b for the n x n A, rounded to double, each x[i] with its bound
+ * x_err[i] = ||b - A x_dd||_2 / sigma_min + |x[i] - x_dd[i]|, where
+ * sigma_min > 0 is a LOWER BOUND of A's smallest singular value (from
+ * mm_linalg_svdvals_dd: s[n-1] - s_err[n-1]).  *residual (may be NULL)
+ * receives ||b - A x_dd||_2 with its rounding.  Fails with MM_ERANGE,
+ * MM_EVALUE, MM_ESINGULAR (sigma_min <= 0, or a zero pivot, "A"),
+ * MM_ENONFINITE ("b"), MM_ENOMEM. */
+int mm_linalg_solve_dd(int n, const double *A, const double *b, double sigma_min, double *x,
+                       double *x_err, double *residual, mm_error *err);
+
+/* r = b - A x for the n x n A, computed in double-double and rounded: the
+ * true residual of the stored x to ~1e-32 of mag, where mag[i] =
+ * sum_j |A_ij x_j| + |b_i| (also returned: the size of the terms, the
+ * scale of every rounding bound).  Cannot fail. */
+void mm_linalg_residual_dd(int n, const double *A, const double *x, const double *b, double *r, double *mag);
+
+/* ||v||_2 without overflow or underflow in the squares.  Cannot fail. */
+double mm_linalg_norm2(int n, const double *v);
+
+/* For eigenpairs printed in double (lambda with its bound lambda_err, V the
+ * M-normalised modes of the pencil K, M, n x n): how far they are from
+ * eq. K v = lambda M v and from V^T M V = I, each relative to what rounding
+ * the modes and eigenvalues to 16 digits explains (computed in
+ * double-double, component by component):
+ *   *res  = max |K v - lambda M v|_i / (u (|K||v| + |lambda||M||v|)_i + lambda_err (|M||v|)_i),
+ *   *orth = max |v_j^T M v_l - delta_jl| / (2 u |v_j|^T |M| |v_l|);
+ * both at most 1 for modes right to their last digit.  Cannot fail. */
+void mm_linalg_sygv_rounding(int n, const double *K, const double *M, const double *lambda,
+                             const double *lambda_err, const double *V, double *res, double *orth);
 
 #endif

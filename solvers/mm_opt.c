@@ -1,6 +1,7 @@
 /* mm_opt.c — golden-section search (see mm_opt.h). */
 #include "mm_opt.h"
 
+#include <float.h>
 #include <math.h>
 
 int mm_opt_golden_max(mm_opt_fn f, void *params, double a, double b, double tol, int max_evals,
@@ -43,4 +44,48 @@ int mm_opt_golden_max(mm_opt_fn f, void *params, double a, double b, double tol,
     res->bracket = b - a;
     res->evals = evals;
     return MM_OK;
+}
+
+typedef struct signed_fn {
+    mm_opt_fn_err f;
+    void *params;
+    double s;
+} signed_fn;
+
+static int signed_eval(double x, double *fx, void *p)
+{
+    const signed_fn *g = p;
+    *fx = g->s * g->f(x, NULL, g->params);
+    return 0;
+}
+
+void mm_opt_refine_extreme(mm_opt_fn_err f, void *params, double s, double x0, double h, double a, double b,
+                           mm_opt_extreme *out)
+{
+    enum { FINE = 32 };
+    double lo = fmax(a, x0 - h), hi = fmin(b, x0 + h), best = x0, fbest = s * f(x0, NULL, params);
+    for (int k = 0; k <= FINE && hi > lo; k++) {
+        double y = k == FINE ? hi : lo + (hi - lo) * k / FINE, v = s * f(y, NULL, params);
+        if (isfinite(v) && v > fbest)
+            best = y, fbest = v;
+    }
+    h = (hi - lo) / FINE;
+    lo = fmax(a, best - h), hi = fmin(b, best + h);
+    mm_opt_result r = {best, fbest, 0, 0};
+    signed_fn g = {f, params, s};
+    if (hi > lo)
+        mm_opt_golden_max(signed_eval, &g, lo, hi, 4 * DBL_EPSILON * fmax(fabs(lo), fabs(hi)) + DBL_MIN, 200, &r,
+                          NULL);
+    if (!(r.fx >= fbest))                           /* golden section lost to the scan (an end maximum) */
+        r.x = best, r.bracket = 0;
+    double ef = 0, v = f(r.x, &ef, params);
+    ef = fmax(ef, v != 0 ? ldexp(1, ilogb(v) - 52) : 0);
+    /* f'' by a second difference on a scale H well above the noise */
+    double H = fmax(h / 4, 1e-6 * fmax(fabs(r.x), h)), fl = f(r.x - H, NULL, params), fr = f(r.x + H, NULL, params);
+    double f2 = fabs(fl - 2 * v + fr) / (H * H);
+    double band = f2 > 0 ? sqrt(4 * ef / f2) : (hi - lo);
+    out->x = r.x;
+    out->fx = v;
+    out->x_err = fmax(r.bracket, fmin(band, hi - lo)) + 2 * DBL_EPSILON * fabs(r.x);
+    out->fx_err = ef + 0.5 * f2 * out->x_err * out->x_err;
 }

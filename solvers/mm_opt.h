@@ -37,4 +37,31 @@ typedef struct mm_opt_result {
 int mm_opt_golden_max(mm_opt_fn f, void *params, double a, double b, double tol, int max_evals,
                       mm_opt_result *res, mm_error *err);
 
+/* ---- refining a sampled extreme ---------------------------------------------- */
+
+/* f(x), and when err is not NULL a bound on its rounding error into *err
+ * (0 if unknown); NaN where f is not defined. */
+typedef double (*mm_opt_fn_err)(double x, double *err, void *params);
+
+typedef struct mm_opt_extreme {
+    double x, fx;      /* where s f is largest near x0, and f there */
+    double x_err;      /* estimated error of x */
+    double fx_err;     /* estimated error of fx */
+} mm_opt_extreme;
+
+/* The extreme of s f (s = +1 the largest, -1 the smallest value) near a
+ * sample x0 of a scan with spacing h, within [a, b]: a finer scan of
+ * [x0 - h, x0 + h] (the window may hold more than one bump), then golden
+ * section between the best point's neighbours.  x_err is the final bracket
+ * or the flat band where the rounding of f hides the peak, whichever is
+ * larger: golden section compares two values, each off by up to err_f
+ * (never less than an ulp), so it cannot tell points apart where
+ * |f''| dx^2 / 2 < 2 err_f, i.e. within dx = sqrt(4 err_f / |f''|), with
+ * f'' from a second difference on a scale well above the noise; fx_err is
+ * err_f + |f''| x_err^2 / 2.  Costs about 40 + 2 log(h / x_err) / log(1.618)
+ * evaluations of f.  If golden section cannot beat the scan (an extreme at
+ * an end of [a, b]) the best sample is returned. */
+void mm_opt_refine_extreme(mm_opt_fn_err f, void *params, double s, double x0, double h, double a, double b,
+                           mm_opt_extreme *out);
+
 #endif

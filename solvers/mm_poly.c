@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mm_dd.h"
 #include "mm_linalg.h"
 
 #define U_ROUND (DBL_EPSILON / 2)   /* unit roundoff u */
@@ -36,35 +37,33 @@ double mm_poly_eval(int ncoef, const double *p, double x, double *err_bound)
     return y;
 }
 
-/* ---- double-double arithmetic (Dekker, Knuth; Ogita-Rump-Oishi) ---------- */
-
-typedef struct dd { double hi, lo; } dd;
-
-
-
-static dd two_sum(double a, double b)
+double mm_poly_backward_error(int ncoef, const double *p, double zr, double zi)
 {
-    double s = a + b, bb = s - a;
-    return (dd){s, (a - (s - bb)) + (b - bb)};
-}
-
-static dd fast_two_sum(double a, double b)     /* needs |a| >= |b| */
-{
-    double s = a + b;
-    return (dd){s, b - (s - a)};
-}
-
-static dd dd_add(dd a, dd b)
-{
-    dd s = two_sum(a.hi, b.hi);
-    return fast_two_sum(s.hi, s.lo + a.lo + b.lo);
-}
-
-static dd dd_mul_d(dd a, double b)
-{
-    double p = a.hi * b;
-    double e = fma(a.hi, b, -p) + a.lo * b;    /* fma: exact product error */
-    return fast_two_sum(p, e);
+    assert(ncoef >= 1 && p);
+    const int d = ncoef - 1;
+    double r = hypot(zr, zi), yr, yi = 0, s;
+    if (r <= 1) {
+        yr = p[0];
+        s = fabs(p[0]);
+        for (int k = 1; k <= d; k++) {
+            double tr = yr * zr - yi * zi + p[k];
+            yi = yr * zi + yi * zr;
+            yr = tr;
+            s = s * r + fabs(p[k]);
+        }
+    } else {
+        double wr = zr / r / r, wi = -zi / r / r;  /* 1/z, without forming r^2 */
+        yr = p[d];
+        s = fabs(p[d]);
+        for (int k = d - 1; k >= 0; k--) {
+            double tr = yr * wr - yi * wi + p[k];
+            yi = yr * wi + yi * wr;
+            yr = tr;
+            s = s / r + fabs(p[k]);
+        }
+    }
+    double pz = hypot(yr, yi);
+    return s > 0 ? pz / s : pz;
 }
 
 /* p(z) for complex z = zr + i zi, Horner in double-double: the result is
@@ -73,11 +72,11 @@ static dd dd_mul_d(dd a, double b)
 static double complex eval_dd(int d, const double *q, double complex z)
 {
     double zr = creal(z), zi = cimag(z);
-    dd yr = {q[0], 0.0}, yi = {0.0, 0.0};
+    mm_dd yr = {q[0], 0.0}, yi = {0.0, 0.0};
     for (int k = 1; k <= d; k++) {
-        dd nr = dd_add(dd_mul_d(yr, zr), dd_mul_d(yi, -zi));
-        dd ni = dd_add(dd_mul_d(yr, zi), dd_mul_d(yi, zr));
-        yr = dd_add(nr, (dd){q[k], 0.0});
+        mm_dd nr = mm_dd_add(mm_dd_mul_d(yr, zr), mm_dd_mul_d(yi, -zi));
+        mm_dd ni = mm_dd_add(mm_dd_mul_d(yr, zi), mm_dd_mul_d(yi, zr));
+        yr = mm_dd_add(nr, mm_dd_from(q[k]));
         yi = ni;
     }
     return mm_cmplx(yr.hi + yr.lo, yi.hi + yi.lo);
@@ -426,5 +425,260 @@ out:
     if (info)
         *info = inf;
     free(sv); free(c); free(V); free(xs);
+    return rc;
+}
+
+int mm_poly_fit_values(int npts, const double *x, const double *y, int degree, double mu, double scale,
+                       double *fit_svd, double *fit_ne, double *bnorm_svd, double *bnorm_ne, mm_error *err)
+{
+    int rc;
+    assert(x && y && fit_svd && fit_ne && bnorm_svd && bnorm_ne);
+    if (npts < 1 || npts > MM_POLY_MAX_POINTS || degree < 0 || degree > MM_POLY_MAX_FIT_DEGREE || !(scale > 0))
+        return mm_error_set(err, MM_ERANGE, "degree", "bad sizes for a fit (%d points, degree %d)", npts, degree);
+    const int n = npts, m = degree + 1;
+    double *t = malloc((size_t)n * sizeof *t), *V = malloc((size_t)n * (size_t)m * sizeof *V);
+    double *N = calloc((size_t)m * (size_t)m, sizeof *N), *rhs = calloc((size_t)m, sizeof *rhs);
+    double *a = malloc((size_t)m * sizeof *a), *b = malloc((size_t)m * sizeof *b), *pw = malloc(2 * (size_t)m * sizeof *pw);
+    if (!t || !V || !N || !rhs || !a || !b || !pw) {
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory for polyfit");
+        goto out;
+    }
+    for (int i = 0; i < n; i++) {                    /* V (highest power first), A^T A and A^T y */
+        t[i] = (x[i] - mu) / scale;
+        pw[0] = 1;
+        for (int k = 1; k <= 2 * degree; k++)
+            pw[k] = pw[k - 1] * t[i];
+        for (int k = 0; k <= degree; k++)
+            V[(size_t)i * m + (size_t)(degree - k)] = pw[k];
+        for (int j = 0; j <= degree; j++) {
+            rhs[j] += pw[j] * y[i];
+            for (int k = 0; k <= degree; k++)
+                N[j * m + k] += pw[j + k];
+        }
+    }
+    mm_linalg_solve_info si;
+    if ((rc = mm_linalg_lstsq(n, m, 1, V, y, 0.0, b, NULL, NULL, NULL, err)) ||
+        (rc = mm_linalg_solve(m, 1, N, rhs, a, &si, err)))
+        goto out;
+    *bnorm_svd = *bnorm_ne = 0;
+    for (int k = 0; k < m; k++) {
+        *bnorm_svd += b[k] * b[k];
+        *bnorm_ne += a[k] * a[k];
+    }
+    *bnorm_svd = sqrt(*bnorm_svd);
+    *bnorm_ne = sqrt(*bnorm_ne);
+    for (int i = 0; i < n; i++) {                    /* Horner in t; a is lowest power first */
+        double vs = 0, vn = 0;
+        for (int k = 0; k <= degree; k++) {
+            vs = vs * t[i] + b[k];
+            vn = vn * t[i] + a[degree - k];
+        }
+        fit_svd[i] = vs;
+        fit_ne[i] = vn;
+    }
+    rc = MM_OK;
+out:
+    free(pw); free(b); free(a); free(rhs); free(N); free(V); free(t);
+    return rc;
+}
+
+/* ==== the same fit in double-double ============================================ */
+
+/* |x| of a dd as a double */
+static double dabs(mm_dd a) { return fabs(mm_dd_val(a)); }
+
+int mm_poly_fit_dd(int npts, const double *x, const double *y, int degree, double *c, double *c_err,
+                   double *fit, double *fit_err, double *se, double *bt, mm_poly_fit_dd_info *info,
+                   mm_error *err)
+{
+    int rc;
+    assert(x && y && c && c_err && fit && fit_err && info);
+    if (npts < 1 || npts > MM_POLY_MAX_POINTS)
+        return mm_error_set(err, MM_ERANGE, "x", "bad parameter 'x' (must have 1 to %d points, got %d)",
+                            MM_POLY_MAX_POINTS, npts);
+    if (degree < 0 || degree > MM_POLY_MAX_FIT_DD_DEGREE || degree >= npts)
+        return mm_error_set(err, MM_ERANGE, "degree", "bad parameter 'degree' (must be between 0 and %d and "
+                            "below the number of points, got %d)", MM_POLY_MAX_FIT_DD_DEGREE, degree);
+    if ((rc = mm_linalg_check_finite("x", (size_t)npts, x, err)) ||
+        (rc = mm_linalg_check_finite("y", (size_t)npts, y, err)))
+        return rc;
+    const int n = npts, m = degree + 1;
+    mm_dd *a = malloc((size_t)n * (size_t)(m + 1) * sizeof *a), *t = malloc((size_t)n * sizeof *t);
+    mm_dd *b = malloc((size_t)m * sizeof *b), *T = malloc((size_t)m * (size_t)m * sizeof *T);
+    mm_dd *G = malloc((size_t)m * (size_t)m * sizeof *G), *P = malloc((size_t)(m + 1) * sizeof *P);
+    mm_dd *fv = malloc((size_t)n * sizeof *fv);
+    double *A = malloc((size_t)m * (size_t)m * sizeof *A), *sv = malloc(2 * (size_t)m * sizeof *sv);
+    mm_poly_fit_dd_info inf = {0};
+    if (!a || !t || !b || !T || !G || !P || !A || !sv || !fv) {
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory for polyfit");
+        goto out;
+    }
+    /* t = (x - mu) / scale exactly: x - mu as a dd (TwoSum), scale a power of 2 */
+    double mu = 0, dev = 0;
+    for (int i = 0; i < n; i++)
+        mu += x[i];
+    mu /= n;
+    for (int i = 0; i < n; i++)
+        dev = fmax(dev, fabs(x[i] - mu));
+    double scale = dev > 0 ? ldexp(1, ilogb(dev) + 1) : 1, inv = 1 / scale;
+    inf.mu = mu;
+    inf.scale = scale;
+    for (int i = 0; i < n; i++)
+        t[i] = mm_dd_mul_d(mm_dd_two_sum(x[i], -mu), inv);
+    /* [A | y], A(i, j) = t_i^(degree - j) */
+    const int w = m + 1;
+    for (int i = 0; i < n; i++) {
+        mm_dd v = mm_dd_from(1);
+        for (int j = degree; j >= 0; j--) {
+            a[i * w + j] = v;
+            v = mm_dd_mul(v, t[i]);
+        }
+        a[i * w + m] = mm_dd_from(y[i]);
+    }
+    /* Householder QR of A, applied to y as well */
+    for (int k = 0; k < m; k++) {
+        mm_dd s2 = mm_dd_from(0);
+        for (int i = k; i < n; i++)
+            s2 = mm_dd_add(s2, mm_dd_mul(a[i * w + k], a[i * w + k]));
+        mm_dd nrm = mm_dd_sqrt(s2);
+        if (nrm.hi == 0) {
+            rc = mm_error_set(err, MM_ESINGULAR, "x", "the points do not fix a polynomial of degree %d", degree);
+            goto out;
+        }
+        mm_dd alpha = a[k * w + k].hi >= 0 ? mm_dd_neg(nrm) : nrm;
+        mm_dd vk = mm_dd_sub(a[k * w + k], alpha);           /* v = x - alpha e1 */
+        mm_dd vtv = mm_dd_sub(mm_dd_mul(nrm, nrm), mm_dd_mul(alpha, a[k * w + k]));
+        vtv = mm_dd_mul_d(vtv, 2);                           /* v^T v = 2 (|x|^2 - alpha x_1) */
+        a[k * w + k] = vk;
+        for (int j = k + 1; j < w; j++) {
+            mm_dd d = mm_dd_from(0);
+            for (int i = k; i < n; i++)
+                d = mm_dd_add(d, mm_dd_mul(a[i * w + k], a[i * w + j]));
+            mm_dd f = mm_dd_div(mm_dd_mul_d(d, 2), vtv);
+            for (int i = k; i < n; i++)
+                a[i * w + j] = mm_dd_sub(a[i * w + j], mm_dd_mul(f, a[i * w + k]));
+        }
+        a[k * w + k] = alpha;                                 /* R(k, k) */
+    }
+    /* R b = (Q^T y)_1..m */
+    for (int j = m - 1; j >= 0; j--) {
+        mm_dd s = a[j * w + m];
+        for (int k = j + 1; k < m; k++)
+            s = mm_dd_sub(s, mm_dd_mul(a[j * w + k], b[k]));
+        b[j] = mm_dd_div(s, a[j * w + j]);
+    }
+    /* cond of the Vandermonde matrix in (x - mu) / dev: R with its columns
+     * scaled by (scale / dev)^(power) */
+    double f = dev > 0 ? scale / dev : 1;                  /* t / ((x - mu) / dev) */
+    for (int i = 0; i < m; i++)
+        for (int j = 0; j < m; j++)
+            A[i * m + j] = j >= i ? mm_dd_val(a[i * w + j]) * pow(f, degree - j) : 0;
+    if ((rc = mm_linalg_svdvals_dd(m, m, A, sv, sv + m, err)))
+        goto out;
+    double smin = sv[m - 1] - sv[2 * m - 1];
+    if (!(smin > 0)) {
+        rc = mm_error_set(err, MM_ESINGULAR, "x", "the points do not fix a polynomial of degree %d (the "
+                          "least-squares matrix is singular to 32 digits)", degree);
+        goto out;
+    }
+    inf.cond = sv[0] / sv[m - 1];
+    inf.cond_err = (sv[0] + sv[m]) / smin - inf.cond + 2 * DBL_EPSILON * inf.cond;
+    /* the same in the t actually used, for the bounds (R itself, rounded:
+     * its singular values are those of A to ~1e-16, a 1 % margin covers it) */
+    for (int i = 0; i < m; i++)
+        for (int j = 0; j < m; j++)
+            A[i * m + j] = j >= i ? mm_dd_val(a[i * w + j]) : 0;
+    if ((rc = mm_linalg_svdvals_dd(m, m, A, sv, sv + m, err)))
+        goto out;
+    double kappa = 1.01 * sv[0] / (sv[m - 1] - sv[2 * m - 1]), smax = 0.99 * sv[0];
+    /* fitted values and residuals in dd */
+    double rss = 0, ynorm = 0, bnorm = 0;
+    for (int j = 0; j < m; j++)
+        bnorm += dabs(b[j]) * dabs(b[j]);
+    bnorm = sqrt(bnorm);
+    for (int i = 0; i < n; i++) {
+        mm_dd v = b[0];
+        for (int j = 1; j < m; j++)
+            v = mm_dd_add(mm_dd_mul(v, t[i]), b[j]);
+        fv[i] = v;
+        mm_dd r = mm_dd_sub(mm_dd_from(y[i]), v);
+        rss += dabs(r) * dabs(r);
+        ynorm += y[i] * y[i];
+    }
+    ynorm = sqrt(ynorm);
+    /* Wedin: ||db|| <= kappa / ||A|| (||dA|| (||b|| + kappa ||r|| / ||A||) + ||dy||) with the
+     * backward error of Householder QR, ||dA|| <= 10 n m eps_dd ||A|| and ||dy|| likewise */
+    double gam = 10.0 * n * m * MM_DD_EPS;
+    double db = 2 * kappa * gam * (bnorm + kappa * sqrt(rss) / smax + ynorm / smax);
+    for (int i = 0; i < n; i++) {
+        double tp = 0, ti = dabs(t[i]), pw = 1, mag = 0;
+        for (int j = degree; j >= 0; j--) {
+            tp += pw * pw;
+            mag += dabs(b[j]) * pw;
+            pw *= ti;
+        }
+        fit[i] = mm_dd_val(fv[i]);
+        fit_err[i] = db * sqrt(tp) + 2 * m * MM_DD_EPS * mag + dabs(mm_dd_sub(fv[i], mm_dd_from(fit[i])));
+    }
+    inf.rms = sqrt(rss / n);
+    double e2 = 0;
+    for (int i = 0; i < n; i++)
+        e2 += fit_err[i] * fit_err[i];
+    inf.rms_err = sqrt(e2 / n) + 2 * DBL_EPSILON * inf.rms;
+    /* expand to powers of x: T(j, k) = coefficient of x^(degree-k) in t^(degree-j),
+     * t = x / scale - mu / scale; P holds t^p, highest power first, right-aligned */
+    mm_dd a1 = mm_dd_from(inv), a0 = mm_dd_mul_d(mm_dd_from(-mu), inv);
+    for (int k = 0; k <= m; k++)
+        P[k] = mm_dd_from(0);
+    P[m - 1] = mm_dd_from(1);                                 /* t^0 */
+    for (int p = 0; p <= degree; p++) {
+        int j = degree - p;                                   /* row of T: t^p is b[j]'s basis */
+        for (int k = 0; k < m; k++)
+            T[j * m + k] = P[k];
+        for (int k = 0; k < m; k++) {                         /* P <- P (a1 x + a0) */
+            mm_dd next = k + 1 < m ? P[k + 1] : mm_dd_from(0);
+            P[k] = mm_dd_add(mm_dd_mul(a1, next), mm_dd_mul(a0, P[k]));
+        }
+    }
+    for (int k = 0; k < m; k++) {
+        mm_dd s = mm_dd_from(0);
+        double e = 0;
+        for (int j = 0; j < m; j++) {
+            s = mm_dd_add(s, mm_dd_mul(b[j], T[j * m + k]));
+            /* |T| from binomials of |mu| / scale: the rounding of T itself is
+             * a relative (degree + 2) eps_dd of |T| */
+            e += dabs(T[j * m + k]) * (db + 4 * (degree + 3) * MM_DD_EPS * dabs(b[j]));
+        }
+        c[k] = mm_dd_val(s);
+        c_err[k] = 1.01 * e + dabs(mm_dd_sub(s, mm_dd_from(c[k])));
+        if (!isfinite(c[k]) || !isfinite(c_err[k])) {
+            rc = mm_error_set(err, MM_ENONFINITE, "x", "the coefficients of powers of x overflow");
+            goto out;
+        }
+    }
+    if (bt)
+        for (int j = 0; j < m; j++)
+            bt[j] = mm_dd_val(b[j]);
+    /* standard errors: Cov(c) = sigma^2 T^T R^-1 R^-T T, row k of T^T R^-1 */
+    inf.dof = n - m;
+    if (se) {
+        double sigma = inf.dof > 0 ? sqrt(rss / inf.dof) : 0;
+        for (int k = 0; k < m; k++) {                         /* G = (R^-T T)(:, k): solve R^T g = T(:, k) */
+            for (int j = 0; j < m; j++) {
+                mm_dd s = T[j * m + k];
+                for (int i = 0; i < j; i++)
+                    s = mm_dd_sub(s, mm_dd_mul(a[i * w + j], G[i * m + k]));
+                G[j * m + k] = mm_dd_div(s, a[j * w + j]);
+            }
+            double q = 0;
+            for (int j = 0; j < m; j++)
+                q += dabs(G[j * m + k]) * dabs(G[j * m + k]);
+            se[k] = sigma * sqrt(q);
+        }
+    }
+    rc = MM_OK;
+out:
+    *info = inf;
+    free(fv); free(sv); free(A); free(P); free(G); free(T); free(b); free(t); free(a);
     return rc;
 }

@@ -31,6 +31,14 @@
  * (non-finite input gives a non-finite result). */
 double mm_poly_eval(int ncoef, const double *p, double x, double *err_bound);
 
+/* The backward error of z = zr + i zi as a root of p: |p(z)| divided by
+ * sum |p_k| |z|^(d-k) (the most a relative change of eps in every p_k can
+ * move p(z)), both computed divided by max(1, |z|)^d so that nothing
+ * overflows for large roots (for |z| > 1 Horner runs on the reversed
+ * coefficients in 1/z).  0 <= result; a few eps for a root computed to
+ * working precision.  |p(z)| itself when every coefficient is zero. */
+double mm_poly_backward_error(int ncoef, const double *p, double zr, double zi);
+
 /* ---- roots ------------------------------------------------------------------ */
 
 enum {
@@ -104,5 +112,52 @@ typedef struct mm_poly_fit_info {
  *   MM_ENOCONV, MM_ENOMEM, MM_EINTERNAL from the least-squares solver. */
 int mm_poly_fit(int npts, const double *x, const double *y, int degree,
                 double *p, mm_poly_fit_info *info, mm_error *err);
+
+/* The fitted values p(x_i) of the least-squares polynomial, in double, two
+ * ways in t = (x - mu) / scale: fit_svd by the SVD (as mm_poly_fit does),
+ * fit_ne by the normal equations (A^T A) a = A^T y solved by LU, whose
+ * error grows with cond(A)^2 instead of cond(A).  *bnorm_svd, *bnorm_ne
+ * receive the 2-norms of the two coefficient vectors in t (for error
+ * bounds).  A second solution for checks; npts, degree as mm_poly_fit
+ * (degree <= MM_POLY_MAX_FIT_DEGREE).  Fails with MM_ERANGE, MM_EVALUE,
+ * MM_ESINGULAR (A^T A singular in double), MM_ENOMEM. */
+int mm_poly_fit_values(int npts, const double *x, const double *y, int degree, double mu, double scale,
+                       double *fit_svd, double *fit_ne, double *bnorm_svd, double *bnorm_ne, mm_error *err);
+
+/* ---- the same fit, every digit: double-double ----------------------------- */
+
+#define MM_POLY_MAX_FIT_DD_DEGREE 15   /* largest degree for mm_poly_fit_dd */
+
+typedef struct mm_poly_fit_dd_info {
+    double mu;         /* t = (x - mu) / scale: mu the mean of x (as computed in double) */
+    double scale;      /* a power of 2 >= max |x - mu| (1 if 0), so t is exact in double-double */
+    double cond, cond_err;  /* 2-norm condition number of the Vandermonde matrix in
+                               (x - mu) / max |x - mu|, with its bound */
+    double rms, rms_err;    /* sqrt(sum r_i^2 / n) with its bound */
+    int dof;           /* degrees of freedom left, npts - degree - 1 */
+} mm_poly_fit_dd_info;
+
+/* The least-squares polynomial of mm_poly_fit, computed in double-double
+ * (Householder QR on the Vandermonde matrix in t, then expanded to powers
+ * of x), each number rounded to double with its bound:
+ *   c[degree + 1], c_err: coefficients, highest power first, as MATLAB's
+ *     polyfit; |c[k] - c_exact[k]| <= c_err[k], where c_exact is the exact
+ *     least-squares solution for the given doubles;
+ *   fit[npts], fit_err: p(x_i), and the same bound for y_i - p(x_i);
+ *   se[degree + 1] (may be NULL): the standard error of each coefficient
+ *     from the scatter of the data, sigma sqrt(diag((A^T A)^-1)) with
+ *     sigma^2 = sum r_i^2 / dof (0 when dof = 0): a statistical estimate,
+ *     not a rounding error;
+ *   bt[degree + 1] (may be NULL): the coefficients in t, highest first, for
+ *     evaluating p(x) = sum bt t^k without the cancellation of powers of x.
+ * The bounds of the QR step use the standard backward error of Householder
+ * QR (a multiple n m of the double-double unit) through Wedin's
+ * perturbation bound with the certified cond; they are far below a double's
+ * rounding unless cond(A) passes ~1e15 or the powers of x cancel.
+ * Fails as mm_poly_fit (degree limit MM_POLY_MAX_FIT_DD_DEGREE), and with
+ * MM_ESINGULAR ("x") when the Vandermonde matrix is singular to ~32 digits. */
+int mm_poly_fit_dd(int npts, const double *x, const double *y, int degree, double *c, double *c_err,
+                   double *fit, double *fit_err, double *se, double *bt, mm_poly_fit_dd_info *info,
+                   mm_error *err);
 
 #endif

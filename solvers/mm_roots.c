@@ -12,7 +12,7 @@ void mm_roots_options_init(mm_roots_options *opt)
     assert(opt);
     opt->n = 100;
     opt->tol = 1e-6;
-    opt->max_iter = 100;
+    opt->max_iter = 400;
     opt->suspect = 1e-3;
 }
 
@@ -82,12 +82,24 @@ int mm_roots_brent(mm_roots_fn f, void *params, double a, double b,
      * the secant through a, b when a == c), and falls back to bisection
      * whenever the interpolated step is not safely inside the bracket or
      * does not shrink fast enough; so it is never slower than bisection by
-     * more than a bounded factor, and superlinear near a simple root. */
-    double c = a, fc = fa, d = b - a, e = d;
+     * more than a bounded factor, and superlinear near a simple root.
+     * Brent's own safeguard still lets the bracket shrink slowly for a long
+     * time near a multiple root ((x-1)^3 needed 109-146 steps to 1e-12):
+     * here, when three steps in a row have not halved the bracket, the next
+     * one bisects, so every four steps at least halve it and 4 log2(width /
+     * tol) + 4 steps always suffice. */
+    double c = a, fc = fa, d = b - a, e = d, checkpoint = fabs(b - a);
+    int slow = 0;
     for (int it = 0;; it++) {
         if ((fb > 0) == (fc > 0)) {          /* root now in [a, b]: rename */
             c = a; fc = fa;
             d = e = b - a;
+        }
+        if (fabs(c - b) <= 0.5 * checkpoint) {
+            checkpoint = fabs(c - b);
+            slow = 0;
+        } else {
+            slow++;
         }
         if (fabs(fc) < fabs(fb)) {           /* keep b the better end */
             a = b; b = c; c = a;
@@ -108,7 +120,10 @@ int mm_roots_brent(mm_roots_fn f, void *params, double a, double b,
                                 max_iter, b < c ? b : c, b < c ? c : b);
         if (iter)
             ++*iter;
-        if (fabs(e) >= tol1 && fabs(fa) > fabs(fb)) {
+        if (slow >= 3) {
+            d = e = xm;                      /* forced bisection */
+            slow = 0;
+        } else if (fabs(e) >= tol1 && fabs(fa) > fabs(fb)) {
             double s = fb / fa, p, q;
             if (a == c) {                    /* secant */
                 p = 2 * xm * s;
@@ -145,6 +160,23 @@ int mm_roots_brent(mm_roots_fn f, void *params, double a, double b,
 
 /* ==== the scan ================================================================ */
 
+/* f, recording the largest finite |f| it returns: a jump keeps |f| large
+ * everywhere in the bracket, a root only near its ends */
+typedef struct watch {
+    mm_roots_fn f;
+    void *params;
+    double fmax;
+} watch;
+
+static int watched(double x, double *fx, void *p)
+{
+    watch *w = p;
+    int rc = w->f(x, fx, w->params);
+    if (rc == 0 && isfinite(*fx))
+        w->fmax = fmax(w->fmax, fabs(*fx));
+    return rc;
+}
+
 int mm_roots_solve(const mm_roots_problem *prob, const mm_roots_options *opt,
                    mm_roots_result *res, mm_error *err)
 {
@@ -172,13 +204,14 @@ int mm_roots_solve(const mm_roots_problem *prob, const mm_roots_options *opt,
         if (f1 == 0.0) {                     /* a root on the grid: once */
             if (res->nroots >= res->cap)
                 goto full;
-            res->roots[res->nroots++] = (mm_roots_root){x1, 0.0, 0.0, 0, MM_ROOTS_EXACT};
+            res->roots[res->nroots++] = (mm_roots_root){x1, 0.0, 0.0, 0, MM_ROOTS_EXACT, i};
         } else if (i > 0 && isfinite(f0) && isfinite(f1) && ((f0 < 0) != (f1 < 0))
                    && f0 != 0.0) {
             double x, fx, w;
             int iter = 0;
             mm_error local;
-            rc = mm_roots_brent(prob->f, prob->params, x0, x1, f0, f1, opt->tol,
+            watch wt = {prob->f, prob->params, fmax(fabs(f0), fabs(f1))};
+            rc = mm_roots_brent(watched, &wt, x0, x1, f0, f1, opt->tol,
                                 opt->max_iter, &x, &fx, &w, &iter, &res->nevals,
                                 &local);
             if (iter > res->max_iterations)
@@ -198,8 +231,10 @@ int mm_roots_solve(const mm_roots_problem *prob, const mm_roots_options *opt,
                 } else {
                     if (res->nroots >= res->cap)
                         goto full;
-                    int flags = fabs(fx) > opt->suspect * fend ? MM_ROOTS_SUSPECT : 0;
-                    res->roots[res->nroots++] = (mm_roots_root){x, fx, w, iter, flags};
+                    /* a residual large beside every |f| met in the part:
+                     * f jumps through zero rather than crossing it */
+                    int flags = fabs(fx) > opt->suspect * wt.fmax ? MM_ROOTS_SUSPECT : 0;
+                    res->roots[res->nroots++] = (mm_roots_root){x, fx, w, iter, flags, i - 1};
                 }
             }
         } else if (i > 0 && (!isfinite(f0) || !isfinite(f1))) {
@@ -213,4 +248,48 @@ full:
     return mm_error_set(err, MM_ERANGE, "n",
                         "more than %d roots found; give more room or a shorter "
                         "interval", res->cap);
+}
+
+/* ==== bisection and the rounding band ============================================ */
+
+int mm_roots_bisect(mm_roots_fn f, void *params, double xl, double xr, double fl, double w, double *x,
+                    mm_error *err)
+{
+    assert(f && x);
+    for (int it = 0; it < 200 && xr - xl > w && xr - xl > 4 * DBL_EPSILON * fmax(fabs(xl), fabs(xr)); it++) {
+        double xm = xl + 0.5 * (xr - xl), fm;
+        int rc = call(f, params, xm, &fm, NULL, err);
+        if (rc)
+            return rc;
+        if (!isfinite(fm))
+            return mm_error_set(err, MM_ENONFINITE, "f", "the function is not finite at x = %.17g", xm);
+        if (fm == 0) {
+            *x = xm;
+            return MM_OK;
+        }
+        if ((fm < 0) == (fl < 0)) {
+            xl = xm;
+            fl = fm;
+        } else {
+            xr = xm;
+        }
+    }
+    *x = xl + 0.5 * (xr - xl);
+    return MM_OK;
+}
+
+double mm_roots_band(mm_roots_fn_err f, void *params, double x, double w, double lo, double hi)
+{
+    assert(f);
+    double worst = 0;
+    for (int side = -1; side <= 1; side += 2) {
+        double h = fmax(w, 4 * DBL_EPSILON * fabs(x) + DBL_MIN);
+        for (int it = 0; it < 80; it++, h *= 2) {
+            double y = x + side * h, fy, e;
+            if (y < lo || y > hi || f(y, &fy, &e, params) != 0 || !isfinite(fy) || fabs(fy) > e)
+                break;
+        }
+        worst = fmax(worst, h);
+    }
+    return worst;
 }

@@ -15,7 +15,7 @@
  *     poles[], not as a root (MATLAB's fzero uses the same test).  A jump
  *     that does not grow (sign(x)) cannot be told from a steep root; it is
  *     reported as a root with MM_ROOTS_SUSPECT set, because its residual
- *     |f(x)| is not small beside |f| at the ends of the part.
+ *     |f(x)| is not small beside the values of |f| met in the part.
  *   - Roots of EVEN multiplicity ((x-1)^2, a curve touching the axis) do
  *     not change sign and are NOT found; neither are two roots inside one
  *     part (no sign change, or they cancel).  Raise n to separate close
@@ -51,12 +51,14 @@ typedef struct mm_roots_options {
     double tol;       /* absolute tolerance on x (> 0): each root is within
                          tol of a sign change of f (up to rounding of x) */
     int max_iter;     /* Brent iterations per bracket, 1..MM_ROOTS_MAX_ITER */
-    double suspect;   /* MM_ROOTS_SUSPECT when |f(root)| > suspect *
-                         max(|f(x_i)|, |f(x_i+1)|) at the part's ends */
+    double suspect;   /* MM_ROOTS_SUSPECT when |f(root)| > suspect times the
+                         largest |f| met in the part (its ends and every
+                         point Brent's method evaluated) */
 } mm_roots_options;
 
-/* n = 100, tol = 1e-6 (API.md's defaults), max_iter = 100 (Brent needs at
- * most about (log2((b-a)/n/tol))^2 iterations; ~30 for these defaults),
+/* n = 100, tol = 1e-6 (API.md's defaults), max_iter = 400 (with the forced
+ * bisection of mm_roots_brent, 4 log2(width / tol) + 4 iterations always
+ * suffice: under 300 for any bracket of doubles down to tol = 1e-15),
  * suspect = 1e-3.  Cannot fail. */
 void mm_roots_options_init(mm_roots_options *opt);
 
@@ -71,6 +73,8 @@ typedef struct mm_roots_root {
     double width;     /* width of the final bracket (0 for an exact hit) */
     int iterations;   /* Brent iterations spent on it (0 for an exact hit) */
     int flags;        /* MM_ROOTS_* bits */
+    int part;         /* found in [x_part, x_part+1] of the scan (for an
+                         exact hit, part is the grid index of x) */
 } mm_roots_root;
 
 typedef struct mm_roots_result {
@@ -105,7 +109,9 @@ int mm_roots_solve(const mm_roots_problem *prob, const mm_roots_options *opt,
 
 /* Brent's method on one bracket: fa = f(a), fb = f(b) with fa * fb < 0
  * (assert).  Refines until the bracket is shorter than 2 (2 eps |x| + tol/2)
- * or f(x) == 0.  On MM_OK, *x is the end of the final bracket with the
+ * or f(x) == 0; a step bisects whenever the three before it did not halve
+ * the bracket, so 4 log2(|b - a| / tol) + 4 iterations always suffice.
+ * On MM_OK, *x is the end of the final bracket with the
  * smaller |f|, *fx its value, *width the bracket width.  *iter and *nevals
  * (may be NULL) are incremented by the iterations and calls made.
  * Fails with MM_ENOCONV after max_iter iterations, MM_ENONFINITE when f
@@ -114,5 +120,27 @@ int mm_roots_brent(mm_roots_fn f, void *params, double a, double b,
                    double fa, double fb, double tol, int max_iter,
                    double *x, double *fx, double *width, int *iter,
                    long *nevals, mm_error *err);
+
+/* Plain bisection of [xl, xr], where f changes sign (fl = f(xl)), down to
+ * width w or to the spacing of doubles: a sign change of f is then within
+ * w of *x (the final midpoint), whatever f does (eq. 3 of the theory of
+ * num-nonlinear-roots: after k halvings the bracket is (xr - xl) / 2^k).
+ * At most 200 halvings.  Fails with MM_ENONFINITE when f is not finite at
+ * a midpoint, or f's own code. */
+int mm_roots_bisect(mm_roots_fn f, void *params, double xl, double xr, double fl, double w, double *x,
+                    mm_error *err);
+
+/* f with an estimate of its rounding error at x: *fx, and *err >= 0 (inf
+ * when unknown).  Return 0, or nonzero to stop. */
+typedef int (*mm_roots_fn_err)(double x, double *fx, double *err, void *params);
+
+/* Where the sign of f is blurred by its rounding error around a root x:
+ * step out from x by h = max(w, 4 eps |x|), doubling, until f is
+ * certainly nonzero (|f| above its error) on each side, staying inside
+ * [lo, hi].  Returns the larger of the two distances reached: an estimate
+ * of how far the root of the exact f can be from x (at a root of
+ * multiplicity m, about (error of f)^(1/m)).  At most 80 doublings a side.
+ * Cannot fail (a stop or a non-finite value ends that side). */
+double mm_roots_band(mm_roots_fn_err f, void *params, double x, double w, double lo, double hi);
 
 #endif

@@ -6,9 +6,15 @@
  * or the n n-th roots of a — twice: once in rectangular form (eqs. 4-5 of
  * the theory: multiply out, i^2 = -1) and once in polar form (eq. 6: moduli
  * multiply, arguments add; de Moivre, eqs. 7-8), and see on the Argand plane
- * why multiplying by a number turns and stretches.  The two computations
- * check each other; |ab| = |a||b| and, for roots, w^n = a and the sum of the
- * n roots (zero) are further checks.
+ * why multiplying by a number turns and stretches.
+ * Method: the printed result is the rectangular one, computed in
+ * double-double (~32 digits) with a running bound of its error and rounded
+ * to double, so every digit printed is right (a part that is exactly 0 is
+ * printed 0); roots are refined by Newton's method on w^n = a, and where
+ * the exact root lies on an axis (a on an axis, eq. 8) its zero part is
+ * exact.  The polar form in double is the check, with its own error bound.
+ * Checks: rectangular against polar; |ab| = |a||b|, |a^n| = |a|^n;
+ * (a / b) b = a; for roots w^n = a and the sum of the n roots (zero).
  * Reference: E. Kreyszig, Advanced Engineering Mathematics, 10th ed., Wiley
  * 2011, sections 13.1-13.2.
  */
@@ -16,69 +22,60 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "mm_dd.h"
 #include "mm_exhelp.h"
+
+#define U (DBL_EPSILON / 2)
 
 enum { P_ARE, P_AIM, P_BRE, P_BIM, P_OP, P_N };
 enum { OP_SQUARE, OP_MULTIPLY, OP_DIVIDE, OP_POWER, OP_ROOTS };
 
 static const char *const ops[] = {"square", "multiply", "divide", "power", "roots", NULL};
 
+#define LIMIT_HELP "; between -100 and 100, so that a, b and the result fit one Argand plane"
 static const mm_param params[] = {
-    [P_ARE] = {"a_re", "real part of a", "", MM_REAL, 2, -100, 100, .help = "a = a_re + i a_im"},
+    [P_ARE] = {"a_re", "real part of a", "", MM_REAL, 2, -100, 100, .help = "a = a_re + i a_im" LIMIT_HELP},
     [P_AIM] = {"a_im", "imaginary part of a", "", MM_REAL, 1, -100, 100,
-               .help = "the book's example is a = 2 + i"},
+               .help = "the book's example is a = 2 + i" LIMIT_HELP},
     [P_BRE] = {"b_re", "real part of b", "", MM_REAL, 1, -100, 100,
-               .help = "b = b_re + i b_im, used by multiply and divide"},
+               .help = "b = b_re + i b_im, used by multiply and divide" LIMIT_HELP},
     [P_BIM] = {"b_im", "imaginary part of b", "", MM_REAL, 1, -100, 100,
-               .help = "b = i turns a by 90 degrees when multiplying"},
+               .help = "b = i turns a by 90 degrees when multiplying" LIMIT_HELP},
     [P_OP] = {"op", "operation", "", MM_CHOICE, OP_SQUARE, 0, 0, .choices = ops,
               .help = "square: a^2; multiply: a b; divide: a / b; power: a^n; roots: the n values of a^(1/n)"},
     [P_N] = {"n", "exponent or root order", "", MM_INT, 3, -12, 12,
-             .help = "the whole exponent of power (negative: 1 / a^|n|), or how many roots (n >= 1)"},
+             .help = "the whole exponent of power (negative: 1 / a^|n|), or how many roots (n >= 1); |n| <= 12 "
+                     "keeps the powers and the root polygon readable on the plane"},
 };
 
-typedef struct cplx {
-    double re, im;
-} cplx;
+enum { O_RE, O_IM, O_MOD, O_ARG, O_AMOD, O_AARG, O_A, O_B, O_Z, O_ROOTS, O_POWERS };
 
-static cplx mul(cplx a, cplx b)                  /* eq. (4) */
+static const mm_output outputs[] = {
+    [O_RE] = MM_SCALAR("re", "real part of the result", "", .flags = MM_ANSWER),
+    [O_IM] = MM_SCALAR("im", "imaginary part of the result", "", .flags = MM_ANSWER),
+    [O_MOD] = MM_SCALAR("modulus", "modulus |z| of the result", "", .flags = MM_ANSWER),
+    [O_ARG] = MM_SCALAR("argument", "argument of the result, in (-pi, pi]", "rad", .flags = MM_ANSWER),
+    [O_AMOD] = MM_SCALAR("a_modulus", "modulus |a|", ""),
+    [O_AARG] = MM_SCALAR("a_argument", "argument of a", "rad"),
+    [O_A] = MM_SERIES("a", "a", "", "Re", "", .figure = "argand", .aspect = "equal"),
+    [O_B] = MM_SERIES("b", "b", "", "Re", "", .figure = "argand", .aspect = "equal"),
+    [O_Z] = MM_SERIES("z", "the result", "", "Re", "", .figure = "argand", .aspect = "equal"),
+    [O_ROOTS] = MM_SERIES("roots", "the n roots of a", "", "Re", "", .figure = "argand", .aspect = "equal"),
+    [O_POWERS] = MM_SERIES("powers", "a^0, a^1, ..., a^n", "", "Re", "", .figure = "argand", .aspect = "equal",
+                           .mark = "dots"),
+};
+
+/* A printed number from a dd value with the error bound e of the dd value. */
+static void print_err(mm_result *res, int out, mm_dd v, double e)
 {
-    return (cplx){a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re};
+    double x = mm_dd_val(v);
+    double total = e + mm_dd_abs(mm_dd_sub(v, mm_dd_from(x)));
+    mm_scalar *s = mm_res_scalar_err(res, out, x, total, MM_ERR_BOUND);
+    if (total == 0)
+        s->exact = 1;
 }
 
-/* a / b by eq. (5), with b scaled first so that |b|^2 cannot overflow or
- * underflow (Smith's idea).  b != 0. */
-static cplx divide(cplx a, cplx b)
-{
-    double s = fmax(fabs(b.re), fabs(b.im));
-    double c = b.re / s, d = b.im / s, den = c * c + d * d;
-    return (cplx){(a.re * c + a.im * d) / den / s, (a.im * c - a.re * d) / den / s};
-}
-
-/* a^n by repeated squaring in rectangular form (n >= 0). */
-static cplx ipow(cplx a, int n)
-{
-    cplx z = {1, 0};
-    while (n > 0) {
-        if (n & 1)
-            z = mul(z, a);
-        a = mul(a, a);
-        n >>= 1;
-    }
-    return z;
-}
-
-static cplx polar(double r, double theta)       /* eq. (2) backwards */
-{
-    return (cplx){r * cos(theta), r * sin(theta)};
-}
-
-static double cabs_(cplx z) { return hypot(z.re, z.im); }
-static double carg_(cplx z) { return atan2(z.im, z.re); }
-
-/* Rounding bound for a result of size mag after k roundings of relative
- * size eps, with a floor for results in the subnormal range. */
-static double bound(double mag, int k) { return k * DBL_EPSILON * mag + k * 4 * DBL_TRUE_MIN; }
+static double ulp(double x) { return x == 0 ? 0 : ldexp(1, ilogb(x) - 52); }
 
 static int check(const mm_value *in, mm_error *err)
 {
@@ -88,27 +85,25 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* A segment from the origin to z, the way an arrow is drawn on the Argand plane. */
-static int arrow(mm_result *res, const char *name, const char *label, cplx z)
+/* A segment from the origin to (x, y), the way an arrow is drawn on the Argand plane. */
+static int arrow(mm_result *res, int out, double x, double y)
 {
-    mm_series *s = mm_res_series_v1(res, name, label, "", "Re", "", 2);
+    mm_series *s = mm_res_series(res, out, 2);
     if (!s)
         return MM_ENOMEM;
-    s->x[1] = z.re;
-    s->y[1] = z.im;
+    s->x[1] = x;
+    s->y[1] = y;
     return MM_OK;
 }
-
-static int is_finite(cplx z) { return isfinite(z.re) && isfinite(z.im); }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     /* + 0.0 turns a typed -0 into +0, so that atan2 gives pi, not -pi, on
      * the negative real axis: the argument stays in (-pi, pi] */
-    cplx a = {in[P_ARE].x + 0.0, in[P_AIM].x + 0.0}, b = {in[P_BRE].x + 0.0, in[P_BIM].x + 0.0};
+    double are = in[P_ARE].x + 0.0, aim = in[P_AIM].x + 0.0, bre = in[P_BRE].x + 0.0, bim = in[P_BIM].x + 0.0;
+    mm_cdd a = mm_cdd_exact(are, aim), b = mm_cdd_exact(bre, bim);
     int op = (int)in[P_OP].x, n = op == OP_SQUARE ? 2 : (int)in[P_N].x;
-    double ra = cabs_(a), ta = carg_(a), rb = cabs_(b), tb = carg_(b);
-    int uses_b = op == OP_MULTIPLY || op == OP_DIVIDE;
+    double ra = hypot(are, aim), ta = atan2(aim, are), rb = hypot(bre, bim), tb = atan2(bim, bre);
 
     if (op == OP_DIVIDE && rb == 0)
         return mm_error_set(err, MM_ESINGULAR, "b_re", "division by zero: b = 0 + 0i has no inverse "
@@ -116,110 +111,119 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (op == OP_POWER && n < 0 && ra == 0)
         return mm_error_set(err, MM_ESINGULAR, "a_re", "a^%d = 1 / a^%d needs a != 0", n, -n);
 
-    /* the result twice: rectangular and polar */
-    cplx z, zp;
-    const char *what;
+    /* the result twice: rectangular in double-double, polar in double */
+    mm_cdd z;
+    double rp, tp;                               /* polar: modulus and angle */
     switch (op) {
     case OP_MULTIPLY:
-        z = mul(a, b);
-        zp = polar(ra * rb, ta + tb);           /* eq. (6) */
-        what = "a b";
+        z = mm_cdd_mul(a, b);
+        rp = ra * rb, tp = ta + tb;              /* eq. (6) */
         break;
     case OP_DIVIDE:
-        z = divide(a, b);
-        zp = polar(ra / rb, ta - tb);
-        what = "a / b";
+        z = mm_cdd_div(a, b);
+        rp = ra / rb, tp = ta - tb;
         break;
-    case OP_ROOTS:                              /* the principal root, eq. (8) with k = 0 */
-        z = zp = polar(pow(ra, 1.0 / n), ta / n);
-        what = "a^(1/n)";
+    case OP_ROOTS:                               /* the principal root, eq. (8) with k = 0 */
+        z = mm_cdd_root(a, ra, ta, n, 0);
+        rp = pow(ra, 1.0 / n), tp = ta / n;
         break;
-    default:                                    /* square, power: eq. (7) */
-        z = n >= 0 ? ipow(a, n) : divide((cplx){1, 0}, ipow(a, -n));
-        zp = polar(pow(ra, n), n * ta);
-        what = "a^n";
+    default:                                     /* square, power: eq. (7) */
+        z = n >= 0 ? mm_cdd_pow(a, n) : mm_cdd_div(mm_cdd_exact(1, 0), mm_cdd_pow(a, -n));
+        rp = pow(ra, n), tp = n * ta;
         break;
     }
-    if (!is_finite(z) || !is_finite(zp))
+    double zre = mm_dd_val(z.re) + 0.0, zim = mm_dd_val(z.im) + 0.0;
+    if (!isfinite(zre) || !isfinite(zim) || !isfinite(rp))
         return mm_error_set(err, MM_ENONFINITE, op == OP_DIVIDE ? "b_re" : "n",
-                            "%s overflows the largest double (about 1.8e308); take %s", what,
+                            "the result overflows the largest double (about 1.8e308); take %s",
                             op == OP_DIVIDE ? "a larger |b|" : "a smaller |a| or |n|");
 
-    z.re += 0.0;                                 /* no -0 in the answer either */
-    z.im += 0.0;
-    mm_res_scalar_v1(res, "re", "real part of the result", "", z.re);
-    mm_res_scalar_v1(res, "im", "imaginary part of the result", "", z.im);
-    mm_res_scalar_v1(res, "modulus", "modulus |z| of the result", "", cabs_(z));
-    mm_res_scalar_v1(res, "argument", "argument of the result, in (-pi, pi]", "rad", carg_(z));
-    mm_res_scalar_v1(res, "a_modulus", "modulus |a|", "", ra);
-    mm_res_scalar_v1(res, "a_argument", "argument of a", "rad", ta);
+    print_err(res, O_RE, z.re, z.err);
+    print_err(res, O_IM, z.im, z.err);
+    mm_dd m2 = mm_dd_add(mm_dd_mul(z.re, z.re), mm_dd_mul(z.im, z.im));
+    print_err(res, O_MOD, mm_dd_sqrt(m2), z.err + 4 * MM_DD_EPS * sqrt(m2.hi));
+    double mz = sqrt(m2.hi);
+    if (mz > 0) {
+        /* atan2 is correctly rounded to within 0.52 ulp (measured against
+         * 50 digits); the lo parts move the angle by (x dy - y dx) / |z|^2 */
+        double ang = atan2(zim, zre);
+        double lo = (zre * (z.im.lo + (z.im.hi - zim)) - zim * (z.re.lo + (z.re.hi - zre))) / (mz * mz);
+        double aerr = z.err / (mz - fmin(z.err, 0.5 * mz)) * 2 + ulp(ang);
+        mm_res_scalar_err(res, O_ARG, ang + lo, aerr + fabs(lo) * U, MM_ERR_BOUND);
+    } else {
+        mm_res_scalar_err(res, O_ARG, 0, z.err > 0 ? M_PI : 0, MM_ERR_BOUND);  /* arg 0 of 0, by convention */
+    }
+    mm_res_scalar_err(res, O_AMOD, ra, ulp(ra), MM_ERR_BOUND);
+    mm_res_scalar_err(res, O_AARG, ta, ulp(ta), MM_ERR_BOUND);
 
     /* the Argand plane: a, b and the result as arrows from the origin */
-    int rc = arrow(res, "a", "a", a);
-    if (rc == MM_OK && uses_b)
-        rc = arrow(res, "b", "b", b);
-    if (rc == MM_OK)
-        rc = arrow(res, "z", op == OP_ROOTS ? "principal root" : "result", z);
-    if (rc != MM_OK)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    if (arrow(res, O_A, are, aim) || ((op == OP_MULTIPLY || op == OP_DIVIDE) && arrow(res, O_B, bre, bim)) ||
+        arrow(res, O_Z, zre, zim))
+        return MM_ENOMEM;
 
-    int k = abs(n) + 3;                          /* roundings in the longest chain */
-    double mag = cabs_(zp);
+    /* polar in double: r from hypot and theta from atan2 (each within an
+     * ulp), then pow and n theta and cos/sin: relative error of the modulus
+     * (|n| + 3) u, absolute error of the angle (3 |n| |theta| + 2) u */
+    int an = op == OP_MULTIPLY || op == OP_DIVIDE ? 1 : abs(n);
+    double th = op == OP_MULTIPLY || op == OP_DIVIDE ? fabs(ta) + fabs(tb) : fabs(ta);
+    double polar_tol = rp * ((2.0 * an + 6) * U + (3.0 * an * th + 2) * 2 * U) * M_SQRT2 + z.err;
     if (op == OP_ROOTS) {
-        /* all n roots (eq. 8), a regular n-gon; w^n = a and sum w = 0 */
-        mm_series *s = mm_res_series_v1(res, "roots", "the n roots of a", "", "Re", "", n + 1);
+        /* all n roots (eq. 8), a regular n-gon; w^n = a and sum w = 0, each
+         * within what rounding the roots to double leaves */
+        mm_series *s = mm_res_series(res, O_ROOTS, n + 1);
         if (!s)
-            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-        double back = 0, sre = 0, sim = 0, r1 = pow(ra, 1.0 / n);
-        for (int j = 0; j < n; j++) {
-            cplx w = polar(r1, (ta + 2 * M_PI * j) / n);
-            s->x[j] = w.re;
-            s->y[j] = w.im;
-            cplx wn = ipow(w, n);
-            back = fmax(back, hypot(wn.re - a.re, wn.im - a.im));
-            sre += w.re;
-            sim += w.im;
+            return MM_ENOMEM;
+        double back = 0, back_tol = 0, sre = 0, sim = 0, stol = 0;
+        for (int k = 0; k < n; k++) {
+            mm_cdd w = mm_cdd_root(a, ra, ta, n, k);
+            s->x[k] = mm_dd_val(w.re), s->y[k] = mm_dd_val(w.im);
+            mm_cdd wn = mm_cdd_pow(mm_cdd_exact(s->x[k], s->y[k]), n);
+            double mw = hypot(s->x[k], s->y[k]), dw = w.err + M_SQRT2 * U * mw;
+            back = fmax(back, hypot(mm_dd_val(mm_dd_sub(wn.re, a.re)), mm_dd_val(mm_dd_sub(wn.im, a.im))));
+            back_tol = fmax(back_tol, 1.01 * n * pow(mw + dw, n - 1) * dw + wn.err);
+            sre += s->x[k], sim += s->y[k];
+            stol += dw + 2 * U * (fabs(sre) + fabs(sim));
         }
         s->x[n] = s->x[0];                       /* close the polygon */
         s->y[n] = s->y[0];
-        /* w^n carries n times the relative error of w, and the angle
-         * theta + 2 pi k, up to 2 pi n, is rounded to eps of its size */
-        mm_res_check_abs(res, "roots: worst |w^n - a| (w^n by repeated multiplication)", back, 0,
-                         bound(ra, 12 * (n + 1)));
+        mm_res_check_abs(res, "roots as printed: worst |w^n - a| <= n |w|^(n-1) |rounding of w|", back, 0, back_tol);
         if (n >= 2)
             mm_res_check_abs(res, "roots: |sum of the n roots| = 0 (coefficient of z^(n-1) in z^n - a)",
-                             hypot(sre, sim), 0, bound(r1, 12 * n));
-        mm_res_method(res, "polar form: r^(1/n) e^(i (theta + 2 pi k) / n)", 0);
+                             hypot(sre, sim), 0, 1.01 * stol);
+        mm_res_check_abs(res, "principal root: rectangular (Newton in double-double) vs polar form in double, eq. (8)",
+                         hypot(zre - rp * cos(tp), zim - rp * sin(tp)), 0, polar_tol);
+        mm_res_method(res, "polar form r^(1/n) e^(i (theta + 2 pi k) / n), refined by Newton's method in double-double", 0);
         return MM_OK;
     }
 
     /* rectangular against polar: the same number by two routes */
-    mm_res_check_abs(res, "|rectangular - polar| (eqs. 4-5 against eqs. 6-7)",
-                     hypot(z.re - zp.re, z.im - zp.im), 0, bound(mag, 2 * k));
+    mm_res_check_abs(res, "|rectangular - polar|: eqs. 4-5 in double-double against eqs. 6-7 in double",
+                     hypot(zre - rp * cos(tp), zim - rp * sin(tp)), 0, polar_tol);
+    double zerr = z.err + U * mz;                    /* the printed z: dd bound + rounding */
     if (op == OP_MULTIPLY) {
-        mm_res_check_abs(res, "|a b| = |a| |b|", cabs_(z), ra * rb, bound(ra * rb, 4));
+        mm_res_check_abs(res, "|a b| = |a| |b|", mz, ra * rb, zerr + 3 * U * ra * rb);
     } else if (op == OP_DIVIDE) {
-        cplx back = mul(z, b);
-        mm_res_check_abs(res, "(a / b) b = a: |(a / b) b - a|", hypot(back.re - a.re, back.im - a.im), 0,
-                         bound(ra, 8));
-        mm_res_check_abs(res, "|a / b| = |a| / |b|", cabs_(z), ra / rb, bound(ra / rb, 6));
+        mm_cdd back = mm_cdd_mul(mm_cdd_exact(zre, zim), b);
+        mm_res_check_abs(res, "(a / b) b = a: |(a / b) b - a| for the printed a / b",
+                         hypot(mm_dd_val(mm_dd_sub(back.re, a.re)), mm_dd_val(mm_dd_sub(back.im, a.im))), 0,
+                         1.01 * (zerr + U * mz) * rb + back.err);
+        mm_res_check_abs(res, "|a / b| = |a| / |b|", mz, ra / rb, zerr + 3 * U * ra / rb);
     } else {
         double rn = pow(ra, n);
-        mm_res_check_abs(res, "|a^n| = |a|^n", cabs_(z), rn, bound(rn, 2 * k));
+        mm_res_check_abs(res, "|a^n| = |a|^n", mz, rn, zerr + (abs(n) + 2) * U * rn);
         /* the powers a^0, a^1, ..., a^n: a spiral that turns by arg a each step */
         int m = abs(n) + 1;
-        mm_series *s = mm_res_series_v1(res, "powers", n >= 0 ? "a^0, a^1, ..., a^n" : "a^0, a^-1, ..., a^n",
-                                     "", "Re", "", m);
+        mm_series *s = mm_res_series(res, O_POWERS, m);
         if (!s)
-            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-        cplx step = n >= 0 ? a : divide((cplx){1, 0}, a), p = {1, 0};
+            return MM_ENOMEM;
+        mm_cdd step = n >= 0 ? a : mm_cdd_div(mm_cdd_exact(1, 0), a), p = mm_cdd_exact(1, 0);
         for (int j = 0; j < m; j++) {
-            s->x[j] = p.re;
-            s->y[j] = p.im;
-            p = mul(p, step);
+            s->x[j] = mm_dd_val(p.re);
+            s->y[j] = mm_dd_val(p.im);
+            p = mm_cdd_mul(p, step);
         }
     }
-    mm_res_method(res, "rectangular arithmetic, checked in polar form", 0);
+    mm_res_method(res, "rectangular arithmetic in double-double, checked in polar form", 0);
     /* log10 |z| from the moduli, which cannot underflow */
     double lz = op == OP_MULTIPLY ? log10(ra) + log10(rb) : op == OP_DIVIDE ? log10(ra) - log10(rb) : n * log10(ra);
     if (ra != 0 && (op != OP_MULTIPLY || rb != 0) && lz < -300)
@@ -230,6 +234,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
 static const char *const references[] = {
     "E. Kreyszig, Advanced Engineering Mathematics, 10th ed., Wiley 2011, sections 13.1-13.2",
+    "T. J. Dekker, A floating-point technique for extending the available precision, Numer. Math. 18 (1971) 224-242",
     NULL,
 };
 
@@ -243,6 +248,8 @@ const mm_exercise mm_ex_num_complex = {
     .theory = "exercises/num/complex.md",
     .params = params,
     .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .references = references,
     .check = check,
     .solve = solve,

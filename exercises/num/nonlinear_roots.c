@@ -10,6 +10,10 @@
  * secant and inverse quadratic steps).  Learn what such a scan misses: roots
  * of even multiplicity (no sign change) and pairs of roots closer than
  * (b - a) / n, and what fools it: poles and jumps.
+ * Each root x carries an error estimate: the width of its final bracket, or
+ * where the rounding of f blurs the sign (near a multiple root f stays
+ * within its own rounding error over a wide interval), whichever is wider;
+ * f(x) carries the estimate of its rounding error (mm_expr_eval_err).
  * Checks: each root against plain bisection restarted from its part (a
  * slower method whose error bound is certain, eq. 3), and a sign change of
  * f across x +- tol around each root.
@@ -34,13 +38,30 @@ enum { P_F, P_A, P_B, P_N, P_TOL };
 
 static const mm_param params[] = {
     [P_F] = {"f", "function f(x)", "", MM_EXPR, 0, 0, 0, "x^3+sin(x)-2", .vars = "x",
-             .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e"},
-    [P_A] = {"a", "left end of the interval", "", MM_REAL, -1, -1e6, 1e6, .help = "search from x = a"},
-    [P_B] = {"b", "right end of the interval", "", MM_REAL, 10, -1e6, 1e6, .help = "to x = b > a"},
+             .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e; at most 512 characters, "
+                     "so that one evaluation stays within microseconds"},
+    [P_A] = {"a", "left end of the interval", "", MM_REAL, -1, -1e6, 1e6,
+             .help = "search from x = a; |a| <= 1e6 keeps (b - a) / n and tol on one scale"},
+    [P_B] = {"b", "right end of the interval", "", MM_REAL, 10, -1e6, 1e6, .help = "to x = b > a; |b| <= 1e6"},
     [P_N] = {"n", "number of subintervals", "", MM_INT, 100, 1, MAXN,
-             .help = "[a, b] is cut into n equal parts; two roots in one part are missed, so raise n to separate them (n times the length of f may be at most 120000)"},
+             .help = "[a, b] is cut into n equal parts; two roots in one part are missed, so raise n to separate "
+                     "them; at most 1000, and n times the length of f at most 120000 (the work of the scan)"},
     [P_TOL] = {"tol", "tolerance on x", "", MM_REAL, 1e-6, 1e-15, 1,
-               .help = "each root is within tol of a sign change of f (absolute, in units of x)"},
+               .help = "each root is within tol of a sign change of f (absolute, in units of x); from 1e-15, "
+                       "about the spacing of doubles near 1, to 1"},
+};
+
+enum { O_COUNT, O_X1, O_ROOTS, O_RPTS, O_F };
+
+static const char *const root_cols[] = {"x", "err", "fx", "fx_err", "iterations", NULL};
+static const char *const root_units[] = {"", "", "", "", "", NULL};
+
+static const mm_output outputs[] = {
+    [O_COUNT] = MM_SCALAR("count", "number of roots found (sign changes of f)", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_X1] = MM_SCALAR("x1", "the first (smallest) root", "", .flags = MM_ANSWER),
+    [O_ROOTS] = MM_TABLE("roots", "the roots, each within err (an estimate) of a root of f", root_cols, root_units),
+    [O_RPTS] = MM_SERIES("roots", "roots", "", "x", "", .figure = "f", .mark = "dots"),
+    [O_F] = MM_SERIES("f", "f(x)", "", "x", "", .figure = "f"),
 };
 
 /* The work grows with n (every part may be refined and checked) times the
@@ -83,27 +104,12 @@ static double f1(fctx *c, double x)
     return y;
 }
 
-/* Plain bisection of the part [xl, xr] (f changes sign across it) down to
- * width w: a sign change of f is then within w of the midpoint *x,
- * whatever f does.  Returns 0, or -1 if f stops being finite. */
-static int bisect(fctx *c, double xl, double xr, double fl, double w, double *x)
+/* f with the estimate of its rounding error (mm_expr_eval_err), for mm_roots_band */
+static int feval_err(double x, double *fx, double *err, void *ctx)
 {
-    for (int it = 0; it < 200 && xr - xl > w && xr - xl > 4 * DBL_EPSILON * fmax(fabs(xl), fabs(xr)); it++) {
-        double xm = xl + 0.5 * (xr - xl), fm = f1(c, xm);
-        if (!isfinite(fm))
-            return -1;
-        if (fm == 0) {
-            *x = xm;
-            return 0;
-        }
-        if ((fm < 0) == (fl < 0)) {
-            xl = xm;
-            fl = fm;
-        } else {
-            xr = xm;
-        }
-    }
-    *x = xl + 0.5 * (xr - xl);
+    fctx *c = ctx;
+    c->evals += 7;
+    *fx = mm_expr_eval_err(c->e, &x, err);
     return 0;
 }
 
@@ -121,43 +127,64 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     opt.n = n;
     opt.tol = tol;
     double poles[MAXPOLES];
-    mm_roots_result rr = {.roots = mm_res_alloc(res, (size_t)(n + 1) * sizeof(mm_roots_root)),
+    mm_roots_result rr = {.roots = mm_res_alloc(res, (size_t)(n + 3) * sizeof(mm_roots_root)),
                           .cap = n + 1, .poles = poles, .pole_cap = MAXPOLES};
     if (!rr.roots)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     int rc = mm_roots_solve(&prob, &opt, &rr, err);
     if (rc == MM_ENOCONV)
         return mm_error_set(err, MM_ENOCONV, "tol", "a root could not be refined to tol = %g in %d steps "
                             "(f is too rough there); raise tol", tol, opt.max_iter);
     if (rc != MM_OK)
         return rc;
+    /* a root at an end of [a, b] has no sign change inside to show it (sin(pi x)
+     * at x = -1 gives -1.2e-16, not 0, because pi is rounded): an end where f
+     * is zero within its own rounding error is a root too */
+    for (int end = 0; end < 2; end++) {
+        double x = end ? b : a, e, fx = mm_expr_eval_err(c->e, &x, &e);
+        int have = rr.nroots > 0 && (end ? rr.roots[rr.nroots - 1].x == b : rr.roots[0].x == a);
+        if (have || !isfinite(fx) || !(fabs(fx) <= e))
+            continue;
+        mm_roots_root z = {x, fx, 0, 0, 0, -1};         /* part -1: found at an end, not by a sign change */
+        if (end) {
+            rr.roots[rr.nroots] = z;
+        } else {
+            memmove(rr.roots + 1, rr.roots, (size_t)rr.nroots * sizeof *rr.roots);
+            rr.roots[0] = z;
+        }
+        rr.nroots++;
+    }
     const int nr = rr.nroots;
 
-    static const char *const cols[] = {"x", "fx", "iterations"};
-    static const char *const units[] = {"", "", ""};
-    mm_table *t = mm_res_table_v1(res, "roots", nr, 3, cols, units);
-    mm_series *sr = mm_res_series_v1(res, "roots", "roots", "", "x", "", nr);
+    mm_table *t = mm_res_table(res, O_ROOTS, nr);
+    mm_series *sr = mm_res_series(res, O_RPTS, nr);
     if (!t || !sr)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    int nsuspect = 0;
-    double wmax = 0, xmax = 0;
+        return MM_ENOMEM;
+    long scan_evals = c->evals;
+    int nsuspect = 0, nblur = 0;
+    double wmax = 0, xmax = 0, part = (b - a) / n;
     for (int i = 0; i < nr; i++) {
         const mm_roots_root *z = &rr.roots[i];
-        t->cell[3 * i] = z->x;
-        t->cell[3 * i + 1] = z->fx;
-        t->cell[3 * i + 2] = z->iterations;
+        double fe, fx = mm_expr_eval_err(c->e, &z->x, &fe);
+        /* the root's error: its final bracket (plus the rounding of x), or
+         * the band where rounding blurs the sign of f, if wider */
+        double w = z->width + 2 * DBL_EPSILON * fabs(z->x);
+        double band = mm_roots_band(feval_err, c, z->x, w, z->x - part, z->x + part);
+        nblur += band > fmax(w, tol);
+        double e = fmax(w, band);
+        double *row = t->cell + 5 * i;
+        row[0] = z->x, row[1] = e, row[2] = fx, row[3] = fe, row[4] = z->iterations;
+        if (!isfinite(fe))                    /* f overflows in another rounding mode or beside x */
+            t->text[5 * i + 3] = "not estimated: f is not finite beside x";
         sr->x[i] = z->x;
         sr->y[i] = 0;
         nsuspect += (z->flags & MM_ROOTS_SUSPECT) != 0;
-        wmax = fmax(wmax, z->width);
+        wmax = fmax(wmax, e);
         xmax = fmax(xmax, fabs(z->x));
+        if (i == 0)
+            mm_res_scalar_err(res, O_X1, z->x, e, MM_ERR_ESTIMATE);
     }
-    mm_res_scalar_v1(res, "count", "number of roots found", "", nr);
-    if (nr > 0)
-        mm_res_scalar_v1(res, "x1", "the first (smallest) root", "", rr.roots[0].x);
-    else
-        mm_res_scalar_text_v1(res, "x1", "the first (smallest) root", "", 0, "none found");
-    long scan_evals = c->evals;
+    mm_res_scalar(res, O_COUNT, nr);
 
     /* check 1: every root against bisection restarted from its part, to a
      * width of tol/4: Brent's claim is |x - root| <= tol + 4 eps |x|.
@@ -170,13 +197,13 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     int lost = 0, nosign = 0, crowded = 0;
     for (int i = 0; i < nr; i++) {
         const mm_roots_root *z = &rr.roots[i];
-        if (z->flags & MM_ROOTS_EXACT)
+        if ((z->flags & MM_ROOTS_EXACT) || z->part < 0)
             continue;                                /* f(x) = 0 exactly: proven */
         double h = tol + 8 * DBL_EPSILON * fabs(z->x), fm = f1(c, z->x - h), fp = f1(c, z->x + h);
         int own = fm == 0 || fp == 0 || (fm < 0) != (fp < 0);
         nosign += !own;
-        int k = (int)floor((z->x - a) / (b - a) * n), found = 0;
-        for (int j = k - 1; j <= k + 1 && !found; j++) {
+        int found = 0;
+        for (int j = z->part; j <= z->part && !found; j++) {     /* the part Brent refined */
             if (j < 0 || j >= n)
                 continue;
             double xl = grid(a, b, n, j), xr = grid(a, b, n, j + 1), fl = f1(c, xl), fr = f1(c, xr), xb;
@@ -184,7 +211,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                 (fl < 0) == (fr < 0))
                 continue;
             found = 1;
-            if (bisect(c, xl, xr, fl, 0.25 * tol, &xb) != 0)
+            if (mm_roots_bisect(feval, c, xl, xr, fl, 0.25 * tol, &xb, NULL) != MM_OK)
                 lost++;
             else if (fabs(z->x - xb) > allowed && own)
                 crowded++;
@@ -207,7 +234,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     /* the plot: f over [a, b]; points where f is not finite are left out */
     double *xs = mm_res_alloc(res, PLOT * sizeof *xs), *ys = mm_res_alloc(res, PLOT * sizeof *ys);
     if (!xs || !ys)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     mm_linspace(a, b, PLOT, xs);
     int np = 0, bad = 0, plot_changes = 0;
     double first_bad = 0, prev = NAN;
@@ -230,9 +257,9 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                     "than a part (%.3g), roots that only touch zero, and roots beside points where f is not finite "
                     "are missed; raise n", plot_changes, nr, nr == 1 ? "" : "s", rr.npoles ? " and poles" : "",
                     (b - a) / n);
-    mm_series *sf = mm_res_series_v1(res, "f", "f(x)", "", "x", "", np);
+    mm_series *sf = mm_res_series(res, O_F, np);
     if (!sf)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     memcpy(sf->x, xs, np * sizeof *xs);
     memcpy(sf->y, ys, np * sizeof *ys);
 
@@ -260,6 +287,11 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     if (nsuspect)
         mm_res_warn(res, "%d root%s a large residual |f(x)|: a jump of f through zero (or a very steep root) "
                     "rather than a smooth crossing; look at the plot", nsuspect, nsuspect > 1 ? "s have" : " has");
+    if (nblur)
+        mm_res_warn(res, "%d root%s known only to within %s err: f stays within its own rounding error over a band "
+                    "wider than tol around %s (a multiple root, or a flat crossing); no method can place %s closer "
+                    "in double precision", nblur, nblur > 1 ? "s are" : " is", nblur > 1 ? "their" : "its",
+                    nblur > 1 ? "them" : "it", nblur > 1 ? "them" : "it");
     if (nr == 0)
         mm_res_warn(res, "no sign change of f on [%g, %g] with n = %d: f may have no root there, only roots "
                     "where it touches zero without crossing (such as x^2), or two roots within one part; "
@@ -299,6 +331,8 @@ const mm_exercise mm_ex_num_nonlinear_roots = {
     .theory = "exercises/num/nonlinear_roots.md",
     .params = params,
     .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .references = references,
     .check = check,
     .solve = solve,

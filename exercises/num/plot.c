@@ -6,12 +6,17 @@
  * Goal: a plot is a table of samples joined by straight lines; learn what
  * that hides (a peak between samples, a pole drawn as a steep line) and
  * read numbers off the curve properly: the largest and smallest values,
- * refined between the samples (golden-section search), and the area under
- * the curve.  The area is computed by two quadrature rules with different
- * error behaviour — adaptive Gauss-Kronrod (7-15 points, eq. 4) and
- * composite 5-point Gauss-Legendre on a mesh refined by halving (eq. 5) —
- * which must agree within their error estimates; the trapezoid rule on the
- * plot's own samples (eq. 3) is what the drawn polyline encloses.
+ * refined between the samples (golden-section search, eq. 6), and the area
+ * under the curve.  The area is computed by two quadrature rules with
+ * different error behaviour — adaptive Gauss-Kronrod (7-15 points, eq. 4)
+ * and composite 5-point Gauss-Legendre on a mesh refined by halving (eq. 5),
+ * both in mm_quad — which must agree within their error estimates; the
+ * trapezoid rule on the plot's own samples (eq. 3) is what the drawn
+ * polyline encloses.
+ * Every printed number carries an error estimate: the extremes are searched
+ * among the plot's samples and on the adaptive rule's finer partition, then
+ * located by golden section; where f is flat at its peak, the rounding of f
+ * (mm_expr_eval_err) leaves x known only to about sqrt(2 err_f / |f''|).
  * Reference: R. Piessens et al., QUADPACK, Springer 1983 (qk15); W. Press
  * et al., Numerical Recipes, 3rd ed., sections 4.5-4.6 (Gauss quadrature)
  * and 10.2 (golden section).
@@ -19,24 +24,51 @@
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "mm_exhelp.h"
 #include "mm_expr.h"
+#include "mm_opt.h"
+#include "mm_quad.h"
 
 #define MAXPTS 2001
 #define GK_MAX 400             /* most subintervals of the adaptive rule */
-#define GK_START 8             /* pieces to begin with */
 #define GL_MAX 2048            /* most panels of the composite Gauss rule */
+#define SCAN 8                 /* points per adaptive piece searched for extremes */
+/* The work beyond the samples, in evaluations of f: an evaluation costs
+ * about 0.06 us per character of f (30 us for a 511-character power
+ * tower), so WORK / length evaluations take about 60 ms whatever f is.  The
+ * quadratures and the search for extremes share it (the defaults, 14
+ * characters, stay at 400 pieces and 2048 panels). */
+#define WORK 1.0e6
+#define U (DBL_EPSILON / 2)
 
 enum { P_F, P_A, P_B, P_POINTS };
 
 static const mm_param params[] = {
     [P_F] = {"f", "function f(x)", "", MM_EXPR, 0, 0, 0, "sin(x)/(x^2+1)", .vars = "x",
-             .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e"},
-    [P_A] = {"a", "left end of the plot", "", MM_REAL, -5, -1e3, 1e3, .help = "the plot starts at x = a"},
-    [P_B] = {"b", "right end of the plot", "", MM_REAL, 5, -1e3, 1e3, .help = "and ends at x = b > a"},
+             .help = "any expression of x: + - * / ^, sin cos tan exp ln sqrt abs ..., pi and e; at most 512 characters, "
+                     "so that one evaluation stays within microseconds"},
+    [P_A] = {"a", "left end of the plot", "", MM_REAL, -5, -1e3, 1e3,
+             .help = "the plot starts at x = a; |a| <= 1000, so that 400 adaptive pieces resolve a wave of "
+                     "period 1 over the whole interval"},
+    [P_B] = {"b", "right end of the plot", "", MM_REAL, 5, -1e3, 1e3, .help = "and ends at x = b > a; |b| <= 1000"},
     [P_POINTS] = {"points", "plot points", "", MM_INT, 101, 11, MAXPTS,
-                  .help = "samples joined by straight lines; 101 on [-5, 5] is the book's step of 0.1"},
+                  .help = "samples joined by straight lines; 101 on [-5, 5] is the book's step of 0.1; at most "
+                          "2001, about the pixels across a screen"},
+};
+
+enum { O_MAX, O_XMAX, O_MIN, O_XMIN, O_POINTS, O_INT, O_INT_PLOT, O_F };
+
+static const mm_output outputs[] = {
+    [O_MAX] = MM_SCALAR("max", "largest value of f (refined between samples)", "", .flags = MM_ANSWER),
+    [O_XMAX] = MM_SCALAR("x_max", "where f is largest", "", .flags = MM_ANSWER),
+    [O_MIN] = MM_SCALAR("min", "smallest value of f (refined between samples)", "", .flags = MM_ANSWER),
+    [O_XMIN] = MM_SCALAR("x_min", "where f is smallest", ""),
+    [O_POINTS] = MM_SCALAR("points", "points plotted", "", .flags = MM_EXACT),
+    [O_INT] = MM_SCALAR("integral", "integral of f from a to b (area, signed)", "", .flags = MM_ANSWER),
+    [O_INT_PLOT] = MM_SCALAR("integral_plot", "trapezoid rule on the plotted samples (the polyline's area)", ""),
+    [O_F] = MM_SERIES("f", "f(x)", "", "x", ""),
 };
 
 static int check(const mm_value *in, mm_error *err)
@@ -49,164 +81,65 @@ static int check(const mm_value *in, mm_error *err)
 typedef struct fctx {
     mm_expr *e;
     long evals;
-    int nonfinite;              /* a quadrature met inf or NaN */
 } fctx;
+
+static int feval(double x, double *fx, void *p)
+{
+    fctx *c = p;
+    c->evals++;
+    *fx = mm_expr_eval(c->e, &x);
+    return 0;
+}
 
 static double f1(fctx *c, double x)
 {
     c->evals++;
-    double y = mm_expr_eval(c->e, &x);
-    if (!isfinite(y))
-        c->nonfinite = 1;
-    return y;
+    return mm_expr_eval(c->e, &x);
 }
 
-/* ---- Gauss-Kronrod 7-15 (QUADPACK qk15): nodes and weights on [-1, 1] ---- */
-
-static const double xgk[8] = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
-                              0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-                              0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-                              0.207784955007898467600689403773245, 0.0};
-static const double wgk[8] = {0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
-                              0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
-                              0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-                              0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
-static const double wg[4] = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
-                             0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
-
-typedef struct piece {
-    double a, b, k, err, absk;
-} piece;
-
-/* K15 and |K15 - G7| on [a, b] (the difference is the error estimate: the
- * 7-point Gauss rule shares 7 of the 15 nodes), and K15 of |f|. */
-static piece gk15(fctx *c, double a, double b)
+/* f for mm_opt_refine_extreme: the value with its rounding bound (that one
+ * not counted as an evaluation, it repeats the last) */
+static double f_err(double x, double *err, void *p)
 {
-    double h = 0.5 * (b - a), m = 0.5 * (a + b);
-    double fc = f1(c, m), k = wgk[7] * fc, g = wg[3] * fc, ak = wgk[7] * fabs(fc);
-    for (int j = 0; j < 7; j++) {
-        double f1v = f1(c, m - h * xgk[j]), f2v = f1(c, m + h * xgk[j]);
-        k += wgk[j] * (f1v + f2v);
-        ak += wgk[j] * (fabs(f1v) + fabs(f2v));
-        if (j % 2 == 1)
-            g += wg[j / 2] * (f1v + f2v);
-    }
-    return (piece){a, b, k * h, fabs((k - g) * h), ak * fabs(h)};
+    fctx *c = p;
+    if (err)
+        return mm_expr_eval_err(c->e, &x, err);
+    return f1(c, x);
 }
 
-/* Global adaptive Gauss-Kronrod: split the piece with the largest error
- * estimate until the sum of estimates is below tol (relative to the
- * integral of |f|) or GK_MAX pieces are used. */
-static double gk_adaptive(fctx *c, double a, double b, double rtol, piece *p, double *err, double *l1)
-{
-    /* start from GK_START equal pieces: one piece over an interval symmetric
-     * about a zero of an odd f would give K = G = 0 and stop at once */
-    int np = GK_START;
-    for (int i = 0; i < np; i++)
-        p[i] = gk15(c, i == 0 ? a : a + (b - a) * i / np, i == np - 1 ? b : a + (b - a) * (i + 1) / np);
-    for (;;) {
-        double sum = 0, e = 0, abs_sum = 0;
-        int worst = 0;
-        for (int i = 0; i < np; i++) {
-            sum += p[i].k;
-            e += p[i].err;
-            abs_sum += p[i].absk;
-            if (p[i].err > p[worst].err)
-                worst = i;
-        }
-        if (c->nonfinite || e <= rtol * abs_sum || np == GK_MAX) {
-            *err = e;
-            *l1 = abs_sum;
-            return sum;
-        }
-        double m = 0.5 * (p[worst].a + p[worst].b);
-        piece left = gk15(c, p[worst].a, m), right = gk15(c, m, p[worst].b);
-        p[worst] = left;
-        p[np++] = right;
-    }
-}
+/* A candidate for an extreme: a local extreme of the scan at x, with
+ * the spacing h of the scan there. */
+#define NCAND 4
+typedef struct cand {
+    double x, v, h;
+    int from_plot;
+} cand;
 
-/* Composite 5-point Gauss-Legendre on m equal panels, m doubling from
- * m0: G_m.  Stops after two successive |G_m - G_m/2| <= tol, or at
- * GL_MAX panels; *err = the last |G_m - G_m/2|, which for a smooth f
- * overstates the error of G_m (it is about the error of G_m/2).  A rule
- * of another family than Gauss-Kronrod, on a fixed rather than adaptive
- * mesh: the two fail in different ways. */
-static const double xgl[3] = {0.0, 0.538469310105683091036314420700208, 0.906179845938663992797626878299393};
-static const double wgl[3] = {0.568888888888888888888888888888889, 0.478628670499366468041291514835639,
-                              0.236926885056189087514264040719918};
-
-static double gauss_panels(fctx *c, double a, double b, int m)
+/* Keep the NCAND best local extremes of s f (s = +1 largest, -1 smallest):
+ * v at x is one if no neighbour (vl, vr; NaN at an end) beats it. */
+static void offer(cand *cd, double s, double x, double v, double vl, double vr, double h, int from_plot)
 {
-    double s = 0;
-    for (int i = 0; i < m; i++) {
-        double lo = i == 0 ? a : a + (b - a) * i / m, hi = i == m - 1 ? b : a + (b - a) * (i + 1) / m;
-        double mid = 0.5 * (lo + hi), hh = 0.5 * (hi - lo), p = wgl[0] * f1(c, mid);
-        for (int j = 1; j < 3; j++)
-            p += wgl[j] * (f1(c, mid - hh * xgl[j]) + f1(c, mid + hh * xgl[j]));
-        s += p * hh;
+    if ((!isnan(vl) && s * vl > s * v) || (!isnan(vr) && s * vr > s * v))
+        return;
+    int j = NCAND - 1;
+    if (cd[j].h > 0 && s * cd[j].v >= s * v)
+        return;
+    while (j > 0 && (cd[j - 1].h == 0 || s * cd[j - 1].v < s * v)) {
+        cd[j] = cd[j - 1];
+        j--;
     }
-    return s;
-}
-
-static double gauss_doubling(fctx *c, double a, double b, int m0, double tol, double *err, int *mused)
-{
-    double prev = gauss_panels(c, a, b, m0), cur = prev;
-    int agree = 0;
-    *err = INFINITY;
-    for (int m = 2 * m0; m <= GL_MAX && !c->nonfinite; m *= 2) {
-        cur = gauss_panels(c, a, b, m);
-        *err = fabs(cur - prev);
-        *mused = m;
-        prev = cur;
-        if (*err <= tol) {
-            if (++agree == 2)
-                break;
-        } else {
-            agree = 0;
-        }
-    }
-    return cur;
-}
-
-/* Golden-section search for a maximum of s * f on [lo, hi] (s = +1 for a
- * maximum, -1 for a minimum), started knowing that the middle sample x0 is
- * at least as high as the ends.  Returns the best point seen. */
-static double golden(fctx *c, double lo, double hi, double s, double x0, double *best)
-{
-    const double g = 0.5 * (sqrt(5.0) - 1);
-    double bx = x0, bf = s * f1(c, x0);
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    double f1v = s * f1(c, x1), f2v = s * f1(c, x2);
-    for (int it = 0; it < 80 && hi - lo > 4 * DBL_EPSILON * fmax(fabs(lo), fabs(hi)) + 1e-300; it++) {
-        if (isfinite(f1v) && f1v > bf) { bf = f1v; bx = x1; }
-        if (isfinite(f2v) && f2v > bf) { bf = f2v; bx = x2; }
-        if (!(f1v < f2v)) {                      /* the peak is left of x2 */
-            hi = x2;
-            x2 = x1;
-            f2v = f1v;
-            x1 = hi - g * (hi - lo);
-            f1v = s * f1(c, x1);
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1v = f2v;
-            x2 = lo + g * (hi - lo);
-            f2v = s * f1(c, x2);
-        }
-    }
-    *best = s * bf;
-    return bx;
+    cd[j] = (cand){x, v, h, from_plot};
 }
 
 static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
 {
     const double a = in[P_A].x, b = in[P_B].x;
     const int n = (int)in[P_POINTS].x;
-    double *xs = mm_res_alloc(res, n * sizeof *xs), *ys = mm_res_alloc(res, n * sizeof *ys);
-    piece *pieces = mm_res_alloc(res, GK_MAX * sizeof *pieces);
-    if (!xs || !ys || !pieces)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    double *xs = mm_res_alloc(res, 2 * (size_t)n * sizeof *xs);
+    mm_quad_piece *pieces = mm_res_alloc(res, GK_MAX * sizeof *pieces);
+    if (!xs || !pieces)
+        return MM_ENOMEM;
+    double *ys = xs + n;
     mm_linspace(a, b, n, xs);
     mm_expr_eval_bulk(c->e, xs, (size_t)n, ys);
     c->evals += n;
@@ -214,39 +147,35 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     /* keep the finite samples; note the largest and smallest */
     int np = 0, bad = 0, imax = -1, imin = -1;
     double first_bad = 0;
-    int *orig = mm_res_alloc(res, n * sizeof *orig);
-    if (!orig)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int i = 0; i < n; i++)
+        np += isfinite(ys[i]) != 0;
+    mm_series *s = mm_res_series(res, O_F, np);
+    if (!s)
+        return MM_ENOMEM;
+    np = 0;
     for (int i = 0; i < n; i++) {
         if (!isfinite(ys[i])) {
             if (!bad++)
                 first_bad = xs[i];
             continue;
         }
-        if (imax < 0 || ys[i] > ys[orig[imax]])
-            imax = np;
-        if (imin < 0 || ys[i] < ys[orig[imin]])
-            imin = np;
-        orig[np++] = i;
+        if (imax < 0 || ys[i] > ys[imax])
+            imax = i;
+        if (imin < 0 || ys[i] < ys[imin])
+            imin = i;
+        s->x[np] = xs[i];
+        s->y[np++] = ys[i];
     }
     if (np == 0)
         return mm_error_set(err, MM_ENONFINITE, "f", "f is not a finite number anywhere on [%g, %g] (first "
                             "sample: f(%g)); choose another interval or function", a, b, a);
-
-    mm_series *s = mm_res_series_v1(res, "f", "f(x)", "", "x", "", np);
-    if (!s)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    for (int k = 0; k < np; k++) {
-        s->x[k] = xs[orig[k]];
-        s->y[k] = ys[orig[k]];
-    }
 
     /* does the polyline follow f?  f between the samples against the chords,
      * at the golden-section fraction g of each step (an irrational fraction
      * rather than the midpoint, so that a wave whose period fits the step
      * twice cannot hide there too) */
     const double g = 0.381966011250105;          /* (3 - sqrt 5) / 2 */
-    double dev = 0, xdev = 0, height = ys[orig[imax]] - ys[orig[imin]];
+    double dev = 0, xdev = 0, height = ys[imax] - ys[imin];
     for (int i = 0; i + 1 < n; i++) {
         if (!isfinite(ys[i]) || !isfinite(ys[i + 1]))
             continue;
@@ -256,69 +185,117 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
             xdev = xm;
         }
     }
-    c->nonfinite = 0;                    /* a midpoint may hit a pole; the quadratures will tell */
     if (dev > 0.02 * height || (height == 0 && dev > 0))
         mm_res_warn(res, "between the samples f strays from the drawn lines by up to %.3g (at x = %.6g), %.0f%% of "
                     "the plot's height: the plot misses detail; raise points", dev, xdev,
                     height > 0 ? 100 * dev / height : 100.0);
 
-    /* extremes: the best sample, refined between its neighbours */
-    double ext_x[2], ext_f[2];
-    for (int w = 0; w < 2; w++) {
-        int k = orig[w == 0 ? imax : imin];
-        double sg = w == 0 ? 1 : -1;
-        ext_x[w] = xs[k];
-        ext_f[w] = ys[k];
-        if (k > 0 && k < n - 1 && isfinite(ys[k - 1]) && isfinite(ys[k + 1])) {
-            double fb, xb = golden(c, xs[k - 1], xs[k + 1], sg, xs[k], &fb);
-            if (isfinite(fb) && sg * fb >= sg * ext_f[w]) {
-                ext_x[w] = xb;
-                ext_f[w] = fb;
-            }
-        }
+    /* the area, two ways (eqs. 4-5), within the work budget */
+    double budget = WORK / fmax(16, (double)strlen(in[P_F].text));
+    mm_quad_options qo;
+    mm_quad_options_init(&qo);
+    qo.max_pieces = (int)fmax(16, fmin(GK_MAX, 0.4 * budget / 30));   /* 15 evaluations, twice, a piece */
+    int gl_max = 16;
+    while (2 * gl_max <= GL_MAX && 2 * gl_max * 10 <= 0.4 * budget)  /* the doubling costs ~ 2 m 5 */
+        gl_max *= 2;
+    mm_quad_result gk = {0}, gl = {0};
+    mm_error qerr;
+    int have_int = 0;
+    if (!bad) {
+        int rc = mm_quad_gk(feval, c, a, b, &qo, pieces, &gk, &qerr);
+        int m0 = 8;
+        while (5 * m0 < n && 2 * m0 <= gl_max / 4)   /* start at least as fine as the plot */
+            m0 *= 2;
+        if (rc == MM_OK)
+            rc = mm_quad_gl(feval, c, a, b, m0, gl_max, 1e-11 * gk.abs_value, &gl, &qerr);
+        if (rc == MM_ENONFINITE)
+            mm_res_warn(res, "the integral of f over [%g, %g] is not computed: f is not finite between the plot "
+                        "samples (a pole or a domain error the plot does not show)", a, b);
+        else if (rc != MM_OK)
+            return mm_error_set(err, rc, "f", "%s", qerr.msg);
+        have_int = rc == MM_OK;
     }
-    mm_res_scalar_v1(res, "max", "largest value of f (refined between samples)", "", ext_f[0]);
-    mm_res_scalar_v1(res, "x_max", "where f is largest", "", ext_x[0]);
-    mm_res_scalar_v1(res, "min", "smallest value of f (refined between samples)", "", ext_f[1]);
-    mm_res_scalar_v1(res, "x_min", "where f is smallest", "", ext_x[1]);
-    mm_res_scalar_v1(res, "points", "points plotted", "", np);
+
+    /* extremes: the best few local extremes among the samples and on the
+     * adaptive partition (neighbouring bumps of a decaying wave differ by
+     * less than the sampling misses them by), each refined between its
+     * neighbours (eq. 6); the best refined one wins */
+    cand cd[2][NCAND] = {{{0}}};
+    for (int i = 0; i < n; i++)                      /* the plot's samples, step (b - a) / (n - 1) */
+        if (isfinite(ys[i]))
+            for (int w = 0; w < 2; w++)
+                offer(cd[w], w ? -1 : 1, xs[i], ys[i], i > 0 ? ys[i - 1] : NAN, i < n - 1 ? ys[i + 1] : NAN,
+                      (b - a) / (n - 1), 1);
+    for (int p = 0; have_int && p < gk.pieces; p++) {
+        double v[SCAN + 1], h = (pieces[p].b - pieces[p].a) / SCAN;
+        for (int k = 0; k <= SCAN; k++)
+            v[k] = f1(c, pieces[p].a + h * k);
+        for (int k = 0; k <= SCAN; k++)
+            for (int w = 0; w < 2 && isfinite(v[k]); w++)
+                offer(cd[w], w ? -1 : 1, pieces[p].a + h * k, v[k], k > 0 ? v[k - 1] : NAN, k < SCAN ? v[k + 1] : NAN,
+                      h, 0);
+    }
+    for (int w = 0; w < 2; w++) {
+        double sg = w == 0 ? 1 : -1;
+        int k = w == 0 ? imax : imin;
+        if ((k > 0 && !isfinite(ys[k - 1])) || (k < n - 1 && !isfinite(ys[k + 1]))) {
+            mm_res_warn(res, "no %s value: f is not finite next to its %s sample (x = %.6g), so it is not bounded "
+                        "there (a pole)", w == 0 ? "largest" : "smallest", w == 0 ? "largest" : "smallest", xs[k]);
+            continue;
+        }
+        double x = xs[k], v = ys[k], xe = 0, ve = 0;
+        int from_plot = 1;
+        for (int j = 0; j < NCAND && cd[w][j].h > 0; j++) {
+            mm_opt_extreme q;                 /* finer scan, then golden section (eq. 6) */
+            mm_opt_refine_extreme(f_err, c, sg, cd[w][j].x, cd[w][j].h, a, b, &q);
+            if (j == 0 || sg * q.fx > sg * v)
+                x = q.x, v = q.fx, xe = q.x_err, ve = q.fx_err, from_plot = cd[w][j].from_plot;
+        }
+        mm_res_scalar_err(res, w == 0 ? O_MAX : O_MIN, v, ve, MM_ERR_ESTIMATE);
+        mm_res_scalar_err(res, w == 0 ? O_XMAX : O_XMIN, x, xe, MM_ERR_ESTIMATE);
+        if (!from_plot && sg * (v - ys[k]) > 0.02 * height)
+            mm_res_warn(res, "the plotted samples miss the %s value: between them f reaches %.6g at x = %.6g; raise "
+                        "points to see it", w == 0 ? "largest" : "smallest", v, x);
+    }
+    mm_res_scalar(res, O_POINTS, np);
 
     if (bad) {
         mm_res_warn(res, "f is not finite at %d of the %d samples (first at x = %.6g: a pole, or a value outside "
                     "the domain such as ln of a negative number); they are left out, and the line drawn across "
                     "the gap is not part of the curve", bad, n, first_bad);
         mm_res_warn(res, "the integral of f over [%g, %g] is not computed: f is not finite inside", a, b);
-        mm_res_method(res, "sampling on an even grid", 0);
-        mm_res_method_stat(res, "evaluations", (double)c->evals);
-        return MM_OK;
     }
-
-    /* the area, two ways */
-    double egk, l1, egl = INFINITY;
-    int mgl = 0, m0 = 8;
-    double igk = gk_adaptive(c, a, b, 1e-12, pieces, &egk, &l1);
-    while (5 * m0 < n)                           /* start at least as fine as the plot */
-        m0 *= 2;
-    double igl = c->nonfinite ? 0 : gauss_doubling(c, a, b, m0, 1e-11 * l1, &egl, &mgl);
-    if (c->nonfinite) {
-        mm_res_warn(res, "the integral of f over [%g, %g] is not computed: f is not finite between the plot "
-                    "samples (a pole or a domain error the plot does not show)", a, b);
-    } else {
-        mm_res_scalar_v1(res, "integral", "integral of f from a to b (area, signed)", "", igk);
+    if (have_int) {
+        mm_res_scalar_err(res, O_INT, gk.value, gk.err, MM_ERR_ESTIMATE);
+        /* two rules, each within its estimate, and the rounding of the sums
+         * (compensated: a few eps of the integral of |f|) */
         mm_res_check_abs(res, "integral: adaptive Gauss-Kronrod vs composite Gauss-Legendre, within both error "
-                         "estimates", igk, igl, egk + egl + 1e-12 * l1);
-        /* eq. (3): the trapezoid rule on the plot's samples */
-        double tr = 0, hstep = (b - a) / (n - 1);
-        for (int i = 0; i + 1 < n; i++)
-            tr += 0.5 * hstep * (ys[i] + ys[i + 1]);
-        mm_res_scalar_v1(res, "integral_plot", "trapezoid rule on the plotted samples", "", tr);
-        if (egk > 1e-8 * l1)
+                         "estimates, eqs. (4)-(5)", gk.value, gl.value, gk.err + gl.err);
+        /* eq. (3): the trapezoid rule on the plot's samples, with the rounding
+         * of f at each sample (mm_expr_eval_err) and of the compensated sum */
+        double hstep = (b - a) / (n - 1), tr = 0, trc = 0, tre = 0, ef = 0;
+        for (int i = 0; i < n; i += (n + 31) / 32) {       /* f's rounding, at 33 samples at most */
+            double e;
+            mm_expr_eval_err(c->e, &xs[i], &e);
+            ef = fmax(ef, e);
+        }
+        for (int i = 0; i < n; i++) {
+            double wgt = (i == 0 || i == n - 1 ? 0.5 : 1) * hstep, term = wgt * ys[i], t = tr + term;
+            trc += fabs(tr) >= fabs(term) ? (tr - t) + term : (term - t) + tr;
+            tr = t;
+            tre += 2 * U * fabs(term);
+        }
+        tre += 2 * ef * (b - a);                          /* twice the largest rounding of f seen */
+        mm_res_scalar_err(res, O_INT_PLOT, tr + trc, tre, MM_ERR_ESTIMATE);
+        if (!gk.converged)
             mm_res_warn(res, "the integral is uncertain: %.6g with an error estimate of %.2g (f changes too fast "
-                        "for %d pieces of Gauss-Kronrod); shorten [a, b]", igk, egk, GK_MAX);
-        mm_res_method_stat(res, "error_estimate", egk);
-        mm_res_method_stat(res, "gauss_panels", mgl);
+                        "for %d pieces of Gauss-Kronrod); shorten [a, b]", gk.value, gk.err, GK_MAX);
+        mm_res_method_stat(res, "error_estimate", gk.err);
+        mm_res_method_stat(res, "gauss_kronrod_pieces", gk.pieces);
+        mm_res_method_stat(res, "gauss_panels", gl.pieces);
     }
-    mm_res_method(res, "sampling on an even grid; adaptive Gauss-Kronrod 7-15 and composite Gauss-Legendre", 0);
+    mm_res_method(res, "sampling on an even grid; adaptive Gauss-Kronrod 7-15 and composite Gauss-Legendre; "
+                       "golden-section search", 0);
     mm_res_method_stat(res, "evaluations", (double)c->evals);
     return MM_OK;
 }
@@ -326,7 +303,7 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     static const char *const vars[] = {"x"};
-    fctx c = {NULL, 0, 0};
+    fctx c = {NULL, 0};
     int rc = mm_expr_compile(in[P_F].text, vars, 1, &c.e, err);
     if (rc != MM_OK) {
         if (err)
@@ -341,6 +318,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 static const char *const references[] = {
     "R. Piessens, E. de Doncker-Kapenga, C. W. Uberhuber, D. K. Kahaner, QUADPACK, Springer 1983 (qk15)",
     "W. H. Press et al., Numerical Recipes, 3rd ed., Cambridge 2007, sections 4.5-4.6 and 10.2",
+    "W. Kahan, How futile are mindless assessments of roundoff in floating-point computation?, 2006",
     NULL,
 };
 
@@ -354,6 +332,8 @@ const mm_exercise mm_ex_num_plot = {
     .theory = "exercises/num/plot.md",
     .params = params,
     .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .references = references,
     .check = check,
     .solve = solve,

@@ -12,6 +12,9 @@
  * double-double arithmetic, each with an error estimate (mm_poly.h).
  * Checks: the backward error |p(z)| / sum |p_k| |z|^k of every root, and
  * Vieta's formulas (sum and product of the roots against the coefficients).
+ * A root is counted real when its error disc meets the real axis: a
+ * cluster of roots scattered around a multiple real root is real within
+ * its error, and the count says how many of the roots that covers.
  * Reference: A. Edelman, H. Murakami, Polynomial roots from companion matrix
  * eigenvalues, Math. Comp. 64 (1995) 763-776; J. H. Wilkinson, Rounding
  * Errors in Algebraic Processes, Prentice-Hall 1963, ch. 2.
@@ -27,44 +30,27 @@
 enum { P_P };
 
 static const mm_param params[] = {
-    [P_P] = {"p", "coefficients, highest power first", "", MM_VECTOR, 0, -1e6, 1e6, "1,2,3,4", NULL, 0, MAXC,
-             .help = "p(1) x^d + ... + p(d+1), as MATLAB's [1 2 3 4] for x^3 + 2x^2 + 3x + 4; at most degree 20"},
+    [P_P] = {"p", "coefficients, highest power first", "", MM_VECTOR, 0, -1e300, 1e300, "1,2,3,4", NULL, 0, MAXC,
+             .help = "p(1) x^d + ... + p(d+1), as MATLAB's [1 2 3 4] for x^3 + 2x^2 + 3x + 4; at most degree 20 "
+                     "(Wilkinson's (x-1)(x-2)...(x-20) is the classic hard case: beyond it double precision leaves "
+                     "no digit of most roots); coefficients of any size a double holds (to 1e300): finding roots "
+                     "does not depend on the scale of p"},
 };
 
-typedef struct cplx {
-    double re, im;
-} cplx;
+enum { O_DEGREE, O_REAL, O_MAXERR, O_ROOTS, O_PLANE, O_P };
 
-/* |p(z)| and sum |p_k| |z|^(d-k), both divided by max(1, |z|)^d so that
- * nothing overflows for large roots: for |z| > 1 Horner runs on the
- * reversed coefficients in 1/z.  The ratio is what the check needs. */
-static void backward(int d, const double *q, cplx z, double *pz, double *scale)
-{
-    double r = hypot(z.re, z.im);
-    double yr, yi = 0, s;
-    if (r <= 1) {
-        yr = q[0];
-        s = fabs(q[0]);
-        for (int k = 1; k <= d; k++) {
-            double tr = yr * z.re - yi * z.im + q[k];
-            yi = yr * z.im + yi * z.re;
-            yr = tr;
-            s = s * r + fabs(q[k]);
-        }
-    } else {
-        cplx w = {z.re / r / r, -z.im / r / r};       /* 1/z, without forming r^2 */
-        yr = q[d];
-        s = fabs(q[d]);
-        for (int k = d - 1; k >= 0; k--) {
-            double tr = yr * w.re - yi * w.im + q[k];
-            yi = yr * w.im + yi * w.re;
-            yr = tr;
-            s = s / r + fabs(q[k]);
-        }
-    }
-    *pz = hypot(yr, yi);
-    *scale = s;
-}
+static const char *const root_cols[] = {"re", "im", "modulus", "err", "multiplicity", NULL};
+static const char *const root_units[] = {"", "", "", "", "", NULL};
+
+static const mm_output outputs[] = {
+    [O_DEGREE] = MM_SCALAR("degree", "degree of p", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_REAL] = MM_SCALAR("real_roots", "number of real roots (a root whose error disc meets the real axis counts "
+                         "as real)", "", .flags = MM_ANSWER),
+    [O_MAXERR] = MM_SCALAR("max_err", "largest error bound of a root (a size: known to a factor of 2)", ""),
+    [O_ROOTS] = MM_TABLE("roots", "the roots, each within err of an exact root of p", root_cols, root_units),
+    [O_PLANE] = MM_SERIES("roots", "roots on the complex plane", "", "Re", "", .mark = "dots", .aspect = "equal"),
+    [O_P] = MM_SERIES("p", "p(x) on the real axis", "", "x", ""),
+};
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
@@ -72,7 +58,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     const double *p = in[P_P].data;
     mm_poly_root *roots = mm_res_alloc(res, (size_t)nc * sizeof *roots);
     if (!roots)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     int nr;
     int rc = mm_poly_roots(nc, p, roots, &nr, err);
     if (rc == MM_EVALUE)
@@ -90,15 +76,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_warn(res, "the first %d coefficient%s zero, so the degree is %d, not %d", lead,
                     lead > 1 ? "s are" : " is", d, nc - 1);
 
-    static const char *const cols[] = {"re", "im", "modulus", "err", "multiplicity"};
-    static const char *const units[] = {"", "", "", "", ""};
-    mm_table *t = mm_res_table_v1(res, "roots", nr, 5, cols, units);
-    mm_series *sz = mm_res_series_v1(res, "roots", "roots on the complex plane", "", "Re", "", nr);
+    mm_table *t = mm_res_table(res, O_ROOTS, nr);
+    mm_series *sz = mm_res_series(res, O_PLANE, nr);
     if (!t || !sz)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        return MM_ENOMEM;
     double worst_b = 0, max_err = 0;
     double sre = 0, serr = 0, sabs = 0, logprod = 0, lerr = 0;
-    int zeros = 0, nmult = 0, nill = 0, nreal = 0;
+    int zeros = 0, nmult = 0, nill = 0, nreal = 0, nsure = 0;
     double mult_err = 0, ill_err = 0;
     for (int i = 0; i < nr; i++) {
         const mm_poly_root *z = &roots[i];
@@ -111,7 +95,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         row[4] = z->multiplicity;
         sz->x[i] = z->re;
         sz->y[i] = z->im;
-        nreal += z->im == 0;
+        /* real when the disc |x - z| <= err meets the real axis; certainly
+         * real when the disc holds this root alone (a real polynomial's
+         * complex roots come in pairs, and the disc is symmetric about the
+         * axis), so it is computed real and simple */
+        nreal += fabs(z->im) <= z->err;
+        nsure += z->im == 0 && z->multiplicity == 1;
         max_err = fmax(max_err, z->err);
         if ((z->flags & MM_POLY_ROOT_MULTIPLE) && z->err > 0) {  /* exact zero roots are exact */
             nmult++;
@@ -121,9 +110,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             nill++;
             ill_err = fmax(ill_err, z->err);
         }
-        double pz, scale;
-        backward(d, q, (cplx){z->re, z->im}, &pz, &scale);
-        worst_b = fmax(worst_b, scale > 0 ? pz / scale : pz);
+        worst_b = fmax(worst_b, mm_poly_backward_error(d + 1, q, z->re, z->im));
         sre += z->re;
         serr += z->err;
         sabs += mod;
@@ -135,9 +122,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
     }
 
-    mm_res_scalar_v1(res, "degree", "degree of p", "", d);
-    mm_res_scalar_v1(res, "real_roots", "number of real roots", "", nreal);
-    mm_res_scalar_v1(res, "max_err", "largest error estimate of a root", "", max_err);
+    mm_res_scalar(res, O_DEGREE, d);
+    /* of the roots counted real but not certainly so, the true count can be
+     * lower by an even number (pairs of complex roots) */
+    int unsure = nreal - nsure;
+    mm_scalar *sr = mm_res_scalar_err(res, O_REAL, nreal, unsure - unsure % 2, MM_ERR_BOUND);
+    if (unsure > 1)
+        sr->text = mm_res_printf(res, "%d of them within their error of the real axis: between %d and %d real roots",
+                                 unsure, nreal - (unsure - unsure % 2), nreal);
+    else
+        sr->exact = 1;
+    mm_res_scalar_err(res, O_MAXERR, max_err, 0.5 * max_err, MM_ERR_ESTIMATE);
 
     if (d == 0) {
         mm_res_warn(res, "p is a nonzero constant: it has no roots");
@@ -171,7 +166,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (nmult)
         mm_res_warn(res, "%d roots form clusters (multiple roots, see the multiplicity column): a root of "
                     "multiplicity m is only determined to about eps^(1/m) of its size, here within %.2g; "
-                    "the computed values are scattered around the true root", nmult, mult_err);
+                    "the computed values are scattered around the true root%s", nmult, mult_err,
+                    unsure > 1 ? ", and those whose error reaches the real axis are counted as real roots" : "");
     if (nill)
         mm_res_warn(res, "%d simple root%s ill-conditioned: more than half of the digits are lost (error up to "
                     "%.2g); small changes of p move %s far", nill, nill > 1 ? "s are" : " is", ill_err,
@@ -193,9 +189,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         ok = isfinite(ys[i]);
     }
     if (ok) {
-        mm_series *s = mm_res_series_v1(res, "p", "p(x) on the real axis", "", "x", "", NP);
+        mm_series *s = mm_res_series(res, O_P, NP);
         if (!s)
-            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+            return MM_ENOMEM;
         for (int i = 0; i < NP; i++) {
             s->x[i] = xs[i];
             s->y[i] = ys[i];
@@ -223,6 +219,8 @@ const mm_exercise mm_ex_num_poly_roots = {
     .theory = "exercises/num/poly_roots.md",
     .params = params,
     .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .references = references,
     .check = NULL,
     .solve = solve,

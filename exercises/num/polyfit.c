@@ -7,45 +7,64 @@
  * y = 2.92537 x + 8.01493, and what "best" means: the residuals are
  * orthogonal to every power of x (the normal equations, eq. 3), so no
  * change of the coefficients can lower S.
- * Method: the data are centred and scaled, t = (x - mean) / spread, the
- * Vandermonde least-squares problem is solved by the SVD (LAPACK dgelsd)
- * and the coefficients are expanded back to powers of x (mm_poly_fit).
- * The fitted values, residuals, rms residual and plotted curve are
- * evaluated from the coefficients in t (the same least-squares problem,
- * solved again in t here), so they stay right when the terms c_k x^k
- * cancel; the coefficients shown are those in powers of x, as MATLAB's.
- * Checks, each on the scale of the data (max |y|): the coefficients of x^k
- * as shown reproduce the fitted values (fails when their terms cancel);
- * the normal equations A^T r = 0 with the residuals as shown; the fitted
- * values against a second solution by the normal equations themselves
- * (whose error grows with cond^2 instead of cond); for degree 0 and 1 the
- * closed-form mean and regression line.
+ * Method: MATLAB's route in double (mm_poly_fit: centre and scale x, SVD
+ * least squares, expand back to powers of x) is shown beside the numbers
+ * printed, which are the exact least-squares solution rounded to double,
+ * each with its bound: the same problem by Householder QR in double-double
+ * (mm_poly_fit_dd).  A coefficient smaller than its own bound has no digit
+ * determined (the powers of x cancel); one smaller than its standard error
+ * (from the scatter of the data) is not distinguishable from 0.
+ * Checks: the normal equations with the residuals as printed (eq. 3); the
+ * coefficients as printed reproduce the fit to within the rounding of
+ * p(x) in double; the fitted values by the SVD and by the normal equations
+ * in double, each within its forward error bound (eq. 4); for degree 0 and
+ * 1 the closed forms (eq. 5).
  * Reference: G. Strang, Introduction to Linear Algebra, 5th ed., section
  * 4.3; A. Bjorck, Numerical Methods for Least Squares Problems, SIAM 1996.
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
 
+#include "mm_dd.h"
 #include "mm_exhelp.h"
 #include "mm_linalg.h"
 #include "mm_poly.h"
 
 #define MAXPTS 200
 #define MAXDEG 8
+#define U (DBL_EPSILON / 2)
 
 enum { P_X, P_Y, P_DEGREE };
 
 static const mm_param params[] = {
-    [P_X] = {"x", "abscissae x_i", "", MM_VECTOR, 0, -1e4, 1e4, "1,3,10", NULL, 0, MAXPTS,
-             .help = "where the data were measured (at most 200 points)"},
-    [P_Y] = {"y", "measured values y_i", "", MM_VECTOR, 0, -1e9, 1e9, "10,18,37", NULL, 0, MAXPTS,
-             .help = "one value per x"},
+    [P_X] = {"x", "abscissae x_i", "", MM_VECTOR, 0, -1e6, 1e6, "1,3,10", NULL, 0, MAXPTS,
+             .help = "where the data were measured: at most 200 points (a table to type or paste), |x| <= 1e6 "
+                     "so that x^8 stays far inside the doubles"},
+    [P_Y] = {"y", "measured values y_i", "", MM_VECTOR, 0, -1e100, 1e100, "10,18,37", NULL, 0, MAXPTS,
+             .help = "one value per x, of any size to 1e100"},
     [P_DEGREE] = {"degree", "degree of the polynomial", "", MM_INT, 1, 0, MAXDEG,
-                  .help = "1 is a straight line; must be below the number of distinct x values"},
+                  .help = "1 is a straight line; must be below the number of distinct x values; at most 8 (a "
+                          "fit of higher degree swings wildly between the points)"},
 };
 
-static const char *const cname[MAXDEG + 1] = {"c0", "c1", "c2", "c3", "c4", "c5", "c6", "c7", "c8"};
+enum { O_C, O_RMS, O_COND, O_COEFS, O_RESID, O_DATA, O_FIT };
+
+static const char *const coef_cols[] = {"power", "c", "c_err", "std_error", "c_matlab", NULL};
+static const char *const coef_units[] = {"", "", "", "", "", NULL};
+static const char *const res_cols[] = {"x", "y", "fit", "residual", "err", NULL};
+static const char *const res_units[] = {"", "", "", "", "", NULL};
+
+static const mm_output outputs[] = {
+    [O_C] = MM_SCALAR("c%d", "coefficient c%d (c0 of the highest power, as MATLAB's polyfit)", "",
+                      .flags = MM_ANSWER, .first = 0, .last = MAXDEG),
+    [O_RMS] = MM_SCALAR("rms_residual", "rms residual sqrt(sum r_i^2 / n)", "", .flags = MM_ANSWER),
+    [O_COND] = MM_SCALAR("cond", "condition number of the least-squares matrix in t = (x - mean) / spread", ""),
+    [O_COEFS] = MM_TABLE("coefficients", "coefficients: exact to the digits shown, their standard error from the "
+                         "data's scatter, and MATLAB's polyfit in double", coef_cols, coef_units),
+    [O_RESID] = MM_TABLE("residuals", "fitted values and residuals, each within err", res_cols, res_units),
+    [O_DATA] = MM_SERIES("data", "data points", "", "x", "", .figure = "fit", .mark = "dots"),
+    [O_FIT] = MM_SERIES("fit", "fitted polynomial", "", "x", "", .figure = "fit"),
+};
 
 static int distinct(int n, const double *x)
 {
@@ -71,141 +90,154 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
+/* Forward error bound of fitted values from a backward-stable solve in
+ * double (eq. 4): the solution of (A + dA) b = y with ||dA|| <= g ||A||
+ * moves A b by at most g (||A|| ||b|| kappa + kappa ||r||) + the same for y
+ * (Wedin; Bjorck 1996, 1.4); the normal equations have kappa^2 in place of
+ * kappa (their backward error is in A^T A). */
+static double fit_bound(double g, double kappa, double anorm, double bnorm, double rnorm, double ynorm, int squared)
+{
+    double k = squared ? kappa * kappa : kappa;
+    return g * (k * anorm * bnorm + kappa * rnorm + ynorm);
+}
+
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int n = in[P_X].cols, d = (int)in[P_DEGREE].x, m = d + 1;
     const double *x = in[P_X].data, *y = in[P_Y].data;
-    double c[MAXDEG + 1], b[MAXDEG + 1];
-    double *fit = mm_res_alloc(res, n * sizeof *fit), *r = mm_res_alloc(res, n * sizeof *r);
-    double *t = mm_res_alloc(res, n * sizeof *t), *mag = mm_res_alloc(res, n * sizeof *mag);
-    double *V = mm_res_alloc(res, (size_t)n * m * sizeof *V);
-    if (!fit || !r || !t || !mag || !V)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    double c[MAXDEG + 1], ce[MAXDEG + 1], se[MAXDEG + 1], bt[MAXDEG + 1], cm[MAXDEG + 1];
+    double *fit = mm_res_alloc(res, 4 * (size_t)n * sizeof *fit);
+    if (!fit)
+        return MM_ENOMEM;
+    double *fe = fit + n, *r = fe + n, *t = r + n;
 
-    mm_poly_fit_info info;
-    int rc = mm_poly_fit(n, x, y, d, c, &info, err);
+    mm_poly_fit_dd_info info;
+    int rc = mm_poly_fit_dd(n, x, y, d, c, ce, fit, fe, se, bt, &info, err);
     if (rc != MM_OK)
         return rc;
+    mm_poly_fit_info mi;                                   /* MATLAB's polyfit in double */
+    if ((rc = mm_poly_fit(n, x, y, d, cm, &mi, err)) != MM_OK)
+        return rc;
 
+    mm_table *tc = mm_res_table(res, O_COEFS, m);
+    mm_table *tr = mm_res_table(res, O_RESID, n);
+    if (!tc || !tr)
+        return MM_ENOMEM;
+    int noise = 0, insignificant = 0;
     for (int k = 0; k <= d; k++) {
-        char label[40];
-        if (k == d)
-            snprintf(label, sizeof label, "constant term");
-        else if (k == d - 1)
-            snprintf(label, sizeof label, "coefficient of x");
-        else
-            snprintf(label, sizeof label, "coefficient of x^%d", d - k);
-        const char *l = mm_res_strdup(res, label);
-        if (!l)
-            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-        mm_res_scalar_v1(res, cname[k], l, "", c[k]);
-    }
-
-    /* the same fit in the centred, scaled t = (x - mean) / spread (mean and
-     * spread as mm_poly_fit chose them): coefficients b_k of t^k by SVD least
-     * squares on the Vandermonde matrix of t.  The fitted values, residuals
-     * and the plotted curve are evaluated from b in t, where the terms are
-     * of the size of the data and do not cancel: they are right even when
-     * the coefficients of powers of x are useless for evaluating p(x). */
-    const double mu = info.mu, sp = info.scale;
-    for (int i = 0; i < n; i++) {
-        t[i] = (x[i] - mu) / sp;
-        double v = 1;
-        for (int k = d; k >= 0; k--) {
-            V[(size_t)i * m + k] = v;
-            v *= t[i];
+        mm_scalar *s = mm_res_scalar_i(res, O_C, k, c[k]);
+        s->error = ce[k];
+        s->error_kind = MM_ERR_BOUND;
+        if (!(fabs(c[k]) > ce[k])) {
+            s->text = "below its own error: no digit determined";
+            noise++;
+        } else if (info.dof > 0 && fabs(c[k]) < se[k]) {
+            s->text = "below its standard error: not distinguishable from 0 by these data";
+            insignificant++;
         }
+        double *row = tc->cell + 5 * k;
+        row[0] = d - k, row[1] = c[k], row[2] = ce[k], row[3] = se[k], row[4] = cm[k];
+        if (info.dof == 0)
+            tc->text[5 * k + 3] = "no data left over";
     }
-    rc = mm_linalg_lstsq(n, m, 1, V, y, 0.0, b, NULL, NULL, NULL, err);
-    if (rc != MM_OK)
-        return rc;
-
-    /* residuals (eq. 2) from the fit in t; and, for the coefficients c as
-     * shown, p(x_i) by Horner in x and the size of its terms sum |c_k||x|^k,
-     * which rounding scales with */
-    double ss = 0, ymax = 0, xlo = x[0], xhi = x[0], cdev = 0;
+    /* the rms of the exact fit, to its bound; when the data are fitted
+     * exactly (interpolation) it is 0 to rounding, and a fit in double
+     * (MATLAB's, evaluated by polyval in powers of x) leaves residuals of
+     * about (2d + 2) u sum |c_k| |x|^k + (n + d) u max |y|: that is its
+     * error then */
+    double terms = 0;
     for (int i = 0; i < n; i++) {
-        fit[i] = mm_poly_eval(m, b, t[i], NULL);
+        double tk = 0;
+        for (int k = 0; k <= d; k++)
+            tk = tk * fabs(x[i]) + fabs(c[k]);
+        terms = fmax(terms, tk);
+    }
+    double ylevel = (2.0 * d + 2) * U * terms + (n + m) * U * mm_maxabs(y, n);
+    if (info.rms <= ylevel)
+        mm_res_scalar_err(res, O_RMS, info.rms, info.rms_err + ylevel, MM_ERR_ESTIMATE);
+    else
+        mm_res_scalar_err(res, O_RMS, info.rms, info.rms_err, MM_ERR_BOUND);
+    mm_res_scalar_err(res, O_COND, info.cond, info.cond_err, MM_ERR_BOUND);
+
+    double ymax = mm_maxabs(y, n), xlo = x[0], xhi = x[0], magmax = 0, cdev = 0, ctol = 0;
+    for (int i = 0; i < n; i++) {
         r[i] = y[i] - fit[i];
-        ss += r[i] * r[i];
-        cdev = fmax(cdev, fabs(mm_poly_eval(m, c, x[i], NULL) - fit[i]));
-        double s = fabs(c[0]);
-        for (int k = 1; k <= d; k++)
-            s = s * fabs(x[i]) + fabs(c[k]);
-        mag[i] = s;
-        ymax = fmax(ymax, fabs(y[i]));
+        double *row = tr->cell + 5 * i;
+        row[0] = x[i], row[1] = y[i], row[2] = fit[i], row[3] = r[i], row[4] = fe[i] + U * fabs(r[i]);
         xlo = fmin(xlo, x[i]);
         xhi = fmax(xhi, x[i]);
+        /* p(x_i) by Horner from the printed c, against the fit: what rounding
+         * makes of it is at most (2d + 1) u sum |c_k| |x|^k plus the
+         * coefficients' own bounds (Higham, Accuracy and Stability, 5.1) */
+        double mag = 0, cerr = 0;
+        for (int k = 0; k <= d; k++) {
+            mag = mag * fabs(x[i]) + fabs(c[k]);
+            cerr = cerr * fabs(x[i]) + ce[k];
+        }
+        magmax = fmax(magmax, mag);
+        cdev = fmax(cdev, fabs(mm_poly_eval(m, c, x[i], NULL) - fit[i]) / (1.01 * ((2 * d + 1) * U * mag + cerr + fe[i]) +
+                                                                          DBL_MIN));
+        ctol = fmax(ctol, (2 * d + 1) * U * mag);
     }
-    double rms = sqrt(ss / n), magmax = mm_maxabs(mag, n), fitmax = mm_maxabs(fit, n);
-    mm_res_scalar_v1(res, "rms_residual", "rms residual sqrt(sum r_i^2 / n)", "", rms);
-    mm_res_scalar_v1(res, "cond", "condition number of the scaled least-squares matrix", "", info.cond);
 
-    /* check 0: the coefficients c_k of powers of x, as shown, reproduce the
-     * fitted values: p(x_i) evaluated from them against the fit in t, on the
-     * scale of the data.  Rounding makes them differ by about eps times the
-     * terms c_k x^k; when those terms cancel (data far from x = 0 and a high
-     * degree) the difference reaches the size of the data and this check
-     * fails: the coefficients are then of no use for computing p(x).  Half
-     * the digits (1e-8 of max |y|) is the bar, as for the warning below. */
-    const double ctol = 1e-8;
-    mm_res_check_abs(res, "p(x_i) from the coefficients c_k of x^k vs the fit in t = (x - mean) / spread: "
-                     "max |difference| / max |y| (at least 8 of 16 digits)",
-                     ymax > 0 ? cdev / ymax : cdev, 0, ctol);
+    /* check: the printed c reproduce the fitted values within the rounding
+     * of p(x) computed from them (when the terms c_k x^k cancel, that
+     * rounding is large: the warning below says so) */
+    mm_res_check_abs(res, "p(x_i) from the coefficients c_k of x^k vs the fitted values: worst |difference| / (the "
+                     "rounding of Horner's rule with these c_k) <= 1", cdev, 0, 1);
 
-    /* check 1: the normal equations (eq. 3), A^T r = 0, with the residuals
-     * as shown, in the basis of powers of t (the same polynomials as powers
-     * of x, but well scaled); each sum relative to the size of the data.  A
-     * backward-stable least-squares solution gives fitted values within about
-     * cond * eps of the exact projection (Bjorck 1996, ch. 1), hence cond */
+    /* check: the normal equations (eq. 3) with the residuals as printed, in
+     * the exact basis t = (x - mu) / scale: sum t_i^k r_i = 0 within what the
+     * rounding of the residuals leaves */
     double worst = 0;
+    for (int i = 0; i < n; i++)
+        t[i] = (x[i] - info.mu) / info.scale;                /* info.scale is a power of 2 */
     for (int k = 0; k <= d; k++) {
-        double s = 0, sa = 0;
+        mm_dd s = mm_dd_from(0);
+        double bound = 0;
         for (int i = 0; i < n; i++) {
-            double tk = pow(t[i], k);
-            s += tk * r[i];
-            sa += fabs(tk) * ymax;
+            mm_dd tk = mm_dd_from(1);
+            for (int j = 0; j < k; j++)
+                tk = mm_dd_mul(tk, mm_dd_two_sum(x[i], -info.mu));
+            tk = mm_dd_mul_d(tk, pow(info.scale, -k));
+            s = mm_dd_add(s, mm_dd_mul_d(tk, r[i]));
+            bound += fabs(mm_dd_val(tk)) * (fe[i] + U * fabs(r[i]) + 4 * (k + 2) * MM_DD_EPS * fabs(r[i]));
         }
-        worst = fmax(worst, sa > 0 ? fabs(s) / sa : fabs(s));
+        worst = fmax(worst, mm_dd_abs(s) / (1.01 * bound + DBL_MIN));
     }
-    mm_res_check_abs(res, "normal equations: worst |sum t_i^k r_i| / (max |y| sum |t_i|^k), eq. (3) (cond eps)",
-                     worst, 0, 16.0 * (d + 2) * (d + 2) * fmax(1, info.cond) * DBL_EPSILON);
+    mm_res_check_abs(res, "normal equations, eq. (3): worst |sum t_i^k r_i| / (the rounding of the printed r_i) <= 1",
+                     worst, 0, 1);
 
-    /* check 2: a second solution, by the normal equations (A^T A) a = A^T y
-     * in t (LU); their error grows like cond^2 eps (eq. 4), so compare the
-     * fitted values as shown within that, on the scale of the data */
-    double N[(MAXDEG + 1) * (MAXDEG + 1)] = {0}, rhs[MAXDEG + 1] = {0}, a[MAXDEG + 1];
-    for (int i = 0; i < n; i++) {
-        double pw[2 * MAXDEG + 1];
-        pw[0] = 1;
-        for (int k = 1; k <= 2 * d; k++)
-            pw[k] = pw[k - 1] * t[i];
-        for (int j = 0; j <= d; j++) {
-            rhs[j] += pw[j] * y[i];
-            for (int k = 0; k <= d; k++)
-                N[j * m + k] += pw[j + k];
-        }
-    }
-    mm_linalg_solve_info si;
-    mm_error local;
-    double tol2 = 64.0 * m * n * info.cond * info.cond * DBL_EPSILON;
-    rc = mm_linalg_solve(m, 1, N, rhs, a, &si, &local);
-    if (rc == MM_OK && tol2 < 1e-2) {
-        double dmax = 0;
+    /* check: two solutions in double, by the SVD (MATLAB's route, in t) and
+     * by the normal equations (A^T A) a = A^T y (LU), each within its forward
+     * error bound from the exact fit (eq. 4): kappa eps and kappa^2 eps */
+    double *fs = mm_res_alloc(res, 2 * (size_t)n * sizeof *fs), *fn = fs + n, bsv, bne;
+    if (!fs)
+        return MM_ENOMEM;
+    if (mm_poly_fit_values(n, x, y, d, mi.mu, mi.scale, fs, fn, &bsv, &bne, NULL) == MM_OK) {
+        double kappa = mi.cond, anorm = sqrt((double)n * m), rn = info.rms * sqrt((double)n), yn = 0;
+        double dsvd = 0, dne = 0, g = 2.0 * m * n * U;      /* backward error of Householder QR / SVD, ~ m n u */
         for (int i = 0; i < n; i++) {
-            double v = 0;                            /* sum a_k t^k, Horner */
-            for (int k = d; k >= 0; k--)
-                v = v * t[i] + a[k];
-            dmax = fmax(dmax, fabs(v - fit[i]));
+            yn += y[i] * y[i];
+            dsvd = fmax(dsvd, fabs(fs[i] - fit[i]) - fe[i]);
+            dne = fmax(dne, fabs(fn[i] - fit[i]) - fe[i]);
         }
-        mm_res_check_abs(res, "fitted values: SVD vs normal equations, max |difference| / max |y| (cond^2 eps)",
-                         ymax > 0 ? dmax / ymax : dmax, 0, tol2);
-    } else {
-        mm_res_warn(res, "the normal equations A^T A a = A^T y are too ill-conditioned here (cond^2 = %.2g) "
-                    "to serve as a second solution: this is why polyfit works on A itself", info.cond * info.cond);
+        yn = sqrt(yn);
+        double esvd = fit_bound(g, kappa, anorm, bsv, rn, yn, 0), ene = fit_bound(g, kappa, anorm, bne, rn, yn, 1);
+        if (ene < 1e-2 * ymax) {
+            mm_res_check_abs(res, "fitted values: SVD vs normal equations, both in double: worst |error| / (its "
+                             "bound, kappa eps and kappa^2 eps), eq. (4), <= 1",
+                             fmax(fmax(dsvd, 0) / esvd, fmax(dne, 0) / ene), 0, 1);
+            mm_res_method_stat(res, "svd_fit_error", fmax(dsvd, 0));
+            mm_res_method_stat(res, "normal_equations_fit_error", fmax(dne, 0));
+        } else {
+            mm_res_warn(res, "the normal equations A^T A a = A^T y are too ill-conditioned here (cond^2 = %.2g) "
+                        "to serve as a second solution: this is why polyfit works on A itself", kappa * kappa);
+        }
     }
 
-    /* check 3: closed forms for the mean (degree 0) and the regression line */
+    /* check: closed forms for the mean (degree 0) and the regression line
+     * (eq. 5), in double, each within the rounding of its own sums */
     double ybar = 0, mean = 0;
     for (int i = 0; i < n; i++) {
         ybar += y[i];
@@ -214,62 +246,66 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     ybar /= n;
     mean /= n;
     if (d == 0) {
-        mm_res_check_abs(res, "c0 = mean of y", c[0], ybar, 8.0 * n * DBL_EPSILON * ymax);
+        mm_res_check_abs(res, "c0 = mean of y", c[0], ybar, (n + 1) * U * ymax + ce[0]);
     } else if (d == 1) {
-        double sxx = 0, sxy = 0, syy = 0;
+        double sxx = 0, sxy = 0, ax = 0, axy = 0;
         for (int i = 0; i < n; i++) {
             sxx += (x[i] - mean) * (x[i] - mean);
             sxy += (x[i] - mean) * (y[i] - ybar);
-            syy += (y[i] - ybar) * (y[i] - ybar);
+            ax += fabs(x[i] - mean) * (fabs(x[i]) + fabs(mean));
+            axy += fabs(x[i] - mean) * (fabs(y[i]) + fabs(ybar)) + fabs(y[i] - ybar) * (fabs(x[i]) + fabs(mean));
         }
+        /* rounding of the sums: (n + 3) u relative to the sums of |terms|,
+         * the means' own rounding included */
         double slope = sxy / sxx, icpt = ybar - slope * mean;
-        double sscale = sqrt(syy / sxx) + fabs(slope);       /* what the slope is made of */
-        mm_res_check_abs(res, "c0 = S_xy / S_xx (regression line, eq. 5)", c[0], slope,
-                         16.0 * n * DBL_EPSILON * sscale);
-        mm_res_check_abs(res, "c1 = mean(y) - c0 mean(x) (eq. 5)", c[1], icpt,
-                         16.0 * n * DBL_EPSILON * (ymax + sscale * fmax(fabs(xlo), fabs(xhi))));
+        double es = (n + 4) * U * (axy / sxx + fabs(slope) * ax / sxx) + U * fabs(slope);
+        mm_res_check_abs(res, "c0 = S_xy / S_xx (regression line, eq. 5), within its rounding", c[0], slope,
+                         1.01 * es + ce[0]);
+        mm_res_check_abs(res, "c1 = mean(y) - c0 mean(x) (eq. 5), within its rounding", c[1], icpt,
+                         1.01 * ((n + 2) * U * (ymax + fabs(slope * mean)) + es * fabs(mean)) + ce[1]);
     }
 
-    /* plots: the data, the fitted curve a little beyond them (in t), the
-     * residuals */
-    mm_series *sd = mm_res_series_v1(res, "data", "data points", "", "x", "", n);
+    /* plots: the data, and the fitted curve a little beyond them, from the
+     * coefficients in t (no cancellation) */
     enum { NP = 201 };
-    mm_series *sf = mm_res_series_v1(res, "fit", "fitted polynomial", "", "x", "", NP);
-    static const char *const cols[] = {"x", "y", "fit", "residual"};
-    static const char *const units[] = {"", "", "", ""};
-    mm_table *tb = mm_res_table_v1(res, "residuals", n, 4, cols, units);
-    if (!sd || !sf || !tb)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_series *sd = mm_res_series(res, O_DATA, n), *sf = mm_res_series(res, O_FIT, NP);
+    if (!sd || !sf)
+        return MM_ENOMEM;
     for (int i = 0; i < n; i++) {
         sd->x[i] = x[i];
         sd->y[i] = y[i];
-        double *row = tb->cell + 4 * i;
-        row[0] = x[i];
-        row[1] = y[i];
-        row[2] = fit[i];
-        row[3] = r[i];
     }
     double margin = xhi > xlo ? 0.05 * (xhi - xlo) : 1;
     mm_linspace(xlo - margin, xhi + margin, NP, sf->x);
     for (int i = 0; i < NP; i++)
-        sf->y[i] = mm_poly_eval(m, b, (sf->x[i] - mu) / sp, NULL);
+        sf->y[i] = mm_poly_eval(m, bt, (sf->x[i] - info.mu) / info.scale, NULL);
 
-    mm_res_method(res, "least squares by SVD on centred, scaled x (LAPACK dgelsd)", 0);
-    mm_res_method_stat(res, "rank", info.rank);
-    if (n == d + 1 || rms <= 64 * DBL_EPSILON * ymax)
+    mm_res_method(res, "polyfit: least squares by SVD on centred, scaled x (LAPACK dgelsd) in double; the numbers "
+                       "printed by Householder QR in double-double", 0);
+    mm_res_method_stat(res, "rank", mi.rank);
+    if (n == m || info.rms <= 64 * DBL_EPSILON * ymax)
         mm_res_warn(res, "the polynomial passes through every point (as many coefficients as distinct points, "
                     "or exact data): this is interpolation, and the residual says nothing about measurement "
                     "error");
-    double cancel = magmax / fmax(fitmax, ymax);
+    double fitmax = mm_maxabs(fit, n), cancel = magmax / fmax(fitmax, ymax);
     if (cancel * DBL_EPSILON > 1e-8)
         mm_res_warn(res, "the terms c_k x^k reach %.2g but p(x) is only about %.2g: they cancel, and %.0f of the "
-                    "16 digits are lost whenever p(x) is computed from these coefficients (here they miss the "
-                    "fitted values by up to %.2g); the fitted values, residuals and curve shown are computed in "
-                    "t = (x - mean) / spread and are not affected. Shift x to sit around 0",
-                    magmax, fmax(fitmax, ymax), fmin(16, log10(cancel)), cdev);
-    if (info.rank < m)
-        mm_res_warn(res, "the data fix only %d of the %d coefficients to working precision (numerical rank %d): "
-                    "the fit of least norm is shown; lower the degree or spread x", info.rank, m, info.rank);
+                    "16 digits are lost whenever p(x) is computed from these coefficients (up to %.2g here); the "
+                    "fitted values, residuals and curve shown are computed in t = (x - mean) / spread and are not "
+                    "affected. Shift x to sit around 0", magmax, fmax(fitmax, ymax), fmin(16, log10(cancel)), ctol);
+    if (noise)
+        mm_res_warn(res, "%d coefficient%s smaller than %s own error bound (see c_err): no digit of %s is "
+                    "determined, because the powers of x cancel; shift x to sit around 0", noise,
+                    noise > 1 ? "s are" : " is", noise > 1 ? "their" : "its", noise > 1 ? "them" : "it");
+    if (insignificant)
+        mm_res_warn(res, "%d coefficient%s smaller than %s standard error (std_error, from the scatter of the data "
+                    "about the fit): these data cannot tell %s from 0; a lower degree may fit as well",
+                    insignificant, insignificant > 1 ? "s are" : " is", insignificant > 1 ? "their" : "its",
+                    insignificant > 1 ? "them" : "it");
+    if (mi.rank < m)
+        mm_res_warn(res, "in double precision the data fix only %d of the %d coefficients (numerical rank %d): "
+                    "MATLAB's polyfit returns the fit of least norm (c_matlab); lower the degree or spread x", mi.rank,
+                    m, mi.rank);
     if (info.cond * DBL_EPSILON > 1e-8)
         mm_res_warn(res, "the fit is ill-conditioned (cond = %.2g): the coefficients are sensitive to the "
                     "last digits of the data; lower the degree", info.cond);
@@ -292,6 +328,8 @@ const mm_exercise mm_ex_num_polyfit = {
     .theory = "exercises/num/polyfit.md",
     .params = params,
     .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .references = references,
     .check = check,
     .solve = solve,

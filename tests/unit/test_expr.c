@@ -1,6 +1,7 @@
 /* test_expr.c — mm_expr: values against C's own arithmetic, the messages
  * a learner sees, the limits, and concurrent use from several threads.
  */
+#include <fenv.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
@@ -331,9 +332,48 @@ static void concurrent_compiles_in_threads_should_not_interfere(void **state)
     }
 }
 
+/* mm_expr_eval_err: the estimate covers the true error of the double value
+ * (true values from mpmath at 50 digits) and leaves the rounding mode */
+static void error_estimates_should_cover_the_rounding(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *f;
+        double x, exact;
+    } cases[] = {
+        /* the book's root: the double value is 0, the true value -7.43e-17 */
+        {"x^3+sin(x)-2", 1.0433859882095546, -7.4269252590971776325e-17},
+        /* pi is rounded: sin(pi x) at 3 is 0, the double value 3.67e-16 */
+        {"sin(pi*x)", 3, 0},
+        /* cancellation: exp(x) - 1 - x at 1e-9 is 5.0000000016666667e-19 */
+        {"exp(x)-1-x", 1e-9, 5.0000000016666666671e-19},
+        /* two large terms that cancel: 1/(x-1) - 1/x at 1e8 = 1.00000001e-16 */
+        {"1/(x-1)-1/x", 1e8, 1.0000000100000001e-16},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        mm_expr *e;
+        assert_int_equal(mm_expr_compile(cases[i].f, X, 1, &e, NULL), MM_OK);
+        double err, v = mm_expr_eval_err(e, &cases[i].x, &err);
+        if (!(fabs(v - cases[i].exact) <= err))
+            fail_msg("%s at %g: value %.17g, true %.17g, estimate %.3g", cases[i].f, cases[i].x, v,
+                     cases[i].exact, err);
+        assert_true(err < 1e-13);                      /* an estimate, not a shrug */
+        check_abs(v, mm_expr_eval(e, &cases[i].x), 0, "the same value as mm_expr_eval");
+        mm_expr_free(e);
+    }
+    assert_int_equal(fegetround(), FE_TONEAREST);
+    mm_expr *e;
+    assert_int_equal(mm_expr_compile("1/x", X, 1, &e, NULL), MM_OK);
+    double zero = 0, err;
+    mm_expr_eval_err(e, &zero, &err);
+    assert_true(isinf(err));
+    mm_expr_free(e);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(error_estimates_should_cover_the_rounding),
         cmocka_unit_test(x_cubed_plus_sin_x_minus_2_should_have_its_known_values),
         cmocka_unit_test(operators_and_functions_should_follow_the_documented_rules),
         cmocka_unit_test(constants_pi_and_e_should_be_the_correctly_rounded_values),

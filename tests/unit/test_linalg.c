@@ -741,6 +741,181 @@ static void solvers_should_give_identical_answers_from_many_threads(void **state
     free(jobs); free(ref); free(M); free(K);
 }
 
+/* ==== double-double routines: every digit, with a bound ============================ */
+
+static void dd_eigenvalues_of_a_chain_should_be_right_to_the_last_digit(void **state)
+{
+    (void)state;
+    /* fixed-free chain of 12 (k = 100, m = 1): lambda_j = 400 sin^2((2j-1) pi / 50);
+     * the closed form in double is within 2 ulps, so the dd result with its
+     * bound must land there */
+    enum { N = 12 };
+    double K[N * N], M[N * N], lam[N], le[N], V[N * N];
+    chain(N, 100, 1, 1, K, M);
+    assert_int_equal(mm_linalg_sygv_dd(N, K, M, lam, le, V, NULL), MM_OK);
+    for (int j = 0; j < N; j++) {
+        double s = sin((2 * j + 1) * PI / (4 * N + 2)), want = 400 * s * s;
+        check_rel(lam[j], want, 4 * EPS, "lambda_j of the chain");
+        assert_true(le[j] <= 2 * EPS * lam[j]);        /* the bound is a rounding, no more */
+        assert_true(fabs(lam[j] - want) <= le[j] + 3 * EPS * want);
+    }
+    /* modes M-orthonormal to rounding */
+    for (int j = 0; j < N; j++)
+        for (int l = 0; l <= j; l++) {
+            double g = 0;
+            for (int i = 0; i < N; i++)
+                g += V[i * N + j] * V[i * N + l];
+            check_abs(g, j == l, 8 * N * EPS, "V^T M V = I");
+        }
+}
+
+static void dd_eigenvalues_should_be_right_where_lapack_loses_them(void **state)
+{
+    (void)state;
+    /* graded chain: eig in double is 4.8e-7 off lambda_min; mpmath at 40
+     * digits: 0.49999999937499999987, 1e9, 1999999998.5000000006 */
+    double K[9] = {1e9, -1, 0, -1, 1e9, -999999999, 0, -999999999, 999999999}, lam[3], le[3];
+    assert_int_equal(mm_linalg_sygv_dd(3, K, NULL, lam, le, NULL, NULL), MM_OK);
+    check_rel(lam[0], 0.49999999937499999987, EPS, "lambda_min of the graded chain");
+    assert_true(fabs(lam[0] - 0.49999999937499999987) <= le[0] + EPS * lam[0] / 2);
+    check_rel(lam[2], 1999999998.5000000006, EPS, "lambda_max");
+    /* M = diag(1e6, 1e-6): lambda_min = 9.99999999999e-7 exactly (decimal) */
+    double K2[4] = {2, -1, -1, 1}, M2[4] = {1e6, 0, 0, 1e-6};
+    assert_int_equal(mm_linalg_sygv_dd(2, K2, M2, lam, le, NULL, NULL), MM_OK);
+    check_rel(lam[0], 9.99999999999e-7, EPS, "small lambda beside a large one");
+    /* free chain: the rigid-body eigenvalue is 0 within its bound */
+    double K3[4] = {100, -100, -100, 100};
+    assert_int_equal(mm_linalg_sygv_dd(2, K3, NULL, lam, le, NULL, NULL), MM_OK);
+    assert_true(fabs(lam[0]) <= le[0] && le[0] < 1e-25);
+    check_rel(lam[1], 200, EPS, "the elastic mode");
+}
+
+static void dd_should_reject_what_the_lapack_routines_reject(void **state)
+{
+    (void)state;
+    double K[4] = {2, -1, -1.5, 2}, M[4] = {1, 0, 0, -1}, lam[2], le[2];
+    mm_error err;
+    assert_int_equal(mm_linalg_sygv_dd(2, K, NULL, lam, le, NULL, &err), MM_EVALUE);
+    assert_string_equal(err.param, "K");
+    double K2[4] = {2, -1, -1, 2};
+    assert_int_equal(mm_linalg_sygv_dd(2, K2, M, lam, le, NULL, &err), MM_ESINGULAR);
+    assert_string_equal(err.param, "M");
+    assert_int_equal(mm_linalg_sygv_dd(MM_LINALG_DD_MAX_N + 1, K2, NULL, lam, le, NULL, &err), MM_ERANGE);
+}
+
+static void dd_singular_values_and_solve_should_be_right_for_hilbert_12(void **state)
+{
+    (void)state;
+    /* Hilbert-12 (as doubles, cond 1.68e16): mpmath svd at 80 digits */
+    enum { N = 12 };
+    double H[N * N], s[N], se[N], x[N], xe[N], b[N], r;
+    for (int i = 0; i < N; i++)
+        for (int j = 0; j < N; j++)
+            H[i * N + j] = 1.0 / (i + j + 1);
+    assert_int_equal(mm_linalg_svdvals_dd(N, N, H, s, se, NULL), MM_OK);
+    check_rel(s[0], 1.7953720595619973, EPS, "sigma_max of Hilbert-12");
+    check_rel(s[N - 1], 1.0674897547441723e-16, 2 * EPS, "sigma_min of Hilbert-12, to its last digit");
+    assert_true(fabs(s[N - 1] - 1.0674897547441723e-16) <= se[N - 1] + EPS * s[N - 1]);
+    check_rel(s[0] / s[N - 1], 16818635041535031.93, 4 * EPS, "cond_2 of Hilbert-12 (LAPACK in double: 4 % off)");
+    /* H x = H 1 has x = 1 exactly only if H 1 is exact: take b = H e_1, x = e_1 */
+    for (int i = 0; i < N; i++)
+        b[i] = H[i * N];
+    assert_int_equal(mm_linalg_solve_dd(N, H, b, s[N - 1] - se[N - 1], x, xe, &r, NULL), MM_OK);
+    for (int i = 0; i < N; i++) {
+        check_abs(x[i], i == 0, xe[i], "x within its bound");
+        assert_true(xe[i] < 1e-12);                      /* 32 digits less cond 1.7e16: ~1e-16 */
+    }
+    /* singular: no bound of sigma_min above 0 */
+    double S[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9}, s3[3], se3[3];
+    assert_int_equal(mm_linalg_svdvals_dd(3, 3, S, s3, se3, NULL), MM_OK);
+    assert_true(s3[2] - se3[2] <= 0);
+    assert_int_equal(mm_linalg_solve_dd(3, S, b, s3[2] - se3[2], x, xe, NULL, NULL), MM_ESINGULAR);
+}
+
+static void one_symmetry_rule_should_serve_every_module(void **state)
+{
+    (void)state;
+    double A[4] = {1, 2, 2 + 1e-13, 5}, B[4] = {1, 2, 2 + 1e-11, 5};
+    int i = -1, j = -1;
+    assert_true(mm_linalg_is_symmetric(2, A, &i, &j));           /* 2e-14 of max |a|: rounding */
+    assert_false(mm_linalg_is_symmetric(2, B, &i, &j));          /* 2e-12: a typing error */
+    assert_int_equal(i, 0);
+    assert_int_equal(j, 1);
+    double K[4] = {2, -1, -1 + 1e-11, 2}, lam[2];
+    mm_error err;
+    assert_int_equal(mm_linalg_sygv(2, K, A, lam, NULL, &err), MM_EVALUE);   /* the same rule in sygv */
+    assert_string_equal(err.param, "K");
+}
+
+typedef struct solve_job {
+    const double *A, *B;
+    double X[80 * 80];
+    int rc;
+} solve_job;
+
+static void *solve_thread(void *p)
+{
+    solve_job *j = p;
+    for (int r = 0; r < 20 && j->rc == MM_OK; r++)
+        j->rc = mm_linalg_solve(80, 80, j->A, j->B, j->X, NULL, NULL);
+    return NULL;
+}
+
+static void blas3_from_many_threads_should_give_identical_answers(void **state)
+{
+    (void)state;
+    /* LU of an 80 x 80 matrix with 80 right-hand sides goes through the
+     * level-3 BLAS (dgemm, dtrsm), whose scratch buffers Debian's serial
+     * OpenBLAS shares between threads without a lock: mm_linalg serialises
+     * the calls.  Eight threads must reproduce the single-thread bits. */
+    enum { NT = 8, N = 80 };
+    double *A = malloc(N * N * sizeof *A), *B = malloc(N * N * sizeof *B);
+    for (int i = 0; i < N * N; i++) {
+        A[i] = sin(1.0 + i) + (i % (N + 1) == 0 ? N : 0);
+        B[i] = cos(3.0 * i);
+    }
+    solve_job *ref = calloc(1, sizeof *ref), *jobs = calloc(NT, sizeof *jobs);
+    assert_int_equal(mm_linalg_solve(N, N, A, B, ref->X, NULL, NULL), MM_OK);
+    pthread_t th[NT];
+    for (int t = 0; t < NT; t++) {
+        jobs[t].A = A, jobs[t].B = B;
+        assert_int_equal(pthread_create(&th[t], NULL, solve_thread, &jobs[t]), 0);
+    }
+    for (int t = 0; t < NT; t++) {
+        pthread_join(th[t], NULL);
+        assert_int_equal(jobs[t].rc, MM_OK);
+        assert_memory_equal(jobs[t].X, ref->X, sizeof ref->X);
+    }
+    free(jobs); free(ref); free(B); free(A);
+}
+
+static void printed_modes_and_residuals_should_be_checked_to_their_rounding(void **state)
+{
+    (void)state;
+    enum { N = 8 };
+    double K[N * N], M[N * N], lam[N], le[N], V[N * N], r[N], mag[N], x[N], b[N];
+    chain(N, 100, 2, 1, K, M);
+    assert_int_equal(mm_linalg_sygv_dd(N, K, M, lam, le, V, NULL), MM_OK);
+    double res, orth;
+    mm_linalg_sygv_rounding(N, K, M, lam, le, V, &res, &orth);
+    assert_true(res <= 1 && orth <= 1);              /* modes right to their last digit */
+    V[3] *= 1 + 1e-12;                               /* one component off in its 12th digit */
+    mm_linalg_sygv_rounding(N, K, M, lam, le, V, &res, &orth);
+    assert_true(res > 10 && orth > 10);
+    /* b = K x for integer x: the residual is exactly 0, and mag |K||x| + |b| */
+    for (int i = 0; i < N; i++)
+        x[i] = i + 1;
+    for (int i = 0; i < N; i++) {
+        b[i] = 0;
+        for (int j = 0; j < N; j++)
+            b[i] += K[i * N + j] * x[j];
+    }
+    mm_linalg_residual_dd(N, K, x, b, r, mag);
+    for (int i = 0; i < N; i++)
+        check_abs(r[i], 0, 0, "exact residual");
+    check_rel(mm_linalg_norm2(2, (double[]){3e200, 4e200}), 5e200, EPS, "no overflow in the squares");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -765,6 +940,13 @@ int main(void)
         cmocka_unit_test(non_finite_input_should_be_a_bad_value),
         cmocka_unit_test(sizes_over_the_limits_should_be_out_of_range),
         cmocka_unit_test(solvers_should_give_identical_answers_from_many_threads),
+        cmocka_unit_test(blas3_from_many_threads_should_give_identical_answers),
+        cmocka_unit_test(dd_eigenvalues_of_a_chain_should_be_right_to_the_last_digit),
+        cmocka_unit_test(dd_eigenvalues_should_be_right_where_lapack_loses_them),
+        cmocka_unit_test(dd_should_reject_what_the_lapack_routines_reject),
+        cmocka_unit_test(dd_singular_values_and_solve_should_be_right_for_hilbert_12),
+        cmocka_unit_test(one_symmetry_rule_should_serve_every_module),
+        cmocka_unit_test(printed_modes_and_residuals_should_be_checked_to_their_rounding),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -72,7 +72,6 @@ static void golden_should_refuse_bad_arguments_and_pass_on_stops(void **state)
     assert_int_equal(mm_opt_golden_max(stop, NULL, 0, 1, 1e-9, 200, &r, &err), MM_ENOCONV);
 }
 
-
 static void golden_should_reach_the_height_of_a_flat_maximum_at_an_end(void **state)
 {
     (void)state;
@@ -86,6 +85,54 @@ static void golden_should_reach_the_height_of_a_flat_maximum_at_an_end(void **st
     check_rel(r.fx, 1, 8 * 2.2204460492503131e-16, "height |H(0)| = 1");
 }
 
+/* ---- refining a sampled extreme ---- */
+
+static double sine(double x, double *err, void *p)
+{
+    (void)p;
+    if (err)
+        *err = 0;                           /* the routine takes an ulp at least */
+    return sin(x);
+}
+
+static double line(double x, double *err, void *p)
+{
+    (void)p;
+    if (err)
+        *err = 0;
+    return 2 * x + 1;
+}
+
+/* sin peaks at pi/2 with f'' = -1: rounding (an ulp, 1.1e-16) hides the peak
+ * within sqrt(4 * 1.1e-16) = 2.1e-8, so the stated x error must cover the
+ * actual one and be no looser than that band (x 100, the checks' rule). */
+static void refined_extreme_should_hold_pi_over_2_within_its_stated_error(void **state)
+{
+    (void)state;
+    mm_opt_extreme q;
+    mm_opt_refine_extreme(sine, NULL, 1, 1.4, 0.3, 0, 3, &q);
+    assert_true(fabs(q.x - M_PI / 2) <= q.x_err);
+    assert_true(q.x_err <= 100 * sqrt(4 * 1.1102230246251565e-16) + 1e-12);
+    assert_true(fabs(q.fx - 1) <= q.fx_err + 1.2e-16);
+    /* the smallest value: -1 at 3 pi / 2 */
+    mm_opt_refine_extreme(sine, NULL, -1, 4.9, 0.5, 0, 7, &q);
+    assert_true(fabs(q.x - 3 * M_PI / 2) <= q.x_err);
+    assert_true(fabs(q.fx + 1) <= q.fx_err + 1.2e-16);
+}
+
+/* 2x + 1 on [0, 1]: the largest value at the end, x = 1.  With f'' = 0 no
+ * band can be estimated, and the stated x error is the final window, one
+ * step of the finer scan (2 h / 32): not tight, but a bound. */
+static void refined_extreme_at_an_end_should_be_the_end(void **state)
+{
+    (void)state;
+    mm_opt_extreme q;
+    mm_opt_refine_extreme(line, NULL, 1, 0.95, 0.1, 0, 1, &q);
+    assert_true(fabs(q.x - 1) <= q.x_err);
+    assert_true(q.x_err <= 2 * 0.1 / 32 * (1 + 1e-12));
+    assert_true(fabs(q.fx - 3) <= q.fx_err + 4.5e-16);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -94,6 +141,8 @@ int main(void)
         cmocka_unit_test(golden_should_find_a_maximum_at_the_end),
         cmocka_unit_test(golden_should_reach_the_height_of_a_flat_maximum_at_an_end),
         cmocka_unit_test(golden_should_refuse_bad_arguments_and_pass_on_stops),
+        cmocka_unit_test(refined_extreme_should_hold_pi_over_2_within_its_stated_error),
+        cmocka_unit_test(refined_extreme_at_an_end_should_be_the_end),
     };
     return cmocka_run_group_tests_name("opt", tests, NULL, NULL);
 }

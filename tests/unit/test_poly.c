@@ -11,6 +11,25 @@
 #define EPS DBL_EPSILON
 
 /* ==== evaluation ================================================================= */
+/* Hand values: the ratio |p(z)| / sum |p_k| |z|^(d-k) does not depend on the
+ * scaling by max(1, |z|)^d the routine uses, so it is known exactly. */
+static void backward_error_should_match_hand_values_without_overflow(void **state)
+{
+    (void)state;
+    const double q1[] = {1, 0, 1};                       /* x^2 + 1 */
+    assert_true(mm_poly_backward_error(3, q1, 0, 1) == 0.0);        /* i is exact */
+    /* at 1 + i: p = 1 + 2i, |p| = sqrt 5; scale |z|^2 + 1 = 3 */
+    check_rel(mm_poly_backward_error(3, q1, 1, 1), sqrt(5.0) / 3, 8 * EPS, "x^2 + 1 at 1 + i");
+    /* at 0.5 (|z| < 1, the other branch): p = 1.25, scale 1.25: 1 */
+    check_rel(mm_poly_backward_error(3, q1, 0.5, 0), 1.0, 4 * EPS, "x^2 + 1 at 0.5");
+    /* x^2 - 1e300 x at 3e300 (p(z) = 6e600 would overflow unscaled): divided
+     * by |z|^2, |p| = 2/3 and the scale 1 + 1/3, so the ratio is 1/2 */
+    const double q2[] = {1, -1e300, 0};
+    check_rel(mm_poly_backward_error(3, q2, 3e300, 0), 2.0 / 4.0, 8 * EPS, "x^2 - 1e300 x at 3e300");
+    const double q3[] = {0, 0};
+    assert_true(mm_poly_backward_error(2, q3, 5, 0) == 0.0);        /* the zero polynomial */
+}
+
 
 static void horner_bound_should_cover_the_actual_error(void **state)
 {
@@ -331,10 +350,68 @@ static void polyfit_degree_too_high_should_name_the_parameter(void **state)
     assert_string_equal(err.param, "y");
 }
 
+/* ==== the fit in double-double ===================================================== */
+
+static void polyfit_dd_should_give_the_exact_least_squares_line(void **state)
+{
+    (void)state;
+    /* the book's line: 196/67 x + 537/67 (exact rationals by hand) */
+    const double x[3] = {1, 3, 10}, y[3] = {10, 18, 37};
+    double c[2], ce[2], fit[3], fe[3], se[2];
+    mm_poly_fit_dd_info info;
+    assert_int_equal(mm_poly_fit_dd(3, x, y, 1, c, ce, fit, fe, se, NULL, &info, NULL), MM_OK);
+    check_rel(c[0], 196.0 / 67, EPS / 2, "slope, correctly rounded");
+    check_rel(c[1], 537.0 / 67, EPS / 2, "intercept, correctly rounded");
+    assert_true(fabs(c[0] - 196.0 / 67) <= ce[0] + EPS * c[0]);
+    /* rms with the exact line: sqrt(sum r^2 / 3), r = (-63, 81, -18) / 67 */
+    check_rel(info.rms, sqrt((63.0 * 63 + 81.0 * 81 + 18.0 * 18) / (3 * 67.0 * 67)), 2 * EPS, "rms");
+    check_rel(fit[1], 1125.0 / 67, EPS, "fitted value at x = 3");
+    assert_int_equal(info.dof, 1);
+    assert_true(se[0] > 0 && se[1] > 0);
+}
+
+static void polyfit_dd_should_survive_powers_that_cancel(void **state)
+{
+    (void)state;
+    /* exact data of (x - 1000)^3 sampled at 1000..1005: the coefficients of
+     * powers of x are 1, -3000, 3e6, -1e9, which cancel to 0..125 at the
+     * data; in double-double they come out exact */
+    double x[6], y[6], c[4], ce[4], fit[6], fe[6];
+    for (int i = 0; i < 6; i++) {
+        x[i] = 1000 + i;
+        y[i] = (double)i * i * i;
+    }
+    mm_poly_fit_dd_info info;
+    assert_int_equal(mm_poly_fit_dd(6, x, y, 3, c, ce, fit, fe, NULL, NULL, &info, NULL), MM_OK);
+    const double want[4] = {1, -3000, 3e6, -1e9};
+    for (int k = 0; k < 4; k++) {
+        check_rel(c[k], want[k], EPS, "coefficient of (x - 1000)^3");
+        assert_true(fabs(c[k] - want[k]) <= ce[k] + EPS * fabs(want[k]) / 2);
+    }
+    for (int i = 0; i < 6; i++)
+        check_abs(fit[i], y[i], fe[i], "interpolates exact data");
+    check_abs(info.rms, 0, info.rms_err, "rms 0 within its bound");
+}
+
+static void fitted_values_in_double_should_agree_by_both_routes(void **state)
+{
+    (void)state;
+    /* the book's line: fitted values 733/67, 1125/67, 2497/67 */
+    const double x[3] = {1, 3, 10}, y[3] = {10, 18, 37}, want[3] = {733.0 / 67, 1125.0 / 67, 2497.0 / 67};
+    double fs[3], fn[3], bs, bn;
+    assert_int_equal(mm_poly_fit_values(3, x, y, 1, 14.0 / 3, 16.0 / 3, fs, fn, &bs, &bn, NULL), MM_OK);
+    for (int i = 0; i < 3; i++) {
+        check_rel(fs[i], want[i], 8 * EPS, "fitted value by the SVD");
+        check_rel(fn[i], want[i], 8 * EPS, "fitted value by the normal equations (cond^2 ~ 2)");
+    }
+    assert_true(bs > 0 && bn > 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(horner_bound_should_cover_the_actual_error),
+        cmocka_unit_test(backward_error_should_match_hand_values_without_overflow),
         cmocka_unit_test(book_cubic_should_have_the_published_roots),
         cmocka_unit_test(wilkinson_roots_should_come_with_error_bounds_that_hold),
         cmocka_unit_test(triple_root_should_report_eps_to_the_one_third),
@@ -345,6 +422,9 @@ int main(void)
         cmocka_unit_test(polyfit_should_recover_a_cubic_from_exact_data),
         cmocka_unit_test(polyfit_rms_should_match_a_hand_computation),
         cmocka_unit_test(polyfit_degree_too_high_should_name_the_parameter),
+        cmocka_unit_test(polyfit_dd_should_give_the_exact_least_squares_line),
+        cmocka_unit_test(polyfit_dd_should_survive_powers_that_cancel),
+        cmocka_unit_test(fitted_values_in_double_should_agree_by_both_routes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

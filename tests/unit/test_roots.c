@@ -283,6 +283,87 @@ static void callback_failure_should_stop_the_search(void **state)
     assert_non_null(strstr(err.msg, "could not be evaluated"));
 }
 
+static int f_triple(double x, double *fx, void *params)
+{
+    (void)params;
+    *fx = (x - 1) * (x - 1) * (x - 1);
+    return 0;
+}
+
+static int f_sinpi(double x, double *fx, void *params)
+{
+    (void)params;
+    *fx = sin(PI * x);
+    return 0;
+}
+
+/* Issue 10 #5: a triple root to 1e-12 needed 109-146 Brent steps, over the
+ * cap of 100; with the forced bisection it takes at most 4 log2(w / tol) + 4 */
+static void multiple_roots_should_converge_within_the_bisection_bound(void **state)
+{
+    (void)state;
+    double x, fx, w;
+    int iter = 0;
+    double lo = 0.98, hi = 1.09, tol = 1e-12, f0, f1;
+    f_triple(lo, &f0, NULL);
+    f_triple(hi, &f1, NULL);
+    assert_int_equal(mm_roots_brent(f_triple, NULL, lo, hi, f0, f1, tol, 1000, &x, &fx, &w, &iter, NULL, NULL),
+                     MM_OK);
+    check_abs(x, 1, tol, "the triple root");
+    assert_true(iter <= 4 * ceil(log2((hi - lo) / tol)) + 4);
+    /* through the scan with the default options: no MM_ENOCONV */
+    mm_roots_problem prob = {.f = f_triple, .a = -1, .b = 10};
+    mm_roots_options opt;
+    mm_roots_options_init(&opt);
+    opt.tol = tol;
+    mm_roots_root r[101];
+    mm_roots_result res = {.roots = r, .cap = 101};
+    assert_int_equal(mm_roots_solve(&prob, &opt, &res, NULL), MM_OK);
+    assert_int_equal(res.nroots, 1);
+    check_abs(r[0].x, 1, tol, "the triple root, scanned");
+    assert_int_equal(r[0].part, 18);                 /* -1 + 11 * 18 / 100 = 0.98 <= 1 < 1.09 */
+}
+
+/* Issue 10 #5: sin(pi x) at the integers is 1.2e-16 k, not 0 (pi is
+ * rounded): tiny values at the ends of the parts are not a jump */
+static void roots_beside_rounding_noise_should_not_be_suspect(void **state)
+{
+    (void)state;
+    mm_roots_problem prob = {.f = f_sinpi, .a = -1, .b = 10};
+    mm_roots_options opt;
+    mm_roots_options_init(&opt);
+    opt.n = 11;
+    opt.tol = 1e-12;
+    mm_roots_root r[12];
+    mm_roots_result res = {.roots = r, .cap = 12};
+    assert_int_equal(mm_roots_solve(&prob, &opt, &res, NULL), MM_OK);
+    for (int i = 0; i < res.nroots; i++) {
+        assert_false(r[i].flags & MM_ROOTS_SUSPECT);
+        check_abs(r[i].x, round(r[i].x), 1e-12, "a root at an integer");
+    }
+}
+
+static int f_cube_err(double x, double *fx, double *err, void *params)
+{
+    (void)params;
+    *fx = (x - 1) * (x - 1) * (x - 1);
+    *err = 1e-16;                                   /* a rounding level for f */
+    return 0;
+}
+
+static void bisection_and_the_rounding_band_should_bound_the_root(void **state)
+{
+    (void)state;
+    double x, f0;
+    f_book(0, &f0, NULL);
+    assert_int_equal(mm_roots_bisect(f_book, NULL, 0, 2, f0, 1e-10, &x, NULL), MM_OK);
+    check_abs(x, 1.0433859882095546576, 1e-10, "bisection to 1e-10");
+    /* a triple root with f known to 1e-16: its sign is blurred within about
+     * (1e-16)^(1/3) = 4.6e-6 of the root */
+    double band = mm_roots_band(f_cube_err, NULL, 1, 1e-12, 0, 2);
+    assert_true(band >= 4.6e-6 && band <= 4 * 4.6e-6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -292,6 +373,9 @@ int main(void)
         cmocka_unit_test(root_on_a_subdivision_point_should_be_reported_once),
         cmocka_unit_test(brent_iterations_should_stay_bounded),
         cmocka_unit_test(jump_should_be_flagged_suspect),
+        cmocka_unit_test(multiple_roots_should_converge_within_the_bisection_bound),
+        cmocka_unit_test(roots_beside_rounding_noise_should_not_be_suspect),
+        cmocka_unit_test(bisection_and_the_rounding_band_should_bound_the_root),
         cmocka_unit_test(touching_root_should_not_be_found),
         cmocka_unit_test(non_finite_values_should_skip_parts),
         cmocka_unit_test(bad_input_should_name_the_parameter),

@@ -1,0 +1,332 @@
+/* rolling_wheel.c — kin-rolling-wheel: a wheel of radius R rolls without
+ * slipping along the ground; it has turned through phi(t) = omega t +
+ * alpha t^2/2, and P is a point at distance b from its centre, at the
+ * bottom at t = 0.
+ *
+ *     O = (R phi, R),  P = O + b (-sin phi, -cos phi)                       (1)
+ *     v_P = phi' (R - b cos phi, b sin phi)                                  (2)
+ *     a_P = phi'' (R - b cos phi, b sin phi) + phi'^2 (b sin phi, b cos phi) (3)
+ *
+ * Goal: rolling without slipping means the contact point is at rest: it is
+ * the instantaneous centre, every point moves square to the line joining
+ * it to the contact point with speed |phi'| times that distance, and the
+ * contact point itself accelerates upward at R phi'^2.  A rim point traces
+ * a cycloid (b = R), an inner point a curtate, an outer one (a flange) a
+ * prolate trochoid.
+ * Checks: (2)-(3) against central differences of (1); |v_P| against
+ * |phi'| |P C|; the contact point's velocity computed as a point of the
+ * wheel (exactly zero); the path's radius of curvature against the circle
+ * through three close points; the length of one arch by Gauss-Legendre
+ * quadrature against its closed form 4 (R + b) E(k) (8R for the cycloid).
+ * Reference: F. P. Beer, E. R. Johnston, Vector Mechanics for Engineers:
+ * Dynamics, sections 15.6-15.7 (instantaneous centre, rolling).
+ */
+#include <float.h>
+#include <math.h>
+
+#include "mm_geom.h"
+#include "mm_kin.h"
+#include "mm_scene.h"
+
+enum { P_R, P_B, P_W, P_AL, P_T, P_TEND, P_POINTS };
+
+static const mm_param params[] = {
+    [P_R] = {"R", "wheel radius", "m", MM_REAL, 0.5, 1e-3, 10, .help = "the radius that rolls on the ground"},
+    [P_B] = {"b", "distance of P from the centre", "m", MM_REAL, 0.5, 0, 10,
+             .help = "b = R: a point of the rim (cycloid); b < R inside; b > R on a flange"},
+    [P_W] = {"omega", "angular velocity at t = 0", "rad/s", MM_REAL, 2, -100, 100,
+             .help = "positive: rolling to the right (turning clockwise)"},
+    [P_AL] = {"alpha", "angular acceleration", "rad/s^2", MM_REAL, 0, -100, 100, .help = "constant"},
+    [P_T] = {"t", "instant", "s", MM_REAL, 1, 0, 10, .help = "the time at which the answers are given (at most t_end)"},
+    [P_TEND] = {"t_end", "duration", "s", MM_REAL, 3.2, 0.01, 10, .help = "the motion plotted and animated"},
+    [P_POINTS] = {"points", "plot points", "", MM_INT, 301, 11, 2001, .help = "samples of the plotted curves"},
+};
+
+enum {
+    O_VO, O_X, O_Y, O_VX, O_VY, O_V, O_AX, O_AY, O_A, O_VC, O_AC, O_RHO, O_RHOTOP, O_ARC,
+    O_PATH, O_SV, O_SA, O_FDV, O_FDA, O_ANIM
+};
+
+static const mm_output outputs[] = {
+    [O_VO] = MM_SCALAR("v_O", "speed of the centre R phi'", "m/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_X] = MM_SCALAR("x", "position of P, x", "m", .flags = MM_EXACT),
+    [O_Y] = MM_SCALAR("y", "position of P, y (height)", "m", .flags = MM_EXACT),
+    [O_VX] = MM_SCALAR("vx", "velocity of P, x", "m/s", .flags = MM_EXACT),
+    [O_VY] = MM_SCALAR("vy", "velocity of P, y", "m/s", .flags = MM_EXACT),
+    [O_V] = MM_SCALAR("v", "speed of P", "m/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_AX] = MM_SCALAR("ax", "acceleration of P, x", "m/s^2", .flags = MM_EXACT),
+    [O_AY] = MM_SCALAR("ay", "acceleration of P, y", "m/s^2", .flags = MM_EXACT),
+    [O_A] = MM_SCALAR("a", "magnitude of P's acceleration", "m/s^2", .flags = MM_ANSWER | MM_EXACT),
+    [O_VC] = MM_SCALAR("v_contact", "speed of the wheel's point in contact with the ground", "m/s",
+                       .flags = MM_ANSWER | MM_EXACT),
+    [O_AC] = MM_SCALAR("a_contact", "acceleration of that point (upward, R phi'^2)", "m/s^2", .flags = MM_ANSWER | MM_EXACT),
+    [O_RHO] = MM_SCALAR("rho", "radius of curvature of P's path at t", "m", .flags = MM_ANSWER | MM_EXACT),
+    [O_RHOTOP] = MM_SCALAR("rho_top", "radius of curvature of P's path at the top, (R + b)^2 / b", "m",
+                           .flags = MM_EXACT),
+    [O_ARC] = MM_SCALAR("arch_length", "length of P's path over one turn, 4 (R + b) E(k)", "m",
+                        .flags = MM_ANSWER | MM_EXACT),
+    [O_PATH] = MM_SERIES("path", "path of P", "m", "x", "m", .aspect = "equal", .figure = "path"),
+    [O_SV] = MM_SERIES("v", "speed of P", "m/s", "t", "s", .figure = "speed"),
+    [O_SA] = MM_SERIES("a", "acceleration of P", "m/s^2", "t", "s", .figure = "acceleration"),
+    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of P vs eq. (2)", "m/s", "step h", "s",
+                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs eq. (3)", "m/s^2", "step h", "s",
+                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_ANIM] = MM_ANIMATION("the wheel rolling, P's path, velocity and acceleration, the contact point"),
+};
+
+typedef struct wheel {
+    double R, b, w, al;
+} wheel;
+
+typedef struct wstate {
+    double phi, w, al;
+    mm_v2 O, P, v, a;
+} wstate;
+
+static wstate at(const wheel *m, double t)
+{
+    wstate s;
+    s.phi = m->w * t + 0.5 * m->al * t * t, s.w = m->w + m->al * t, s.al = m->al;
+    double c = cos(s.phi), sn = sin(s.phi);
+    mm_v2 g = {m->R - m->b * c, m->b * sn};                         /* dP/dphi */
+    s.O = (mm_v2){m->R * s.phi, m->R};
+    s.P = (mm_v2){s.O.x - m->b * sn, s.O.y - m->b * c};             /* eq. (1) */
+    s.v = mm_v2_scale(g, s.w);                                       /* eq. (2) */
+    s.a = mm_v2_add(mm_v2_scale(g, s.al), mm_v2_scale((mm_v2){m->b * sn, m->b * c}, s.w * s.w));   /* (3) */
+    return s;
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    if (in[P_T].x > in[P_TEND].x)
+        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion, 0 to t_end = %g s; got %g s",
+                            in[P_TEND].x, in[P_T].x);
+    return MM_OK;
+}
+
+/* the complete elliptic integral of the second kind E(k), by the
+ * arithmetic-geometric mean (Abramowitz & Stegun 17.6): converges
+ * quadratically, to rounding in a handful of steps */
+static double ellip_E(double k)
+{
+    double a = 1, g = sqrt((1 - k) * (1 + k)), c = k, sum = 0.5 * c * c, p2 = 0.5;
+    for (int i = 0; i < 40 && fabs(c) > DBL_EPSILON * a; i++) {
+        double an = 0.5 * (a + g);
+        c = 0.5 * (a - g);
+        g = sqrt(a * g);
+        a = an;
+        p2 *= 2;
+        sum += p2 * c * c;
+    }
+    return M_PI / (2 * a) * (1 - sum);
+}
+
+/* |dP/dphi| = sqrt((R - b)^2 + 4 R b sin^2(phi/2)) integrated over one
+ * turn: twice the integral over [0, pi] by 5-point Gauss-Legendre on
+ * panels that halve towards phi = 0, where for b near R the integrand has
+ * a near-corner of width |R - b| / sqrt(R b) (a corner for the cycloid);
+ * split = 2 halves every panel, for the error estimate */
+static double arch_quad(const wheel *m, int split)
+{
+    static const double x5[5] = {-0.906179845938663992797626878299, -0.538469310105683091036314420700, 0,
+                                 0.538469310105683091036314420700, 0.906179845938663992797626878299};
+    static const double w5[5] = {0.236926885056189087514264040720, 0.478628670499366468041291514836,
+                                 0.568888888888888888888888888889, 0.478628670499366468041291514836,
+                                 0.236926885056189087514264040720};
+    enum { LEVELS = 48 };
+    double sum = 0;
+    for (int j = 0; j <= LEVELS; j++) {
+        double hi = ldexp(M_PI, -j), lo = j < LEVELS ? 0.5 * hi : 0;
+        for (int p = 0; p < split; p++) {
+            double a = lo + (hi - lo) * p / split, b = lo + (hi - lo) * (p + 1) / split, hw = 0.5 * (b - a);
+            for (int k = 0; k < 5; k++) {
+                double sn = sin(0.5 * (a + hw * (1 + x5[k])));
+                sum += w5[k] * hw * sqrt((m->R - m->b) * (m->R - m->b) + 4 * m->R * m->b * sn * sn);
+            }
+        }
+    }
+    return 2 * sum;
+}
+
+typedef struct fd_ctx {
+    const wheel *m;
+    const double *t;
+} fd_ctx;
+
+static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+{
+    (void)err;
+    fd_ctx *c = ctx;
+    double t = c->t[i] + h;
+    wstate s = at(c->m, t);
+    q[0] = s.P.x, q[1] = s.P.y;
+    double dphi = 4 * DBL_EPSILON * (fabs(c->m->w * t) + fabs(c->m->al * t * t));
+    *qerr = (c->m->R + c->m->b) * (dphi + 4 * DBL_EPSILON * (1 + fabs(s.phi)));
+    return MM_OK;
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    wheel m = {in[P_R].x, in[P_B].x, in[P_W].x, in[P_AL].x};
+    const double t = in[P_T].x, t_end = in[P_TEND].x;
+    const int n = (int)in[P_POINTS].x;
+
+    /* ---- at t ---- */
+    wstate s = at(&m, t);
+    mm_res_scalar(res, O_VO, s.w * m.R);
+    mm_res_scalar(res, O_X, s.P.x), mm_res_scalar(res, O_Y, s.P.y);
+    mm_res_scalar(res, O_VX, s.v.x), mm_res_scalar(res, O_VY, s.v.y), mm_res_scalar(res, O_V, mm_v2_norm(s.v));
+    mm_res_scalar(res, O_AX, s.a.x), mm_res_scalar(res, O_AY, s.a.y), mm_res_scalar(res, O_A, mm_v2_norm(s.a));
+    /* the contact point C = (R phi, 0) as a point of the wheel: v_O + w x (C - O)
+     * with w = -phi' k (clockwise), C - O = (0, -R); the two products are the
+     * same numbers, so the difference is exactly 0 */
+    mm_v2 vO = {s.w * m.R, 0}, CO = {0, -m.R};
+    mm_v2 vC = mm_v2_add(vO, mm_v2_scale(mm_v2_perp(CO), -s.w));
+    mm_v2 aC = mm_v2_add(mm_v2_add((mm_v2){s.al * m.R, 0}, mm_v2_scale(mm_v2_perp(CO), -s.al)),
+                         mm_v2_scale(CO, -s.w * s.w));
+    mm_res_scalar(res, O_VC, mm_v2_norm(vC));
+    mm_res_scalar(res, O_AC, aC.y);
+    mm_res_check_abs(res, "contact point's velocity as a point of the wheel: exactly 0 (rolling without slip)",
+                     mm_v2_norm(vC), 0, 0);
+    mm_res_check_abs(res, "contact point's acceleration: horizontal part exactly 0", aC.x, 0, 0);
+    /* |v_P| = |phi'| |P C|: the instantaneous centre is the contact point */
+    mm_v2 C = {m.R * s.phi, 0};
+    double big = fabs(s.w) * (m.R + m.b) * (1 + fabs(s.phi));
+    mm_res_check_abs(res, "|v_P| by eq. (2) vs |phi'| |PC| (instantaneous centre C) [m/s]", mm_v2_norm(s.v),
+                     fabs(s.w) * mm_v2_norm(mm_v2_sub(s.P, C)), 16 * DBL_EPSILON * big);
+    double cr = fabs(mm_v2_cross(s.v, s.a)), sp = mm_v2_norm(s.v);
+    if (m.b > 0)
+        mm_res_scalar(res, O_RHOTOP, (m.R + m.b) * (m.R + m.b) / m.b);
+    if (cr > 0 && sp > 0) {
+        double rho = sp * sp * sp / cr, R3[3];
+        mm_res_scalar(res, O_RHO, rho);
+        /* the circle through three points |v| h apart: O(h) (O(h^2) at constant
+         * speed): the value at h/4 within 2 |R(h/2) - R(h/4)| plus rounding */
+        double h = 0.02 * rho / sp;
+        int ok = 1;
+        for (int k = 0; k < 3; k++) {
+            mm_v2 P3[3], cc;
+            for (int j = 0; j < 3; j++)
+                P3[j] = at(&m, t + (j - 1) * h / (1 << k)).P;
+            ok &= mm_geom_circumcircle(P3[0], P3[1], P3[2], &cc, &R3[k]);
+        }
+        double ds = sp * h / 4, rnd = 64 * DBL_EPSILON * (mm_v2_norm(s.P) + rho) * rho * rho / (ds * ds);
+        if (ok)
+            mm_res_check_abs(res, "rho = |v|^3 / |v x a| vs the circle through three points of the path", R3[2], rho,
+                             2 * fabs(R3[1] - R3[2]) + rnd);
+    }
+    /* one arch: 4 (R + b) E(k), k^2 = 4 R b / (R + b)^2 (8 R for b = R) */
+    if (m.b > 0) {
+        double k = 2 * sqrt(m.R * m.b) / (m.R + m.b), L = 4 * (m.R + m.b) * ellip_E(k);
+        if (m.b == m.R)
+            L = 8 * m.R;
+        mm_res_scalar(res, O_ARC, L);
+        double q1 = arch_quad(&m, 1), q2 = arch_quad(&m, 2);
+        mm_res_check_abs(res, "arch length: Gauss-Legendre on halving panels vs 4 (R + b) E(k), bound |Q(2n) - Q(n)| + rounding",
+                         q2, L, fabs(q2 - q1) + 64 * DBL_EPSILON * L);
+    } else {
+        mm_res_scalar(res, O_ARC, 2 * M_PI * m.R);
+    }
+
+    /* ---- over [0, t_end] ---- */
+    mm_series *path = mm_res_series(res, O_PATH, n), *sv = mm_res_series(res, O_SV, n), *sa = mm_res_series(res, O_SA, n);
+    int ns = (n + 7) / 8;
+    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *d1 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *d1),
+           *d2 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *d2);
+    if (!path || !sv || !sa || !ts || !d1 || !d2)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_kin_grid(0, t_end, n, sv->x);
+    double vmax = 0, amax = 0;
+    for (int i = 0; i < n; i++) {
+        wstate si = at(&m, sv->x[i]);
+        path->x[i] = si.P.x, path->y[i] = si.P.y;
+        sa->x[i] = sv->x[i];
+        sv->y[i] = mm_v2_norm(si.v), sa->y[i] = mm_v2_norm(si.a);
+        vmax = fmax(vmax, fmax(sv->y[i], 2 * fabs(si.w) * m.R)), amax = fmax(amax, sa->y[i]);
+        if (i % 8 == 0 || i == n - 1) {
+            int j = i % 8 == 0 ? i / 8 : ns - 1;
+            ts[j] = sv->x[i];
+            d1[2 * j] = si.v.x, d1[2 * j + 1] = si.v.y, d2[2 * j] = si.a.x, d2[2 * j + 1] = si.a.y;
+        }
+    }
+    fd_ctx fc = {&m, ts};
+    mm_kin_fd fd;
+    double wm = fmax(fabs(m.w), fabs(m.w + m.al * t_end)), h0 = 0.05 / fmax(1, wm);
+    int rc = mm_kin_fd_study(res, O_FDV, "dP/dt", fd_pos, &fc, 2, NULL, ns, d1, 1, h0, 24, 0, &fd, err);
+    if (rc == MM_OK)
+        rc = mm_kin_fd_study(res, O_FDA, "d2P/dt2", fd_pos, &fc, 2, NULL, ns, d2, 2, h0, 18, 0, &fd, err);
+    if (rc != MM_OK)
+        return rc;
+
+    /* ---- the animation ---- */
+    double t_show;
+    int nf = mm_scene_frames(t_end, wm > 0 ? 2 * M_PI / wm : 0, &t_show);
+    double x0 = INFINITY, x1 = -INFINITY;
+    for (int f = 0; f < nf; f++) {
+        wstate sf = at(&m, t_show * f / (nf - 1));
+        x0 = fmin(x0, sf.O.x - fmax(m.R, m.b)), x1 = fmax(x1, sf.O.x + fmax(m.R, m.b));
+    }
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", fmax(x1 - x0, 2 * (m.R + m.b)));
+    mm_shape *gr = an ? mm_kin_shape(&d, "ground", MM_SHAPE_LINE, 0, 2) : NULL;
+    mm_shape *wh = mm_kin_shape(&d, "wheel", MM_SHAPE_CIRCLE, 1, 1);
+    mm_shape *sp1 = mm_kin_shape(&d, "spoke", MM_SHAPE_LINE, 1, 2), *sp2 = mm_kin_shape(&d, "spoke 2", MM_SHAPE_LINE, 1, 2);
+    mm_shape *arm = mm_kin_shape(&d, "centre to P", MM_SHAPE_LINE, 1, 2);
+    mm_shape *ic = mm_kin_shape(&d, "contact point (instantaneous centre)", MM_SHAPE_CIRCLE, 1, 1);
+    mm_shape *tr = mm_kin_shape(&d, "path of P", MM_SHAPE_PATH, 0, 121);
+    mm_shape *vv = mm_kin_arrow_shape(&d, "v_P", "m/s", vmax), *vt = mm_kin_arrow_shape(&d, "v_top", "m/s", vmax);
+    mm_shape *vo = mm_kin_arrow_shape(&d, "v_O", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a_P", "m/s^2", amax);
+    if (!gr || !wh || !sp1 || !sp2 || !arm || !ic || !tr || !vv || !vt || !vo || !aa)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    vt->scale = vo->scale = vv->scale;
+    gr->style = "ground";
+    mm_kin_pt(gr, 0, 0, x0, 0), mm_kin_pt(gr, 0, 1, x1, 0);
+    wh->radius = m.R;
+    ic->radius = 0.04 * m.R;
+    ic->style = "highlight";
+    for (int k = 0; k <= 120; k++) {
+        wstate sk = at(&m, t_show * k / 120);
+        mm_kin_pt(tr, 0, k, sk.P.x, sk.P.y);
+    }
+    for (int f = 0; f < nf; f++) {
+        double tf = t_show * f / (nf - 1);
+        an->t[f] = tf;
+        wstate sf = at(&m, tf);
+        mm_kin_pt(wh, f, 0, sf.O.x, sf.O.y);
+        mm_v2 e = mm_v2_polar(m.R, -sf.phi);                          /* the wheel turns clockwise */
+        mm_kin_pt(sp1, f, 0, sf.O.x - e.x, sf.O.y - e.y), mm_kin_pt(sp1, f, 1, sf.O.x + e.x, sf.O.y + e.y);
+        mm_kin_pt(sp2, f, 0, sf.O.x + e.y, sf.O.y - e.x), mm_kin_pt(sp2, f, 1, sf.O.x - e.y, sf.O.y + e.x);
+        mm_kin_pt(arm, f, 0, sf.O.x, sf.O.y), mm_kin_pt(arm, f, 1, sf.P.x, sf.P.y);
+        mm_kin_pt(ic, f, 0, sf.O.x, 0);
+        mm_kin_arrow(vv, f, sf.P.x, sf.P.y, sf.v.x, sf.v.y);
+        mm_kin_arrow(aa, f, sf.P.x, sf.P.y, sf.a.x, sf.a.y);
+        mm_kin_arrow(vo, f, sf.O.x, sf.O.y, sf.w * m.R, 0);
+        mm_kin_arrow(vt, f, sf.O.x, 2 * m.R, 2 * sf.w * m.R, 0);
+    }
+    mm_res_method(res, "closed form, checked by central differences; arch length by Gauss-Legendre and the AGM", 0);
+    return mm_kin_draw_finish(&d);
+}
+
+static const char *const references[] = {
+    "F. P. Beer, E. R. Johnston, Vector Mechanics for Engineers: Dynamics, 9th ed., sections 15.6-15.7",
+    "M. Abramowitz, I. A. Stegun, Handbook of Mathematical Functions, 17.6 (E(k) by the AGM)", NULL,
+};
+
+const mm_exercise mm_ex_kin_rolling_wheel = {
+    .id = "kin-rolling-wheel",
+    .chapter = 2,
+    .section = "2.3.5",
+    .title = "Rolling without slipping: the cycloid",
+    .summary = "A rolling wheel: the contact point at rest as instantaneous centre, the velocity and "
+               "acceleration of any point, the cycloid's curvature and length.",
+    .tags = "kinematics, rigid body, rolling, cycloid, trochoid, instantaneous centre",
+    .theory = "exercises/kin/rolling_wheel.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

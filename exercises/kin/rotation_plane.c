@@ -1,0 +1,292 @@
+/* rotation_plane.c — kin-rotation-plane: a point moving about a fixed
+ * point O in a plane, in polar coordinates: an arm turns through
+ * theta(t) = theta0 + omega0 t + alpha t^2/2 while the point slides along
+ * it, r(t) = r0 + u t + b t^2/2.
+ *
+ *     v = r' e_r + r theta' e_theta                                         (2)
+ *     a = (r'' - r theta'^2) e_r + (r theta'' + 2 r' theta') e_theta           (3)
+ *
+ * Goal: the radial and transverse components of velocity and acceleration,
+ * the centripetal term -r theta'^2 and the Coriolis term 2 r' theta', and
+ * their special case, circular motion (u = b = 0): v = r omega,
+ * a_t = r alpha, a_n = r omega^2.
+ * Checks: (2)-(3) against the Cartesian derivatives of x = r cos theta,
+ * y = r sin theta (the chain rule done the other way round), against
+ * central differences of the position (error against the step, order 2),
+ * and the path's radius of curvature |v|^3 / |v x a| against the circle
+ * through three close points of the path.
+ * Reference: F. P. Beer, E. R. Johnston, Vector Mechanics for Engineers:
+ * Dynamics, section 11.14 (radial and transverse components).
+ */
+#include <float.h>
+#include <math.h>
+
+#include "mm_exhelp.h"
+#include "mm_geom.h"
+#include "mm_kin.h"
+#include "mm_scene.h"
+
+enum { P_R0, P_U, P_B, P_TH0, P_W0, P_AL, P_T, P_TEND, P_POINTS };
+
+static const mm_param params[] = {
+    [P_R0] = {"r0", "distance from O at t = 0", "m", MM_REAL, 0.5, -10, 10, .help = "r(0); r may pass through O"},
+    [P_U] = {"u", "radial speed at t = 0", "m/s", MM_REAL, 0, -10, 10,
+             .help = "r'(0): the point sliding out along the arm (0: circular motion)"},
+    [P_B] = {"b", "radial acceleration", "m/s^2", MM_REAL, 0, -10, 10, .help = "r'', constant"},
+    [P_TH0] = {"theta0", "angle at t = 0", "rad", MM_REAL, 0, -10, 10, .help = "theta(0) from the x axis"},
+    [P_W0] = {"omega0", "angular velocity at t = 0", "rad/s", MM_REAL, 2, -20, 20, .help = "theta'(0)"},
+    [P_AL] = {"alpha", "angular acceleration", "rad/s^2", MM_REAL, 0.5, -20, 20, .help = "theta'', constant"},
+    [P_T] = {"t", "instant", "s", MM_REAL, 1, 0, 10, .help = "the time at which the answers are given (at most t_end)"},
+    [P_TEND] = {"t_end", "duration", "s", MM_REAL, 3, 0.01, 10, .help = "the motion plotted and animated from t = 0"},
+    [P_POINTS] = {"points", "plot points", "", MM_INT, 301, 11, 2001, .help = "samples of the plotted curves"},
+};
+
+enum {
+    O_R, O_TH, O_VR, O_VT, O_V, O_AR, O_AT, O_A, O_CENT, O_COR, O_ATAN, O_ANOR, O_RHO,
+    O_PATH, O_SV, O_SAR, O_SAT, O_FDV, O_FDA, O_ANIM
+};
+
+static const mm_output outputs[] = {
+    [O_R] = MM_SCALAR("r", "distance from O", "m", .flags = MM_EXACT),
+    [O_TH] = MM_SCALAR("theta", "angle", "rad", .flags = MM_EXACT),
+    [O_VR] = MM_SCALAR("v_r", "radial velocity r'", "m/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_VT] = MM_SCALAR("v_theta", "transverse velocity r theta'", "m/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_V] = MM_SCALAR("v", "speed", "m/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_AR] = MM_SCALAR("a_r", "radial acceleration r'' - r theta'^2", "m/s^2", .flags = MM_ANSWER | MM_EXACT),
+    [O_AT] = MM_SCALAR("a_theta", "transverse acceleration r theta'' + 2 r' theta'", "m/s^2", .flags = MM_ANSWER | MM_EXACT),
+    [O_A] = MM_SCALAR("a", "magnitude of the acceleration", "m/s^2", .flags = MM_ANSWER | MM_EXACT),
+    [O_CENT] = MM_SCALAR("a_centripetal", "centripetal term -r theta'^2", "m/s^2", .flags = MM_EXACT),
+    [O_COR] = MM_SCALAR("a_coriolis", "Coriolis term 2 r' theta'", "m/s^2", .flags = MM_EXACT),
+    [O_ATAN] = MM_SCALAR("a_t", "tangential acceleration dv/dt", "m/s^2", .flags = MM_EXACT),
+    [O_ANOR] = MM_SCALAR("a_n", "normal acceleration v^2/rho", "m/s^2", .flags = MM_EXACT),
+    [O_RHO] = MM_SCALAR("rho", "radius of curvature of the path", "m", .flags = MM_EXACT),
+    [O_PATH] = MM_SERIES("path", "path of the point", "m", "x", "m", .aspect = "equal", .figure = "path"),
+    [O_SV] = MM_SERIES("v", "speed", "m/s", "t", "s", .figure = "speed"),
+    [O_SAR] = MM_SERIES("a_r", "radial acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
+    [O_SAT] = MM_SERIES("a_theta", "transverse acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
+    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of (x, y) vs v", "m/s", "step h", "s",
+                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs a", "m/s^2", "step h", "s",
+                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_ANIM] = MM_ANIMATION("the arm turning about O with the point on it, its velocity and acceleration"),
+};
+
+typedef struct polar {
+    double r0, u, b, th0, w0, al;
+} polar;
+
+typedef struct state {
+    double r, r1, r2, th, th1, th2;
+} state;
+
+static state at(const polar *p, double t)
+{
+    return (state){p->r0 + p->u * t + 0.5 * p->b * t * t, p->u + p->b * t, p->b,
+                   p->th0 + p->w0 * t + 0.5 * p->al * t * t, p->w0 + p->al * t, p->al};
+}
+
+/* eqs. (2)-(3) in polar components, and the Cartesian x, v, a they give */
+static void kin(const state *s, mm_v2 *x, mm_v2 *v, mm_v2 *a, double *vr, double *vt, double *ar, double *at_)
+{
+    mm_v2 er = mm_v2_polar(1, s->th), et = mm_v2_perp(er);
+    *vr = s->r1, *vt = s->r * s->th1;
+    *ar = s->r2 - s->r * s->th1 * s->th1, *at_ = s->r * s->th2 + 2 * s->r1 * s->th1;
+    *x = mm_v2_scale(er, s->r);
+    *v = mm_v2_add(mm_v2_scale(er, *vr), mm_v2_scale(et, *vt));
+    *a = mm_v2_add(mm_v2_scale(er, *ar), mm_v2_scale(et, *at_));
+}
+
+/* the other way round: differentiate x = r cos th, y = r sin th directly */
+static void cartesian(const state *s, mm_v2 *v, mm_v2 *a)
+{
+    double c = cos(s->th), sn = sin(s->th), w = s->th1;
+    v->x = s->r1 * c - s->r * w * sn;
+    v->y = s->r1 * sn + s->r * w * c;
+    a->x = s->r2 * c - 2 * s->r1 * w * sn - s->r * s->th2 * sn - s->r * w * w * c;
+    a->y = s->r2 * sn + 2 * s->r1 * w * c + s->r * s->th2 * c - s->r * w * w * sn;
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    if (in[P_T].x > in[P_TEND].x)
+        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion, 0 to t_end = %g s; got %g s",
+                            in[P_TEND].x, in[P_T].x);
+    return MM_OK;
+}
+
+typedef struct fd_ctx {
+    const polar *p;
+    const double *t;
+} fd_ctx;
+
+static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+{
+    (void)err;
+    fd_ctx *c = ctx;
+    const polar *p = c->p;
+    double t = c->t[i] + h;
+    state s = at(p, t);
+    q[0] = s.r * cos(s.th), q[1] = s.r * sin(s.th);
+    /* the rounding of r(t) and theta(t), each a sum of three terms */
+    double dr = 4 * DBL_EPSILON * (fabs(p->r0) + fabs(p->u * t) + fabs(p->b * t * t)),
+           dth = 4 * DBL_EPSILON * (fabs(p->th0) + fabs(p->w0 * t) + fabs(p->al * t * t));
+    *qerr = dr + fabs(s.r) * (dth + 2 * DBL_EPSILON);
+    return MM_OK;
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    polar p = {in[P_R0].x, in[P_U].x, in[P_B].x, in[P_TH0].x, in[P_W0].x, in[P_AL].x};
+    const double t = in[P_T].x, t_end = in[P_TEND].x;
+    const int n = (int)in[P_POINTS].x;
+
+    /* ---- at t ---- */
+    state s = at(&p, t);
+    mm_v2 x, v, a, vc, ac;
+    double vr, vt, ar, at_;
+    kin(&s, &x, &v, &a, &vr, &vt, &ar, &at_);
+    double speed = mm_v2_norm(v), amag = mm_v2_norm(a);
+    mm_res_scalar(res, O_R, s.r);
+    mm_res_scalar(res, O_TH, s.th);
+    mm_res_scalar(res, O_VR, vr);
+    mm_res_scalar(res, O_VT, vt);
+    mm_res_scalar(res, O_V, hypot(vr, vt));
+    mm_res_scalar(res, O_AR, ar);
+    mm_res_scalar(res, O_AT, at_);
+    mm_res_scalar(res, O_A, hypot(ar, at_));
+    mm_res_scalar(res, O_CENT, -s.r * s.th1 * s.th1);
+    mm_res_scalar(res, O_COR, 2 * s.r1 * s.th1);
+    if (speed > 0) {
+        /* path components: a_t along v, a_n across it, rho = v^2 / a_n */
+        double an = fabs(mm_v2_cross(v, a)) / speed;
+        mm_res_scalar(res, O_ATAN, mm_v2_dot(v, a) / speed);
+        mm_res_scalar(res, O_ANOR, an);
+        if (an > 0)
+            mm_res_scalar(res, O_RHO, speed * speed / an);
+    }
+    /* the polar route against the Cartesian one: rounding of the largest term */
+    cartesian(&s, &vc, &ac);
+    double big_v = fabs(s.r1) + fabs(s.r * s.th1), big_a = fabs(s.r2) + 2 * fabs(s.r1 * s.th1) +
+                                                           fabs(s.r * s.th2) + fabs(s.r * s.th1 * s.th1);
+    mm_res_check_abs(res, "v by eq. (2) vs d/dt of (r cos theta, r sin theta): |difference| [m/s]",
+                     mm_v2_norm(mm_v2_sub(v, vc)), 0, 8 * DBL_EPSILON * big_v);
+    mm_res_check_abs(res, "a by eq. (3) vs d2/dt2 of (r cos theta, r sin theta): |difference| [m/s^2]",
+                     mm_v2_norm(mm_v2_sub(a, ac)), 0, 8 * DBL_EPSILON * big_a);
+    /* radius of curvature against the circle through three points h apart:
+     * R(h) - rho = O(h) (O(h^2) when the speed is constant), so the value
+     * at h/4 lies within 2 |R(h/2) - R(h/4)| of rho, plus the rounding of a
+     * circle through points s = |v| h apart: eps |x| rho / s^2 */
+    double an = speed > 0 ? fabs(mm_v2_cross(v, a)) / speed : 0;
+    if (an > 1e-9 * amag && speed > 1e-9 * (fabs(s.r) + 1)) {
+        double rho = speed * speed / an, R[3], h = 0.02 * rho / speed;
+        int ok = 1;
+        for (int k = 0; k < 3; k++) {
+            mm_v2 P[3], c;
+            for (int j = 0; j < 3; j++) {
+                state sj = at(&p, t + (j - 1) * h / (1 << k));
+                P[j] = mm_v2_polar(sj.r, sj.th);
+            }
+            ok &= mm_geom_circumcircle(P[0], P[1], P[2], &c, &R[k]);
+        }
+        double sp = speed * h / 4, round_ = 64 * DBL_EPSILON * (mm_v2_norm(x) + rho) * rho * rho / (sp * sp);
+        if (ok)
+            mm_res_check_abs(res, "rho = v^2/a_n vs the circle through three points |v| h apart (h = 0.005 rho/v)",
+                             R[2], rho, 2 * fabs(R[1] - R[2]) + round_);
+    }
+
+    /* ---- over [0, t_end] ---- */
+    mm_series *path = mm_res_series(res, O_PATH, n), *sv = mm_res_series(res, O_SV, n);
+    mm_series *sr = mm_res_series(res, O_SAR, n), *st = mm_res_series(res, O_SAT, n);
+    double *d1 = mm_res_alloc(res, 2 * (size_t)n * sizeof *d1), *d2 = mm_res_alloc(res, 2 * (size_t)n * sizeof *d2);
+    if (!path || !sv || !sr || !st || !d1 || !d2)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_kin_grid(0, t_end, n, sv->x);
+    double vmax = 0, amax = 0;
+    for (int i = 0; i < n; i++) {
+        state si = at(&p, sv->x[i]);
+        mm_v2 xi, vi, ai;
+        double a1, a2, a3, a4;
+        kin(&si, &xi, &vi, &ai, &a1, &a2, &a3, &a4);
+        path->x[i] = xi.x, path->y[i] = xi.y;
+        sr->x[i] = st->x[i] = sv->x[i];
+        sv->y[i] = mm_v2_norm(vi), sr->y[i] = a3, st->y[i] = a4;
+        d1[2 * i] = vi.x, d1[2 * i + 1] = vi.y, d2[2 * i] = ai.x, d2[2 * i + 1] = ai.y;
+        vmax = fmax(vmax, sv->y[i]), amax = fmax(amax, mm_v2_norm(ai));
+    }
+    /* central differences of the position over the motion, one sample in 8 */
+    int ns = (n + 7) / 8;
+    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *e1 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *e1),
+           *e2 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *e2);
+    if (!ts || !e1 || !e2)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int j = 0; j < ns; j++) {
+        int i = j * 8 < n ? j * 8 : n - 1;
+        ts[j] = sv->x[i];
+        e1[2 * j] = d1[2 * i], e1[2 * j + 1] = d1[2 * i + 1], e2[2 * j] = d2[2 * i], e2[2 * j + 1] = d2[2 * i + 1];
+    }
+    fd_ctx fc = {&p, ts};
+    mm_kin_fd fd;
+    double h0 = 0.05 / fmax(1, fmax(fabs(p.w0), fabs(p.w0) + fabs(p.al) * t_end));
+    int rc = mm_kin_fd_study(res, O_FDV, "d(x,y)/dt", fd_pos, &fc, 2, NULL, ns, e1, 1, h0, 24, 0, &fd, err);
+    if (rc == MM_OK)
+        rc = mm_kin_fd_study(res, O_FDA, "d2(x,y)/dt2", fd_pos, &fc, 2, NULL, ns, e2, 2, h0, 18, 0, &fd, err);
+    if (rc != MM_OK)
+        return rc;
+
+    /* ---- the animation: the arm, the point, its path and arrows ---- */
+    double wmax = fmax(fabs(p.w0), fabs(p.w0 + p.al * t_end)), t_show;
+    int nf = mm_scene_frames(t_end, wmax > 0 ? 2 * M_PI / wmax : 0, &t_show);
+    double size = 0;
+    for (int i = 0; i < n; i++)
+        size = fmax(size, hypot(path->x[i], path->y[i]));
+    mm_kin_draw d;
+    mm_anim *an_ = mm_kin_draw_start(&d, res, nf, "t", "s", 2 * size + 1e-3);
+    mm_shape *piv = an_ ? mm_kin_pivot(&d, "O", 0, 0) : NULL;
+    mm_shape *arm = mm_kin_shape(&d, "arm", MM_SHAPE_LINE, 1, 2);
+    mm_shape *pt = mm_kin_shape(&d, "point", MM_SHAPE_CIRCLE, 1, 1);
+    mm_shape *tr = mm_kin_shape(&d, "path", MM_SHAPE_PATH, 0, n);
+    mm_shape *va = mm_kin_arrow_shape(&d, "v", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
+    if (!piv || !arm || !pt || !tr || !va || !aa)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    pt->radius = 0.02 * d.size;
+    for (int i = 0; i < n; i++)
+        mm_kin_pt(tr, 0, i, path->x[i], path->y[i]);
+    for (int f = 0; f < nf; f++) {
+        double tf = t_show * f / (nf - 1);
+        an_->t[f] = tf;
+        state sf = at(&p, tf);
+        mm_v2 xf, vf, af;
+        double a1, a2, a3, a4;
+        kin(&sf, &xf, &vf, &af, &a1, &a2, &a3, &a4);
+        mm_v2 tip = mm_v2_polar(fmax(size, 1e-3) * 1.1, sf.th);          /* the arm runs past the point */
+        mm_kin_pt(arm, f, 0, 0, 0);
+        mm_kin_pt(arm, f, 1, tip.x, tip.y);
+        mm_kin_pt(pt, f, 0, xf.x, xf.y);
+        mm_kin_arrow(va, f, xf.x, xf.y, vf.x, vf.y);
+        mm_kin_arrow(aa, f, xf.x, xf.y, af.x, af.y);
+    }
+    mm_res_method(res, "closed form (polar components), checked by central differences", 0);
+    return mm_kin_draw_finish(&d);
+}
+
+static const char *const references[] = {
+    "F. P. Beer, E. R. Johnston, Vector Mechanics for Engineers: Dynamics, 9th ed., section 11.14", NULL,
+};
+
+const mm_exercise mm_ex_kin_rotation_plane = {
+    .id = "kin-rotation-plane",
+    .chapter = 2,
+    .section = "2.2.6",
+    .title = "Motion about a fixed point: polar coordinates",
+    .summary = "Radial and transverse velocity and acceleration of a point on a turning arm: the centripetal "
+               "and Coriolis terms, and circular motion as the special case.",
+    .tags = "kinematics, particle, polar coordinates, rotation, Coriolis, centripetal",
+    .theory = "exercises/kin/rotation_plane.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

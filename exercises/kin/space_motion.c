@@ -1,0 +1,384 @@
+/* space_motion.c — kin-space-motion: a rigid body turning about a fixed
+ * point, its attitude given by three Euler angles that change at constant
+ * rates.
+ *
+ *     R = R_i(a) R_j(b) R_k(c)                                          (1)
+ *     w = a' e_i + b' R_i(a) e_j + c' R_i(a) R_j(b) e_k = B(a, b) rates  (2)
+ *     dR/dt = [w]x R,   d2R/dt2 = ([w']x + [w]x^2) R                      (3)
+ *
+ * Goal: build a rotation matrix from Euler angles (intrinsic sequences),
+ * find the angular velocity from the angle rates, read the angles back from
+ * the matrix, and meet gimbal lock: where the second angle lines the first
+ * and third axes up (b = 0, pi for z-y-z; b = +-pi/2 for z-y-x), det B = 0,
+ * only a + c (or a - c) is determined, and no rates give a turn about the
+ * missing axis.
+ * Checks: R orthogonal with det 1; R against the product of three
+ * quaternions (an independent construction); the angles read back (or, at
+ * the lock, R rebuilt from them); (3) against central differences of R(t)
+ * (the error against the step, order 2).
+ * Reference: J. J. Craig, Introduction to Robotics, 3rd ed., ch. 2 and
+ * appendix B; E. J. Haug, Computer Aided Kinematics and Dynamics of
+ * Mechanical Systems, ch. 6.
+ */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "mm_geom.h"
+#include "mm_kin.h"
+#include "mm_scene.h"
+
+enum { P_SEQ, P_A, P_B, P_C, P_AD, P_BD, P_CD, P_POINT, P_TEND, P_POINTS };
+
+static const char *const seqs[] = {"zyx", "zyz", "zxz", "xyz", NULL};
+static const int seq_axes[4][3] = {{2, 1, 0}, {2, 1, 2}, {2, 0, 2}, {0, 1, 2}};
+
+static const mm_param params[] = {
+    [P_SEQ] = {"sequence", "Euler sequence", "", MM_CHOICE, 0, 0, 3, .choices = seqs,
+               .help = "axes of the three turns, each about the axis as already turned: zyx is yaw, pitch, roll"},
+    [P_A] = {"phi", "first angle", "rad", MM_REAL, 0.5, -10, 10, .help = "about the first axis of the sequence"},
+    [P_B] = {"theta", "second angle", "rad", MM_REAL, 0.8, -10, 10,
+             .help = "gimbal lock at +-pi/2 (zyx, xyz) or 0, pi (zyz, zxz)"},
+    [P_C] = {"psi", "third angle", "rad", MM_REAL, 0.3, -10, 10, .help = "about the third axis"},
+    [P_AD] = {"phi_dot", "rate of the first angle", "rad/s", MM_REAL, 1, -20, 20, .help = "constant"},
+    [P_BD] = {"theta_dot", "rate of the second angle", "rad/s", MM_REAL, 0.5, -20, 20, .help = "constant"},
+    [P_CD] = {"psi_dot", "rate of the third angle", "rad/s", MM_REAL, 2, -20, 20, .help = "constant"},
+    [P_POINT] = {"point", "a point of the body", "m", MM_VECTOR, 0, -10, 10, "0.3,0.2,0.1", .max_cols = 3,
+                 .help = "its body coordinates x, y, z from the fixed point"},
+    [P_TEND] = {"t_end", "duration of the motion shown", "s", MM_REAL, 4, 0.01, 10,
+                .help = "the angles change at their rates from t = 0 (the instant asked) to t_end"},
+    [P_POINTS] = {"points", "plot points", "", MM_INT, 201, 11, 2001, .help = "samples of the plotted curves"},
+};
+
+enum {
+    O_WX, O_WY, O_WZ, O_W, O_WBX, O_WBY, O_WBZ, O_AX, O_AY, O_AZ, O_ANG, O_DETB, O_LOCK, O_TLOCK, O_VP,
+    O_R, O_BACK, O_SANG, O_SDET, O_SW, O_FDV, O_FDA, O_ANIM
+};
+
+static const char *const rcols[] = {"row", "x", "y", "z", NULL}, *const runits[] = {"", "", "", "", NULL};
+static const char *const bcols[] = {"angle", "given", "read_back", NULL}, *const bunits[] = {"", "rad", "rad", NULL};
+
+static const mm_output outputs[] = {
+    [O_WX] = MM_SCALAR("omega_x", "angular velocity, space x", "rad/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_WY] = MM_SCALAR("omega_y", "angular velocity, space y", "rad/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_WZ] = MM_SCALAR("omega_z", "angular velocity, space z", "rad/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_W] = MM_SCALAR("omega", "magnitude of the angular velocity", "rad/s", .flags = MM_ANSWER | MM_EXACT),
+    [O_WBX] = MM_SCALAR("omega_body_x", "angular velocity, body x", "rad/s", .flags = MM_EXACT),
+    [O_WBY] = MM_SCALAR("omega_body_y", "angular velocity, body y", "rad/s", .flags = MM_EXACT),
+    [O_WBZ] = MM_SCALAR("omega_body_z", "angular velocity, body z", "rad/s", .flags = MM_EXACT),
+    [O_AX] = MM_SCALAR("alpha_x", "angular acceleration, space x", "rad/s^2", .flags = MM_EXACT),
+    [O_AY] = MM_SCALAR("alpha_y", "angular acceleration, space y", "rad/s^2", .flags = MM_EXACT),
+    [O_AZ] = MM_SCALAR("alpha_z", "angular acceleration, space z", "rad/s^2", .flags = MM_EXACT),
+    [O_ANG] = MM_SCALAR("rotation_angle", "angle of the single turn equal to R", "rad", .flags = MM_ANSWER | MM_EXACT),
+    [O_DETB] = MM_SCALAR("det_B", "determinant of the Euler-rate matrix B (0: gimbal lock)", "", .flags = MM_EXACT),
+    [O_LOCK] = MM_SCALAR("gimbal_lock", "in gimbal lock at t = 0 (1) or not (0)", "", .flags = MM_ANSWER | MM_EXACT),
+    [O_TLOCK] = MM_SCALAR("t_lock", "first time the motion passes a gimbal lock", "s", .flags = MM_EXACT),
+    [O_VP] = MM_SCALAR("v_P", "speed of the body point", "m/s", .flags = MM_EXACT),
+    [O_R] = MM_TABLE("R", "rotation matrix (body to space)", rcols, runits),
+    [O_BACK] = MM_TABLE("angles_back", "the angles read back from R", bcols, bunits),
+    [O_SANG] = MM_SERIES("theta", "second angle", "rad", "t", "s", .figure = "second angle"),
+    [O_SDET] = MM_SERIES("det_B", "det B: zero at a gimbal lock", "", "t", "s", .figure = "det B"),
+    [O_SW] = MM_SERIES("omega", "magnitude of the angular velocity", "rad/s", "t", "s", .figure = "omega"),
+    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of R vs [w]x R", "1/s", "step h", "s",
+                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs ([w']x + [w]x^2) R", "1/s^2", "step h",
+                        "s", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_ANIM] = MM_ANIMATION("the body (a box) turning about the fixed point, its axes and angular velocity"),
+};
+
+typedef struct att {
+    int seq[3];
+    double a0[3], rate[3];
+} att;
+
+static void angles_at(const att *m, double t, double ang[3])
+{
+    for (int i = 0; i < 3; i++)
+        ang[i] = m->a0[i] + m->rate[i] * t;
+}
+
+/* omega (space) and its rate w' = dB/dt rates, by differentiating (2):
+ * d/dt R_i(a) e_j = a' e_i x (R_i(a) e_j), and so on */
+static void omega_at(const att *m, double t, mm_v3 *w, mm_v3 *wd)
+{
+    double ang[3], B[9];
+    angles_at(m, t, ang);
+    mm_geom_euler_rates(m->seq, ang, 0, B);
+    mm_v3 c0 = {B[0], B[3], B[6]}, c1 = {B[1], B[4], B[7]}, c2 = {B[2], B[5], B[8]};
+    *w = mm_v3_add(mm_v3_add(mm_v3_scale(c0, m->rate[0]), mm_v3_scale(c1, m->rate[1])), mm_v3_scale(c2, m->rate[2]));
+    mm_v3 w1 = mm_v3_scale(c0, m->rate[0]), w12 = mm_v3_add(w1, mm_v3_scale(c1, m->rate[1]));
+    mm_v3 d1 = mm_v3_cross(w1, c1), d2 = mm_v3_cross(w12, c2);      /* how the 2nd and 3rd axes turn */
+    *wd = mm_v3_add(mm_v3_scale(d1, m->rate[1]), mm_v3_scale(d2, m->rate[2]));
+}
+
+/* the same rotation by quaternions: q_i(a) q_j(b) q_k(c) */
+static void quat_matrix(const int seq[3], const double ang[3], double R[9])
+{
+    double q[4] = {1, 0, 0, 0};
+    for (int s = 0; s < 3; s++) {
+        double e[4] = {cos(0.5 * ang[s]), 0, 0, 0}, r[4];
+        e[1 + seq[s]] = sin(0.5 * ang[s]);
+        r[0] = q[0] * e[0] - q[1] * e[1] - q[2] * e[2] - q[3] * e[3];
+        r[1] = q[0] * e[1] + q[1] * e[0] + q[2] * e[3] - q[3] * e[2];
+        r[2] = q[0] * e[2] - q[1] * e[3] + q[2] * e[0] + q[3] * e[1];
+        r[3] = q[0] * e[3] + q[1] * e[2] - q[2] * e[1] + q[3] * e[0];
+        memcpy(q, r, sizeof q);
+    }
+    double w = q[0], x = q[1], y = q[2], z = q[3];
+    R[0] = 1 - 2 * (y * y + z * z), R[1] = 2 * (x * y - w * z), R[2] = 2 * (x * z + w * y);
+    R[3] = 2 * (x * y + w * z), R[4] = 1 - 2 * (x * x + z * z), R[5] = 2 * (y * z - w * x);
+    R[6] = 2 * (x * z - w * y), R[7] = 2 * (y * z + w * x), R[8] = 1 - 2 * (x * x + y * y);
+}
+
+static int check(const mm_value *in, mm_error *err)
+{
+    if (in[P_POINT].cols != 3)
+        return mm_error_set(err, MM_ERANGE, "point", "point needs 3 body coordinates x,y,z; got %d", in[P_POINT].cols);
+    return MM_OK;
+}
+
+typedef struct fd_ctx {
+    const att *m;
+    const double *t;
+} fd_ctx;
+
+static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+{
+    (void)err;
+    fd_ctx *c = ctx;
+    double ang[3], t = c->t[i] + h, big = 0;
+    angles_at(c->m, t, ang);
+    mm_geom_euler_matrix(c->m->seq, ang, q);
+    for (int k = 0; k < 3; k++)
+        big += fabs(c->m->a0[k]) + fabs(c->m->rate[k] * t);
+    *qerr = (8 + 4 * big) * DBL_EPSILON;            /* three rounded angles, two products */
+    return MM_OK;
+}
+
+/* isometric view: screen x, y of a space point */
+static void view(mm_v3 p, double *x, double *y)
+{
+    *x = (p.y - p.x) * M_SQRT1_2;
+    *y = (2 * p.z - p.x - p.y) / sqrt(6.0);
+}
+
+static int solve(const mm_value *in, mm_result *res, mm_error *err)
+{
+    att m;
+    memcpy(m.seq, seq_axes[(int)in[P_SEQ].x], sizeof m.seq);
+    m.a0[0] = in[P_A].x, m.a0[1] = in[P_B].x, m.a0[2] = in[P_C].x;
+    m.rate[0] = in[P_AD].x, m.rate[1] = in[P_BD].x, m.rate[2] = in[P_CD].x;
+    const double *pp = in[P_POINT].data, t_end = in[P_TEND].x;
+    const int n = (int)in[P_POINTS].x, proper = m.seq[0] == m.seq[2];
+    mm_v3 p = {pp[0], pp[1], pp[2]};
+
+    /* ---- at t = 0: R, omega, the angles back ---- */
+    double R[9], Rq[9], Rt[9], B[9], det_err;
+    mm_geom_euler_matrix(m.seq, m.a0, R);
+    mm_geom_euler_rates(m.seq, m.a0, 0, B);
+    mm_table *tr = mm_res_table(res, O_R, 3);
+    if (!tr)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int i = 0; i < 3; i++) {
+        tr->cell[4 * i] = i + 1;
+        for (int j = 0; j < 3; j++)
+            tr->cell[4 * i + 1 + j] = R[3 * i + j];
+    }
+    double big = 0;
+    for (int k = 0; k < 3; k++)
+        big += fabs(m.a0[k]);
+    mm_res_check_abs(res, "R^T R = I: worst entry error", mm_geom_rot_orth_error(R, &det_err), 0, 16 * DBL_EPSILON);
+    mm_res_check_abs(res, "det R = 1", det_err, 0, 16 * DBL_EPSILON);
+    quat_matrix(m.seq, m.a0, Rq);
+    double dq = 0;
+    for (int i = 0; i < 9; i++)
+        dq = fmax(dq, fabs(R[i] - Rq[i]));
+    mm_res_check_abs(res, "R from three rotation matrices vs from three quaternions: worst entry", dq, 0,
+                     (16 + 4 * big) * DBL_EPSILON);
+    mm_v3 w, wd, axis;
+    omega_at(&m, 0, &w, &wd);
+    mm_geom_m3_transpose(R, Rt);
+    mm_v3 wb = mm_geom_m3_apply(Rt, w);
+    mm_res_scalar(res, O_WX, w.x), mm_res_scalar(res, O_WY, w.y), mm_res_scalar(res, O_WZ, w.z);
+    mm_res_scalar(res, O_W, mm_v3_norm(w));
+    mm_res_scalar(res, O_WBX, wb.x), mm_res_scalar(res, O_WBY, wb.y), mm_res_scalar(res, O_WBZ, wb.z);
+    mm_res_scalar(res, O_AX, wd.x), mm_res_scalar(res, O_AY, wd.y), mm_res_scalar(res, O_AZ, wd.z);
+    double angle;
+    mm_geom_rot_log(R, &axis, &angle);
+    mm_res_scalar(res, O_ANG, angle);
+    double detB = mm_geom_m3_det(B);
+    mm_res_scalar(res, O_DETB, detB);
+    mm_res_scalar(res, O_VP, mm_v3_norm(mm_v3_cross(w, mm_geom_m3_apply(R, p))));
+
+    /* the angles back from R; gimbal lock within 1e-8 of the lock */
+    double back[3], cond, Rb[9];
+    int lock = mm_geom_euler_angles(m.seq, R, back, 1e-8, &cond);
+    mm_res_scalar_text(res, O_LOCK, lock, lock ? "gimbal lock: first and third axes in line" : "no gimbal lock");
+    mm_table *tb = mm_res_table(res, O_BACK, 3);
+    if (!tb)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    static const char *const names[3] = {"phi", "theta", "psi"};
+    for (int i = 0; i < 3; i++) {
+        tb->text[3 * i] = names[i];
+        tb->cell[3 * i + 1] = m.a0[i];
+        tb->cell[3 * i + 2] = back[i];
+    }
+    /* R rebuilt from the angles read back: rounding grows like cond near the lock */
+    mm_geom_euler_matrix(m.seq, back, Rb);
+    double db = 0;
+    for (int i = 0; i < 9; i++)
+        db = fmax(db, fabs(R[i] - Rb[i]));
+    mm_res_check_abs(res, lock ? "R rebuilt from the angles read back (at the lock, with psi = 0)"
+                               : "R rebuilt from the angles read back",
+                     db, 0, lock ? 1e-7 : 32 * DBL_EPSILON * fmin(cond, 1e8));
+    if (lock) {
+        /* which sum survives: R is unchanged by phi + d, psi + d when it depends on phi - psi */
+        double sh[3] = {m.a0[0] + 0.1, m.a0[1], m.a0[2] + 0.1}, Rs[9], ds = 0;
+        mm_geom_euler_matrix(m.seq, sh, Rs);
+        for (int i = 0; i < 9; i++)
+            ds = fmax(ds, fabs(Rs[i] - R[i]));
+        mm_res_warn(res, "gimbal lock: theta puts the first and third axes in line, so only %s is determined (psi "
+                         "is read back as 0), det B = 0, and no angle rates give a turn about the axis square to both",
+                    ds < 1e-6 ? "phi - psi" : "phi + psi");
+    }
+    /* the first lock the motion meets: theta(t) = pi k (proper) or pi/2 + pi k */
+    if (m.rate[1] != 0) {
+        double off = proper ? 0 : M_PI / 2, k = (m.a0[1] - off) / M_PI;
+        double kn = m.rate[1] > 0 ? floor(k) + 1 : ceil(k) - 1;
+        double tl = (off + M_PI * kn - m.a0[1]) / m.rate[1];
+        if (tl <= t_end) {
+            mm_res_scalar(res, O_TLOCK, tl);
+            mm_res_warn(res, "the motion passes a gimbal lock at t = %.4g s (theta = %.4g rad): there the Euler "
+                             "angles stop describing the turn smoothly", tl, off + M_PI * kn);
+        }
+    }
+
+    /* ---- over [0, t_end] ---- */
+    mm_series *sa = mm_res_series(res, O_SANG, n), *sd = mm_res_series(res, O_SDET, n), *sw = mm_res_series(res, O_SW, n);
+    int ns = (n + 7) / 8;
+    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *d1 = mm_res_alloc(res, 9 * (size_t)ns * sizeof *d1),
+           *d2 = mm_res_alloc(res, 9 * (size_t)ns * sizeof *d2);
+    if (!sa || !sd || !sw || !ts || !d1 || !d2)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_kin_grid(0, t_end, n, sa->x);
+    double wmax = 0;
+    for (int i = 0; i < n; i++) {
+        double ti = sa->x[i], ang[3], Bi[9], Ri[9], W[9], WD[9], D1[9], D2[9];
+        angles_at(&m, ti, ang);
+        mm_geom_euler_rates(m.seq, ang, 0, Bi);
+        mm_v3 wi, wdi;
+        omega_at(&m, ti, &wi, &wdi);
+        sd->x[i] = sw->x[i] = ti;
+        sa->y[i] = ang[1], sd->y[i] = mm_geom_m3_det(Bi), sw->y[i] = mm_v3_norm(wi);
+        wmax = fmax(wmax, sw->y[i]);
+        if (i % 8 == 0 || i == n - 1) {
+            int j = i % 8 == 0 ? i / 8 : ns - 1;
+            ts[j] = ti;
+            /* eq. (3): R' = [w]x R, R'' = ([w']x + [w]x^2) R */
+            mm_geom_euler_matrix(m.seq, ang, Ri);
+            mm_geom_skew(wi, W), mm_geom_skew(wdi, WD);
+            mm_geom_m3_mul(W, Ri, D1);
+            mm_geom_m3_mul(W, D1, D2);
+            mm_geom_m3_mul(WD, Ri, WD);
+            for (int k = 0; k < 9; k++)
+                d1[9 * j + k] = D1[k], d2[9 * j + k] = D2[k] + WD[k];
+        }
+    }
+    fd_ctx fc = {&m, ts};
+    mm_kin_fd fd;
+    double h0 = 0.05 / fmax(1, wmax);
+    int rc = mm_kin_fd_study(res, O_FDV, "dR/dt = [w]x R", fd_pos, &fc, 9, NULL, ns, d1, 1, h0, 24, 0, &fd, err);
+    if (rc == MM_OK)
+        rc = mm_kin_fd_study(res, O_FDA, "d2R/dt2 = ([w']x + [w]x^2) R", fd_pos, &fc, 9, NULL, ns, d2, 2, h0, 18, 0, &fd, err);
+    if (rc != MM_OK)
+        return rc;
+
+    /* ---- the animation: a box 0.6 x 0.4 x 0.2 m and its axes, seen isometrically ---- */
+    static const double hx = 0.3, hy = 0.2, hz = 0.1;
+    double t_show;
+    int nf = mm_scene_frames(t_end, wmax > 0 ? 2 * M_PI / wmax : 0, &t_show);
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 1.6);
+    mm_shape *bot = an ? mm_kin_shape(&d, "box bottom", MM_SHAPE_POLYGON, 1, 4) : NULL;
+    mm_shape *top = mm_kin_shape(&d, "box top", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *edge[4], *ba[3], *sx[3];
+    static const char *const en[4] = {"edge 1", "edge 2", "edge 3", "edge 4"};
+    static const char *const bn[3] = {"body x", "body y", "body z"}, *const sn[3] = {"space x", "space y", "space z"};
+    for (int k = 0; k < 4; k++)
+        edge[k] = mm_kin_shape(&d, en[k], MM_SHAPE_LINE, 1, 2);
+    for (int k = 0; k < 3; k++) {
+        ba[k] = mm_kin_shape(&d, bn[k], MM_SHAPE_ARROW, 1, 2);
+        sx[k] = mm_kin_shape(&d, sn[k], MM_SHAPE_LINE, 0, 2);
+    }
+    mm_shape *wa = mm_kin_arrow_shape(&d, "omega", "rad/s", wmax);
+    mm_shape *pth = mm_kin_shape(&d, "path of the point", MM_SHAPE_PATH, 0, 121);
+    if (!bot || !top || !edge[3] || !ba[2] || !sx[2] || !wa || !pth)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int k = 0; k < 3; k++) {
+        mm_v3 e = {k == 0, k == 1, k == 2};
+        double x, y;
+        view(mm_v3_scale(e, 0.7), &x, &y);
+        sx[k]->style = "ground";
+        mm_kin_pt(sx[k], 0, 0, 0, 0), mm_kin_pt(sx[k], 0, 1, x, y);
+        ba[k]->unit = "m", ba[k]->scale = 1;
+    }
+    for (int k = 0; k <= 120; k++) {
+        double ang[3], Rk[9], x, y;
+        angles_at(&m, t_show * k / 120, ang);
+        mm_geom_euler_matrix(m.seq, ang, Rk);
+        view(mm_geom_m3_apply(Rk, p), &x, &y);
+        mm_kin_pt(pth, 0, k, x, y);
+    }
+    for (int f = 0; f < nf; f++) {
+        double tf = t_show * f / (nf - 1), ang[3], Rf[9];
+        an->t[f] = tf;
+        angles_at(&m, tf, ang);
+        mm_geom_euler_matrix(m.seq, ang, Rf);
+        double X[8], Y[8];
+        for (int c = 0; c < 8; c++) {                        /* corners: bottom 0-3, top 4-7 */
+            int q = c & 3;
+            mm_v3 corner = {(q == 1 || q == 2) ? hx : -hx, q >= 2 ? hy : -hy, c >= 4 ? hz : -hz};
+            view(mm_geom_m3_apply(Rf, corner), &X[c], &Y[c]);
+        }
+        for (int c = 0; c < 4; c++) {
+            mm_kin_pt(bot, f, c, X[c], Y[c]);
+            mm_kin_pt(top, f, c, X[c + 4], Y[c + 4]);
+            mm_kin_pt(edge[c], f, 0, X[c], Y[c]), mm_kin_pt(edge[c], f, 1, X[c + 4], Y[c + 4]);
+        }
+        for (int k = 0; k < 3; k++) {
+            double x, y;
+            view(mm_v3_make(0.5 * Rf[k], 0.5 * Rf[3 + k], 0.5 * Rf[6 + k]), &x, &y);   /* column k of R */
+            mm_kin_arrow(ba[k], f, 0, 0, x, y);
+        }
+        mm_v3 wf, wdf;
+        omega_at(&m, tf, &wf, &wdf);
+        double x, y;
+        view(wf, &x, &y);
+        mm_kin_arrow(wa, f, 0, 0, x, y);
+    }
+    mm_res_method(res, "closed form (Euler angles), checked by quaternions and central differences", 0);
+    return mm_kin_draw_finish(&d);
+}
+
+static const char *const references[] = {
+    "J. J. Craig, Introduction to Robotics, 3rd ed., Pearson 2005, ch. 2 and appendix B",
+    "E. J. Haug, Computer Aided Kinematics and Dynamics of Mechanical Systems, Allyn and Bacon 1989, ch. 6", NULL,
+};
+
+const mm_exercise mm_ex_kin_space_motion = {
+    .id = "kin-space-motion",
+    .chapter = 2,
+    .section = "2.3.4",
+    .title = "Motion in space: rotation matrices and Euler angles",
+    .summary = "A body turning about a fixed point: its rotation matrix from Euler angles, the angular velocity "
+               "from their rates, the angles read back, and gimbal lock.",
+    .tags = "kinematics, rigid body, rotation matrix, Euler angles, angular velocity, gimbal lock, quaternion",
+    .theory = "exercises/kin/space_motion.md",
+    .params = params,
+    .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
+    .references = references,
+    .check = check,
+    .solve = solve,
+};

@@ -1,0 +1,342 @@
+/* mm_kin.c — the kinematics chapter's kit (see mm_kin.h). */
+#include "mm_kin.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "mm_exhelp.h"
+#include "mm_expr.h"
+#include "mm_geom.h"
+
+/* ---- drawing ------------------------------------------------------------------------ */
+
+mm_anim *mm_kin_draw_start(mm_kin_draw *d, mm_result *res, int nf, const char *t_label,
+                           const char *t_unit, double size)
+{
+    memset(d, 0, sizeof *d);
+    d->res = res;
+    d->nf = nf;
+    d->size = size > 0 && isfinite(size) ? size : 1;
+    d->inv_grid = pow(10, -floor(log10(1e-4 * d->size)));   /* an exact power of ten */
+    d->anim = mm_res_animation(res, nf, t_label, t_unit);
+    return d->anim;
+}
+
+mm_shape *mm_kin_shape(mm_kin_draw *d, const char *name, mm_shape_kind kind, int moving, int npts)
+{
+    if (d->nshapes >= MM_KIN_MAX_SHAPES)
+        return NULL;
+    mm_shape *s = mm_anim_shape(d->res, name, kind, moving ? d->nf : 1, npts);
+    if (s)
+        d->shapes[d->nshapes++] = s;
+    return s;
+}
+
+void mm_kin_pt(mm_shape *s, int f, int k, double x, double y)
+{
+    size_t i = (size_t)(s->frames > 1 ? f : 0) * (size_t)s->npts + (size_t)k;
+    s->x[i] = x;
+    s->y[i] = y;
+}
+
+mm_shape *mm_kin_arrow_shape(mm_kin_draw *d, const char *name, const char *unit, double vmax)
+{
+    mm_shape *s = mm_kin_shape(d, name, MM_SHAPE_ARROW, 1, 2);
+    if (!s)
+        return NULL;
+    s->unit = unit;
+    s->scale = vmax > 0 && isfinite(vmax) ? 0.3 * d->size / vmax : 0;
+    /* a scale of short decimals: 3 significant digits */
+    if (s->scale > 0) {
+        double p = pow(10, floor(log10(s->scale)) - 2);
+        s->scale = round(s->scale / p) * p;
+    }
+    return s;
+}
+
+void mm_kin_arrow(mm_shape *s, int f, double x, double y, double vx, double vy)
+{
+    mm_kin_pt(s, f, 0, x, y);
+    mm_kin_pt(s, f, 1, x + s->scale * vx, y + s->scale * vy);
+}
+
+mm_shape *mm_kin_pivot(mm_kin_draw *d, const char *name, double x, double y)
+{
+    mm_shape *s = mm_kin_shape(d, name, MM_SHAPE_POLYGON, 0, 3);
+    if (!s)
+        return NULL;
+    double h = 0.04 * d->size;
+    s->style = "ground";
+    mm_kin_pt(s, 0, 0, x, y);
+    mm_kin_pt(s, 0, 1, x - 0.6 * h, y - h);
+    mm_kin_pt(s, 0, 2, x + 0.6 * h, y - h);
+    return s;
+}
+
+void mm_kin_block(mm_shape *s, int f, double x, double y, double w, double h, double angle)
+{
+    static const double corner[4][2] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+    double c = cos(angle), sn = sin(angle);
+    for (int k = 0; k < 4; k++) {
+        double u = corner[k][0] * w, v = corner[k][1] * h;
+        mm_kin_pt(s, f, k, x + c * u - sn * v, y + sn * u + c * v);
+    }
+}
+
+int mm_kin_draw_finish(mm_kin_draw *d)
+{
+    double g = d->inv_grid;
+    for (int i = 0; i < d->nshapes; i++) {
+        mm_shape *s = d->shapes[i];
+        size_t m = (size_t)s->frames * (size_t)s->npts;
+        for (size_t k = 0; k < m; k++) {
+            s->x[k] = round(s->x[k] * g) / g;
+            s->y[k] = round(s->y[k] * g) / g;
+        }
+    }
+    return MM_OK;
+}
+
+/* ---- a finite-difference study --------------------------------------------------------- */
+
+int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos, void *ctx, int k,
+                    const double *w, int n, const double *d, int deriv, double h0, int nh, double d_err,
+                    mm_kin_fd *fd, mm_error *err)
+{
+    enum { KMAX = 16 };
+    memset(fd, 0, sizeof *fd);
+    nh = nh > MM_KIN_FD_MAX ? MM_KIN_FD_MAX : nh;
+    fd->nh = nh;
+    double *D = mm_res_alloc(res, (size_t)nh * (size_t)n * (size_t)k * sizeof *D);   /* D[m][i][j] */
+    double *R = mm_res_alloc(res, (size_t)nh * (size_t)n * (size_t)k * sizeof *R);   /* rounding bounds */
+    if (!D || !R || k > KMAX)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    double q0[KMAX], qp[KMAX], qm[KMAX], big = 0, e0 = 0, ep, em;
+    for (int i = 0; i < n; i++) {
+        int rc = deriv == 2 ? pos(i, 0, q0, &e0, ctx, err) : MM_OK;
+        if (rc != MM_OK)
+            return rc;
+        for (int m = 0; m < nh; m++) {
+            double h = ldexp(h0, -m);
+            if ((rc = pos(i, h, qp, &ep, ctx, err)) != MM_OK || (rc = pos(i, -h, qm, &em, ctx, err)) != MM_OK)
+                return rc;
+            for (int j = 0; j < k; j++) {
+                double wj = w ? w[j] : 1, *Dm = D + ((size_t)m * (size_t)n + (size_t)i) * (size_t)k + (size_t)j;
+                double *Rm = R + (Dm - D);
+                double sum = fabs(qp[j]) + fabs(qm[j]) + (deriv == 2 ? 2 * fabs(q0[j]) : 0);
+                /* half an ulp in each position, a few for the subtraction and
+                 * division, and each position's own error (weighted) */
+                double perr = 4 * DBL_EPSILON * sum * wj + ep + em + (deriv == 2 ? 2 * e0 : 0);
+                if (deriv == 1) {
+                    *Dm = wj * (qp[j] - qm[j]) / (2 * h);
+                    *Rm = perr / (2 * h);
+                } else {
+                    *Dm = wj * (qp[j] - 2 * q0[j] + qm[j]) / (h * h);
+                    *Rm = perr / (h * h);
+                }
+            }
+        }
+        for (int j = 0; j < k; j++)
+            big = fmax(big, fabs(d[(size_t)i * (size_t)k + (size_t)j]) * (w ? w[j] : 1));
+    }
+    /* the worst error over the samples at each step */
+    for (int m = 0; m < nh; m++) {
+        fd->h[m] = ldexp(h0, -m);
+        for (size_t c = 0; c < (size_t)n * (size_t)k; c++) {
+            double wj = w ? w[c % (size_t)k] : 1;
+            double e = fabs(D[(size_t)m * (size_t)n * (size_t)k + c] - wj * d[c]);
+            if (!(e <= fd->err[m]))
+                fd->err[m] = e;
+            fd->round[m] = fmax(fd->round[m], R[(size_t)m * (size_t)n * (size_t)k + c]);
+        }
+    }
+    /* the range where truncation rules: error above 100x its rounding bound */
+    int first = -1, last = -1;
+    for (int m = 0; m < nh; m++) {
+        if (fd->err[m] > 100 * fd->round[m]) {
+            if (first < 0)
+                first = m;
+            last = m;
+        } else if (first >= 0) {
+            break;
+        }
+    }
+    char name[200];
+    if (first >= 0 && last - first + 1 >= 3) {
+        int nfit = last - first + 1 > 4 ? 4 : last - first + 1;
+        int m0 = last - nfit + 1;                      /* the smallest steps of the range */
+        fd->nfit = nfit;
+        snprintf(name, sizeof name, "%s: observed order of the central difference (steps %.3g to %.3g)", what,
+                 fd->h[m0], fd->h[last]);
+        fd->slope = mm_check_order(res, name, nfit, fd->h + m0, fd->err + m0, 2, 0.15);
+    }
+    /* the value: at the step whose bound 2 |D(h) - D(h/2)| + 3 (R(h) + R(h/2))
+     * is smallest (the truncation error of D(h) is 4/3 |D(h) - D(h/2)| to
+     * leading order; R bounds the rounding), sample by sample */
+    size_t nk = (size_t)n * (size_t)k;
+    double best = INFINITY;
+    int mb = 0;
+    for (int m = 0; m + 1 < nh; m++) {
+        double bm = 0;
+        for (size_t c = 0; c < nk; c++) {
+            size_t i0 = (size_t)m * nk + c, i1 = i0 + nk;
+            bm = fmax(bm, 2 * fabs(D[i0] - D[i1]) + 3 * (R[i0] + R[i1]) + d_err);
+        }
+        if (bm < best)
+            best = bm, mb = m;
+    }
+    fd->h_check = fd->h[mb];
+    double ratio = -1, got = 0, ref = 0, tol = 0;
+    for (size_t c = 0; c < nk; c++) {
+        size_t i0 = (size_t)mb * nk + c, i1 = i0 + nk;
+        double wj = w ? w[c % (size_t)k] : 1;
+        double b = 2 * fabs(D[i0] - D[i1]) + 3 * (R[i0] + R[i1]) + d_err;
+        double e = fabs(D[i0] - wj * d[c]);
+        double r = e / (b + 1e-300);
+        if (r > ratio) {
+            ratio = r, got = D[i0], ref = wj * d[c], tol = b;
+            fd->worst = e, fd->bound = b;
+        }
+    }
+    snprintf(name, sizeof name, "%s: analytic vs central difference at h = %.3g (bound: 2|D(h)-D(h/2)| + rounding)",
+             what, fd->h_check);
+    mm_res_check_abs(res, name, got, ref, tol);
+    if (out >= 0) {
+        mm_series *s = mm_res_series(res, out, nh);
+        if (!s)
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        double floor_ = 1e-17 * (big > 0 ? big : 1);
+        for (int m = 0; m < nh; m++) {
+            s->x[m] = fd->h[m];
+            s->y[m] = fmax(fd->err[m], floor_);
+        }
+    }
+    return MM_OK;
+}
+
+/* ---- a plane curve typed as two expressions of t ------------------------------------ */
+
+int mm_kin_curve_compile(mm_kin_curve *c, const char *x, const char *y, const char *px, const char *py,
+                         mm_error *err)
+{
+    static const char *const vars[] = {"t"};
+    c->x = c->y = NULL;
+    c->px = px, c->py = py;
+    int rc = mm_expr_compile(x, vars, 1, &c->x, err);
+    if (rc != MM_OK) {
+        if (err)
+            snprintf(err->param, sizeof err->param, "%s", px);
+        return rc;
+    }
+    rc = mm_expr_compile(y, vars, 1, &c->y, err);
+    if (rc != MM_OK) {
+        mm_kin_curve_free(c);
+        if (err)
+            snprintf(err->param, sizeof err->param, "%s", py);
+    }
+    return rc;
+}
+
+void mm_kin_curve_free(mm_kin_curve *c)
+{
+    mm_expr_free(c->x);
+    mm_expr_free(c->y);
+    c->x = c->y = NULL;
+}
+
+int mm_kin_curve_eval(double t, double *out, void *ctx)
+{
+    mm_kin_curve *c = ctx;
+    out[0] = mm_expr_eval(c->x, &t);
+    out[1] = mm_expr_eval(c->y, &t);
+    return isfinite(out[0]) && isfinite(out[1]) ? MM_OK : MM_ENONFINITE;
+}
+
+int mm_kin_curve_at(mm_kin_curve *c, double t, double h0, double r[2], double d1[2], double e1[2], double d2[2],
+                    double e2[2], mm_error *err)
+{
+    int rc = mm_kin_curve_eval(t, r, c);
+    if (rc == MM_OK)
+        rc = mm_geom_curve_derivs(mm_kin_curve_eval, c, 2, t, h0, d1, e1, d2, e2, NULL);
+    if (rc != MM_OK) {
+        double q[2];
+        mm_kin_curve_eval(t, q, c);
+        return mm_error_set(err, MM_ENONFINITE, isfinite(q[0]) ? c->py : c->px,
+                            "the path is not finite at or near t = %g (%s(t) gives %g): choose an expression "
+                            "defined there, or another time range", t, isfinite(q[0]) ? c->py : c->px,
+                            isfinite(q[0]) ? q[1] : q[0]);
+    }
+    return MM_OK;
+}
+
+/* ---- small things ------------------------------------------------------------------------- */
+
+double mm_kin_grid(double a, double b, int n, double *x)
+{
+    double step = (b - a) / (n - 1);
+    double p = pow(10, floor(log10(fabs(step))) - 2);        /* 3 significant digits */
+    double ia = a / p, is = round(step / p);
+    if (n > 2 && fabs(ia - round(ia)) < 1e-9 && fabs(is * p - step) * (n - 2) <= 0.1 * fabs(step) && is != 0) {
+        /* x_i = (a/p + i * s/p) * p: integers, then one division by 1/p, exact
+         * powers of ten, so each value is the double nearest a short decimal */
+        double ip = round(1 / p) > 0 && fabs(round(1 / p) - 1 / p) < 1e-9 ? round(1 / p) : 0;
+        for (int i = 0; i < n - 1; i++) {
+            double num = round(ia) + i * is;
+            x[i] = ip > 0 ? num / ip : num * p;
+        }
+        x[n - 1] = b;
+        return is * p;
+    }
+    mm_linspace(a, b, n, x);
+    return step;
+}
+
+double mm_kin_wrap(double x)
+{
+    double r = remainder(x, 2 * M_PI);
+    return r <= -M_PI ? r + 2 * M_PI : r;
+}
+
+double mm_kin_near(double x, double ref)
+{
+    return ref + remainder(x - ref, 2 * M_PI);
+}
+
+/* ---- mobility ---- */
+
+/* the joints table from "name:kind:freedom,..." */
+int mm_kin_joints_table(mm_result *res, int out, const char *spec, mm_error *err)
+{
+    int rows = 1;
+    for (const char *c = spec; *c; c++)
+        rows += *c == ',';
+    mm_table *t = mm_res_table(res, out, rows);
+    char *copy = mm_res_strdup(res, spec);
+    if (!t || !copy)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    char *save = NULL;
+    int r = 0;
+    for (char *tok = strtok_r(copy, ",", &save); tok && r < rows; tok = strtok_r(NULL, ",", &save), r++) {
+        char *k = strchr(tok, ':'), *f = k ? strchr(k + 1, ':') : NULL;
+        if (!k || !f)
+            return mm_error_set(err, MM_EINTERNAL, "", "bad joint list");
+        *k = *f = '\0';
+        t->text[3 * r] = tok, t->text[3 * r + 1] = k + 1;
+        t->cell[3 * r + 2] = f[1] - '0';
+    }
+    return MM_OK;
+}
+
+/* the rank decision: zero singular values at rounding, the others clear */
+void mm_kin_rank_checks(mm_result *res, const double *sv, int k, int rank, int m, int n)
+{
+    double zero = (m > n ? m : n) * DBL_EPSILON * sv[0];
+    if (rank < k)
+        mm_res_check_abs(res, "largest singular value counted as zero: at rounding (max(m,n) eps sigma_1 x 64)",
+                         sv[rank], 0, 64 * zero);
+    if (rank > 0)
+        mm_res_check_abs(res, "smallest singular value counted as non-zero: well clear of rounding (>= 1e-6 sigma_1)",
+                         fmin(sv[rank - 1], 1e-6 * sv[0]), 1e-6 * sv[0], 0);
+}

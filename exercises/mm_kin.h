@@ -1,0 +1,157 @@
+/* mm_kin.h — what the kinematics chapter's exercises share that is not
+ * numerics: drawing links, pivots, sliders and vector arrows into an
+ * answer's animation, and the finite-difference study that checks an
+ * analytic velocity or acceleration against differences of the positions
+ * (the error against the step, its observed order, the value within the
+ * difference's own error bound).
+ *
+ *   mm_kin_draw d;
+ *   if (!mm_kin_draw_start(&d, res, nf, "crank angle", "rad", size)) return MM_ENOMEM;
+ *   mm_shape *crank = mm_kin_shape(&d, "crank", MM_SHAPE_LINE, 1, 2);
+ *   for (f...) { mm_kin_pt(crank, f, 0, 0, 0); mm_kin_pt(crank, f, 1, xB, yB); }
+ *   return mm_kin_draw_finish(&d);      rounds every coordinate to d.grid
+ */
+#ifndef MM_KIN_H
+#define MM_KIN_H
+
+#include "mm_exercise.h"
+
+/* ---- drawing ------------------------------------------------------------------------ */
+
+#define MM_KIN_MAX_SHAPES 48
+
+typedef struct mm_kin_draw {
+    mm_result *res;
+    mm_anim *anim;
+    int nf;               /* frames */
+    double size;          /* the size of the scene [m]: sets grid and arrow lengths */
+    double inv_grid;      /* coordinates are rounded to 1/inv_grid [m], a power of ten
+                             about 1e-4 of the size: far below a pixel, and short in JSON */
+    mm_shape *shapes[MM_KIN_MAX_SHAPES];
+    int nshapes;
+} mm_kin_draw;
+
+/* Start the animation of nf frames (t[] to be filled by the caller).
+ * Returns the animation, or NULL when out of memory. */
+mm_anim *mm_kin_draw_start(mm_kin_draw *d, mm_result *res, int nf, const char *t_label,
+                           const char *t_unit, double size);
+
+/* A shape that moves (moving = 1: nf frames) or not (one frame), of npts
+ * points.  NULL when out of memory or too many shapes. */
+mm_shape *mm_kin_shape(mm_kin_draw *d, const char *name, mm_shape_kind kind, int moving, int npts);
+
+/* Point k of frame f of s (frame 0 for a shape that does not move). */
+void mm_kin_pt(mm_shape *s, int f, int k, double x, double y);
+
+/* An arrow shape for a vector quantity in unit, scaled so that the
+ * largest of magnitude vmax is 0.3 of the scene (scale 0 when vmax is 0).
+ * NULL when out of memory. */
+mm_shape *mm_kin_arrow_shape(mm_kin_draw *d, const char *name, const char *unit, double vmax);
+
+/* Frame f of arrow s: from (x, y) along (vx, vy) times s->scale. */
+void mm_kin_arrow(mm_shape *s, int f, double x, double y, double vx, double vy);
+
+/* A fixed pivot at (x, y): a small triangle under it, style "ground".
+ * NULL when out of memory. */
+mm_shape *mm_kin_pivot(mm_kin_draw *d, const char *name, double x, double y);
+
+/* A slider block (rectangle) centred at (x, y), w by h, turned by angle:
+ * frame f of a polygon of 4 points.  Cannot fail. */
+void mm_kin_block(mm_shape *s, int f, double x, double y, double w, double h, double angle);
+
+/* Round every coordinate of every shape to the grid.  Returns MM_OK. */
+int mm_kin_draw_finish(mm_kin_draw *d);
+
+/* ---- a finite-difference study --------------------------------------------------------- */
+
+#define MM_KIN_FD_MAX 32
+
+/* q(t_i + h): the k coordinates of sample i displaced by h in t, into q,
+ * and a bound of their error in the weighted norm (Newton's err_est, 0 for
+ * a closed form) into *qerr.  Return MM_OK or an MM_E* code (err filled). */
+typedef int (*mm_kin_pos_fn)(int i, double h, double *q, double *qerr, void *ctx, mm_error *err);
+
+typedef struct mm_kin_fd {
+    int nh;
+    double h[MM_KIN_FD_MAX];      /* steps, largest first, halving */
+    double err[MM_KIN_FD_MAX];    /* worst weighted |difference - analytic| over the samples */
+    double round[MM_KIN_FD_MAX];  /* a bound of the rounding in that difference */
+    double slope;                 /* observed order over the steps where truncation rules */
+    int nfit;                     /* how many steps the slope was fitted on (0: none: the
+                                     difference is exact to rounding, e.g. a quadratic motion) */
+    double worst;                 /* the value check: worst |difference - analytic| ... */
+    double bound;                 /* ... and its bound at that sample, at step h_check */
+    double h_check;
+} mm_kin_fd;
+
+/* Central differences of order `deriv` (1: (q(t+h) - q(t-h))/2h, 2: (q(t+h)
+ * - 2 q(t) + q(t-h))/h^2) of the k coordinates at the n samples, against
+ * the analytic derivatives d (n x k), for nh steps h0, h0/2, ...; each
+ * coordinate weighted by w[j] (1/length for lengths, 1 for angles; NULL:
+ * all 1).  The positions' own error bounds (from pos) enter the rounding
+ * bound; d_err bounds the error of the analytic derivatives themselves
+ * (weighted; 0 for a closed form) and is added to the value check's.  Fills fd; then checks
+ * on res:
+ *   - the observed order (2) over the steps where the error is above 100x
+ *     its rounding bound, when there are at least 3 of them, within 0.15;
+ *   - the analytic derivative against the difference at the step where the
+ *     bound 2 |D(h) - D(h/2)| + 3 (R(h) + R(h/2)) is smallest (the
+ *     truncation error of D(h) is 4/3 |D(h) - D(h/2)| to leading order; R
+ *     bounds the rounding), sample by sample, the worst ratio reported;
+ * and, when out >= 0, writes the error against the step as the series out
+ * (x = h, y = worst error; the floor of the log plot is 1e-17 of the
+ * derivative's size).  what names the derivative in the checks ("dx/dphi").
+ * Returns MM_OK or pos's code. */
+int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos, void *ctx, int k,
+                    const double *w, int n, const double *d, int deriv, double h0, int nh, double d_err,
+                    mm_kin_fd *fd, mm_error *err);
+
+/* ---- a plane curve typed as two expressions of t ------------------------------------ */
+
+typedef struct mm_expr mm_expr;
+
+typedef struct mm_kin_curve {
+    mm_expr *x, *y;           /* x(t), y(t), compiled for this request */
+    const char *px, *py;      /* their parameter names, for messages */
+} mm_kin_curve;
+
+/* Compile the texts of the parameters px and py as functions of t.
+ * Returns MM_OK or mm_expr's code with err naming the parameter. */
+int mm_kin_curve_compile(mm_kin_curve *c, const char *x, const char *y, const char *px, const char *py,
+                         mm_error *err);
+void mm_kin_curve_free(mm_kin_curve *c);
+
+/* (x(t), y(t)) into out; MM_ENONFINITE when either is not finite (an
+ * mm_geom_curve_fn, ctx is the curve).  Does not fill an mm_error. */
+int mm_kin_curve_eval(double t, double *out, void *ctx);
+
+/* r, r' and r'' at t by Ridders' extrapolation (mm_geom_curve_derivs), h0
+ * the first step; e1, e2 their error estimates (per component).  MM_OK or
+ * MM_ENONFINITE with err naming the expression that is not finite near t. */
+int mm_kin_curve_at(mm_kin_curve *c, double t, double h0, double r[2], double d1[2], double e1[2], double d2[2],
+                    double e2[2], mm_error *err);
+
+/* ---- small things ------------------------------------------------------------------------- */
+
+/* n points from a to b as short decimals: a + i * step with step = (b - a) / (n - 1)
+ * rounded to 3 significant digits when rounding moves no point by more
+ * than a tenth of a step; b exactly last.  So plots of a crank angle
+ * print 0.0524 and not 0.052359877559829883.  Returns the step used. */
+double mm_kin_grid(double a, double b, int n, double *x);
+
+/* x wrapped to (-pi, pi]. */
+double mm_kin_wrap(double x);
+
+/* x unwrapped to lie within pi of ref. */
+double mm_kin_near(double x, double ref);
+
+/* a table (output out; columns joint, kind, freedom) from a spec
+ * "name:kind:f,name:kind:f,..." (f one digit) */
+int mm_kin_joints_table(mm_result *res, int out, const char *spec, mm_error *err);
+
+/* checks of a rank decision from the singular values sv[0..k-1] of an
+ * m x n matrix: the largest one counted as zero is at rounding, the
+ * smallest one counted as non-zero is clear of it */
+void mm_kin_rank_checks(mm_result *res, const double *sv, int k, int rank, int m, int n);
+
+#endif

@@ -1,0 +1,55 @@
+/* mm_kin_linkage.h — sweeps, difference samples and animations shared by
+ * kin-four-bar and kin-slider-crank (their closed forms are in
+ * solvers/mm_linkage.h).  Results go into the answer's arena. */
+#ifndef MM_KIN_LINKAGE_H
+#define MM_KIN_LINKAGE_H
+
+#include "mm_exercise.h"
+#include "mm_linkage.h"
+#include "mm_mech.h"
+
+/* the positions a difference study asks for (mm_kin_fd_study's pos
+ * callback): Newton from the Taylor guess of sample i at t[i] + h */
+typedef struct mm_kin_link_fd {
+    const mm_mech_problem *p;
+    const mm_mech_options *o;
+    mm_mech_work *w;
+    const double *t, *q;          /* the samples and their solved positions, */
+    const double *qd, *qdd;       /* velocities and accelerations per unit crank rate */
+} mm_kin_link_fd;
+
+int mm_kin_link_fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err);
+
+/* the frame of a per-frame check nearest its bound (ratio starts at -1) */
+typedef struct mm_kin_worst {
+    double ratio, got, ref, tol;
+} mm_kin_worst;
+
+void mm_kin_track(mm_kin_worst *w, double got, double ref, double tol);
+
+typedef struct mm_kin_fb_run {
+    const mm_fourbar *m;
+    const mm_mech_problem *prob;
+    const mm_mech_options *opt;
+    mm_mech_work *w;
+} mm_kin_fb_run;
+
+/* Positions, velocities, accelerations (per unit crank rate) of the
+ * four-bar on the grid x[0..n-1] (increasing), following the assembly q0
+ * found at th2 (singular: th2 is a toggle or change point, start a hair
+ * off it) forward and backward */
+int mm_kin_fb_sweep(const mm_kin_fb_run *r, double th2, const double *q0, int side, int singular, int n,
+                    const double *x, double *Q, double *QD, double *QDD, mm_result *res, mm_error *err);
+
+/* the four-bar over a turn (or out and back between toggles) with the
+ * coupler point (px, py) on BC, its curve, velocity and acceleration */
+int mm_kin_fb_animate(const mm_kin_fb_run *r, const mm_fourbar_class *k, int side, double w2, double px, double py,
+                      double th0, const double *q0, int singular, mm_result *res, mm_error *err);
+
+/* the slider-crank over a turn, or (partial) out and back between the
+ * toggles lo, hi on the two assemblies */
+int mm_kin_sc_animate(const mm_slider_crank *m, double omega, int partial, double lo, double hi,
+                      const mm_mech_problem *prob, const mm_mech_options *opt, mm_mech_work *w, mm_result *res,
+                      mm_error *err);
+
+#endif

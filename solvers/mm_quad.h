@@ -1,0 +1,92 @@
+/* mm_quad.h — definite integrals of a function of one variable.
+ *
+ * Two rules with different ways of failing, so that each can check the
+ * other:
+ *   - mm_quad_gk: global adaptive Gauss-Kronrod 7-15 (QUADPACK's qag with
+ *     qk15: R. Piessens et al., QUADPACK, Springer 1983).  The interval is
+ *     cut where the error estimate is largest until the estimates add up
+ *     to the tolerance;
+ *   - mm_quad_gl: composite 5-point Gauss-Legendre on m equal panels, m
+ *     doubling until two successive results agree (a fixed mesh, refined
+ *     everywhere at once).
+ * Error estimates are estimates.  mm_quad_gk steers its subdivision by
+ * QUADPACK's (|K15 - G7| sharpened by (200 |K15 - G7| / I|f - mean|)^1.5),
+ * which for a smooth f overstates the error of K15 by orders of magnitude;
+ * when it is done it halves every piece once more and reports the sum of
+ * what that changed (the error of the coarser partition, so still on the
+ * safe side) together with the finer sum.  No estimate is below a few eps
+ * of the integral of |f|, which rounding alone can reach; sums are
+ * compensated (Neumaier), so adding thousands of terms keeps eps of the
+ * result.
+ *
+ * No globals; safe from many threads as long as f is.  f returns 0, or a
+ * nonzero code that stops the integration and is returned.  A value of f
+ * that is not finite stops it too: MM_ENONFINITE, err naming "f" with x.
+ */
+#ifndef MM_QUAD_H
+#define MM_QUAD_H
+
+#include "mm_status.h"
+
+#define MM_QUAD_MAX_PIECES 10000    /* most subintervals of mm_quad_gk */
+#define MM_QUAD_MAX_PANELS 65536    /* most panels of mm_quad_gl */
+
+typedef int (*mm_quad_fn)(double x, double *fx, void *params);
+
+typedef struct mm_quad_options {
+    double rtol;       /* stop when the error estimate <= rtol * integral of |f| ... */
+    double atol;       /* ... or <= atol */
+    int max_pieces;    /* most subintervals, 1..MM_QUAD_MAX_PIECES */
+    int start_pieces;  /* equal pieces to begin with, 1..max_pieces: one piece over an
+                          interval symmetric about a zero of an odd f has K15 = G7 = 0
+                          and would stop at once */
+} mm_quad_options;
+
+/* rtol 1e-12, atol 0, max_pieces 400, start_pieces 8.  Cannot fail. */
+void mm_quad_options_init(mm_quad_options *opt);
+
+typedef struct mm_quad_piece {
+    double a, b;       /* the subinterval */
+    double value;      /* K15 on it */
+    double err;        /* its error estimate */
+    double abs_value;  /* K15 of |f| on it */
+    double floor;      /* the rounding floor of err: a few eps of abs_value, and
+                          u max |x| times the variation of f across the nodes */
+} mm_quad_piece;
+
+typedef struct mm_quad_result {
+    double value;      /* the integral */
+    double err;        /* error estimate of value (the sum over the pieces) */
+    double abs_value;  /* the integral of |f| (the scale of the rounding) */
+    int pieces;        /* subintervals in the final partition */
+    long evals;        /* calls of f */
+    int converged;     /* 1 when err met the tolerance, 0 when max_pieces ran out */
+} mm_quad_result;
+
+/* MM_OK, or MM_EVALUE naming "a"/"b" (not finite, or b <= a), "rtol"/"atol"
+ * (negative or not finite, or both 0), "max_pieces", "start_pieces"
+ * (outside their range).  No side effects. */
+int mm_quad_check(double a, double b, const mm_quad_options *opt, mm_error *err);
+
+/* The integral of f over [a, b] by adaptive Gauss-Kronrod 7-15, then one
+ * more halving of every piece for the estimate (see above): about
+ * 45 (start_pieces + 2 (pieces - start_pieces)) evaluations.  piece, if
+ * not NULL, has room for opt->max_pieces and receives the partition before
+ * the last halving (r->pieces entries, in no particular order).  Returns MM_OK (also when
+ * max_pieces ran out: r->converged = 0), the errors of mm_quad_check,
+ * MM_ENONFINITE, MM_ENOMEM, or f's own nonzero return. */
+int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_options *opt,
+               mm_quad_piece *piece, mm_quad_result *r, mm_error *err);
+
+/* The integral of f over [a, b] by composite 5-point Gauss-Legendre on m
+ * equal panels, m = m0, 2 m0, 4 m0, ... <= max_panels, until two successive
+ * results differ by at most tol; *err receives that last difference (an
+ * estimate that overstates the error of the finer result for a smooth f),
+ * *panels the m used.  1 <= m0 <= max_panels <= MM_QUAD_MAX_PANELS.
+ * Returns MM_OK (r->converged = 0 when max_panels ran out), MM_EVALUE for
+ * bad arguments, MM_ENONFINITE, or f's own return.  r->pieces is the
+ * number of panels, r->abs_value the integral of |f|. */
+int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_panels, double tol,
+               mm_quad_result *r, mm_error *err);
+
+#endif
