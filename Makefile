@@ -4,6 +4,7 @@
 #   make test     install what is missing, build, run every test
 #   make asan     the whole suite under AddressSanitizer + UBSan (build/asan)
 #   make bench    benchmarks that print figures
+#   make a11y     axe-core on the catalog and every exercise page, desktop and phone
 #   make deps     only install what is missing (Debian packages, npm packages)
 #   make flags    print the settings
 #   make tsan     the concurrent tests under ThreadSanitizer (build/tsan)
@@ -77,7 +78,7 @@ FUZZ_SECONDS ?= 60
 ALL_OBJ := $(call obj,$(SOLVER_SRC) $(EX_SRC) $(SERVER_SRC) $(SERVER_CXX) server/main.c)
 
 .PHONY: all run test asan bench deps flags clean tests loadtest fuzz fuzz-bins valgrind tsan install \
-        failover fuzz-long
+        failover fuzz-long a11y
 .DEFAULT_GOAL := all
 
 all: $(SERVER_BIN)
@@ -163,6 +164,14 @@ test:
 	@scripts/deps.sh --test
 	@$(MAKE) --no-print-directory tests
 	@BUILD=$(BUILD) tests/run.sh
+
+# axe-core on the catalog and every exercise page at 1280 and 390 px (minutes;
+# make test keeps a representative set)
+a11y:
+	@scripts/deps.sh --test
+	@$(MAKE) --no-print-directory all
+	@mkdir -p test-output
+	@MM_SERVER=$(SERVER_BIN) bash -o pipefail -c 'node tests/web/a11y.mjs 2>test-output/a11y-server.log | tee test-output/a11y.log'
 
 asan:
 	@scripts/deps.sh

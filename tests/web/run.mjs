@@ -2,7 +2,8 @@
 // playwright-core), against a server started here.  Ends with the line
 // "browser: N passed, M failed"; exit code 0 only when M is 0.
 // Screenshots go to test-output/screenshots/ (after-*.png: the states the
-// defects of issue 11 were seen in, to set beside the before-*.png).
+// defects of issue 11 were seen in, to set beside the before-*.png that
+// tests/web/dev_before.mjs takes of the pages as they were before).
 //
 // Deterministic: every wait is for a state of the page (an answer drawn,
 // a frame shown), never for a time; animations stand still (reduced
