@@ -820,6 +820,11 @@ try {
       await openExercise(page, server.origin, `id=${id}`);
       const figs = await page.$$('figure.plot');
       await figs[fig].screenshot({ path: `${shots}/after-${name}.png` });
+      // a caption names its series once ("a, the result against Re", not "…: a, the result")
+      for (const c of await page.$$eval('figure.plot .figtext', (es) => es.map((e) => e.textContent))) {
+        const m = c.match(/^(.*) against [^:]*: (.*)$/);
+        assert.ok(!m || m[1] !== m[2], `${id}: caption "${c}" says its series twice`);
+      }
     }
     await openExercise(page, server.origin, 'id=vib-sdof-forced');
     await (await page.$('#checks')).screenshot({ path: `${shots}/after-desktop-checks-table.png` });

@@ -641,7 +641,8 @@ function figureCaption(fig) {
   const n = fig.items.length;
   if (!fig.quantity) return t('against', { y: list.length <= 90 ? list : t('n_series', { n }), x: fig.xLabel });
   const base = t('against', { y: fig.quantity, x: fig.xLabel });
-  return n < 2 ? base : list.length <= 90 ? `${base}: ${list}` : `${base} (${t('n_series', { n })})`;
+  // a quantity that is the list already (a few unlike series) is not said twice
+  return n < 2 || fig.quantity === list ? base : list.length <= 90 ? `${base}: ${list}` : `${base} (${t('n_series', { n })})`;
 }
 
 function stageMaxHeight() {
