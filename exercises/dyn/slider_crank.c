@@ -346,7 +346,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar_err(res, O_REV, phi_end / (2 * M_PI),
                       (fabs(phi_end - yref[2 * (n - 1)]) + 1e-12 * fabs(phi_end)) / (2 * M_PI), MM_ERR_ESTIMATE);
     /* the joint forces of the reference run, for the error of their maxima */
-    double ra = 0, rb = 0, rn = 0;
+    /* the reference's error: its tolerance at every step it took, added up */
+    double ra = 0, rb = 0, rn = 0, eb = 0, ebJ = 0, tol_ref = orf.rtol * (double)rref.n_accepted;
     int ia = 0, ib = 0, in_ = 0;
     double *absn = mm_res_alloc(res, (size_t)n * sizeof *absn);
     if (!absn)
@@ -357,6 +358,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (mm_sc_accel(&s, q, qd, 0, 0, qdd, lam) != MM_OK)
             return mm_error_set(err, MM_ESINGULAR, "l", "the constraints became dependent: the rod stood vertical");
         ra = fmax(ra, hypot(lam[0], lam[1])), rb = fmax(rb, hypot(lam[2], lam[3])), rn = fmax(rn, fabs(lam[3]));
+        double qm[MM_SC_NQ], qdm[MM_SC_NQ], bJ;
+        state_at(&s, partition, y + (size_t)i * (size_t)ny, qm, qdm);
+        eb = fmax(eb, mm_dyn_sc_energy_bound(&s, qm, qdm, q, qd, tol_ref, &bJ));
+        ebJ = fmax(ebJ, bJ);
         absn[i] = fabs(sn->y[i]);
         if (sfa->y[i] > sfa->y[ia])
             ia = i;
@@ -373,14 +378,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                       MM_ERR_ESTIMATE);
 
     double rad = 1 + fabs(y[(size_t)(n - 1) * (size_t)ny]);
-    /* each step errs by about rtol of the state; the errors add up over the
-     * radians turned, and more where the inertia J(phi) varies more (the
-     * constants cover every case seen in the parameter sweeps, eq. 8) */
-    double grow = RTOL * rad * Jmax / Jmin;
+    /* the energy error the run's measured state error can make (eq. 8): the
+     * gradient of the energy times the distance from the reference run plus
+     * the reference's own error, doubled, and a few eps of the energy for
+     * its round-off */
+    double floor_E = 64 * DBL_EPSILON * Escale;
     mm_res_check_abs(res, "energy balance: kinetic energy - T0 - torque (phi - phi0), worst point [J]", Eworst, 0,
-                     8 * grow * Escale);
+                     2 * eb + floor_E);
     mm_res_check_abs(res, "J(phi) w^2 / 2 with the closed-form inertia (eq. 5) vs T0 + torque (phi - phi0) [J]",
-                     TJ_worst, 0, 8 * grow * Escale);
+                     TJ_worst, 0, 2 * ebJ + floor_E);
     mm_check_residual(res, "joint forces: bearing + guide forces vs the rate of momentum [N] "
                            "(scale: sum of the forces and inertia forces)", mom_worst, mom_scale, 16);
     if (partition)

@@ -299,6 +299,33 @@ static void slider_crank_with_a_torque_should_gain_its_work(void **state)
     cJSON_Delete(a.doc);
 }
 
+/* issue 10: the energy checks' tolerance was 1260 times the error made at
+ * the defaults.  Now it is built from the run's distance to the reference
+ * run and the reference's own tolerance: within 100x of the error at the
+ * defaults (48x measured), and it still holds where both runs take one
+ * identical step (the reference's tolerance is then the whole bound). */
+static void slider_crank_energy_tolerance_should_be_within_100x_of_its_error(void **state)
+{
+    (void)state;
+    static const char *const names[] = {
+        "energy balance: kinetic energy - T0 - torque (phi - phi0), worst point [J]",
+        "J(phi) w^2 / 2 with the closed-form inertia (eq. 5) vs T0 + torque (phi - phi0) [J]"};
+    cJSON *d = solve_ok("dyn-slider-crank", "");
+    for (int k = 0; k < 2; k++) {
+        const cJSON *c = find(d, "checks", names[k]);
+        assert_non_null(c);
+        double e = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
+        double tol = cJSON_GetObjectItem(c, "tolerance")->valuedouble;
+        assert_true(e > 0 && tol <= 100 * e);
+    }
+    cJSON_Delete(d);
+    /* one step covers the whole run in both runs: passed, not failed */
+    d = solve_ok("dyn-slider-crank", "r=0.149639&l=0.743729&J_crank=0.00894655&m_rod=0.0328282&J_rod=85.151&"
+                                     "m_piston=0.157691&torque=236.745&omega0=-4.69888&t_end=0.00639697&"
+                                     "method=partitioning&rtol=1.35641e-07&points=18");
+    cJSON_Delete(d);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -312,6 +339,7 @@ int main(void)
         cmocka_unit_test(robot_defaults_should_start_from_the_static_torques),
         cmocka_unit_test(slider_crank_should_coast_through_its_dead_centres),
         cmocka_unit_test(slider_crank_with_a_torque_should_gain_its_work),
+        cmocka_unit_test(slider_crank_energy_tolerance_should_be_within_100x_of_its_error),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
