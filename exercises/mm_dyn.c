@@ -408,18 +408,17 @@ double mm_dyn_dpend_distance(const double *a, const double *b, double wf)
 double mm_dyn_sc_energy_bound(const mm_slider_crank *s, const double *q, const double *qd, const double *qr,
                               const double *qdr, double tol_ref, double *bJ)
 {
+    /* |a^2 - b^2| / 2 <= max(|a|, |b|) |a - b|: exact, at any distance */
     const double M[MM_SC_NQ] = {s->J_crank, s->m_rod, s->m_rod, s->J_rod, s->m_piston};
     double b = fabs(s->torque) * fabs(q[0] - qr[0]);
-    for (int j = 0; j < MM_SC_NQ; j++) {
-        double d = fabs(qd[j] - qdr[j]);
-        b += M[j] * (fmax(fabs(qd[j]), fabs(qdr[j])) + 0.5 * d) * d;     /* T = sum M_j qd_j^2 / 2 */
-    }
-    /* J(phi) w^2 / 2 - torque phi in (phi, w): dJ/dphi w^2 / 2 - torque and J w */
-    double dJ, J = mm_sc_inertia(s, qr[0], &dJ), w = fmax(fabs(qd[0]), fabs(qdr[0]));
-    double dphi = fabs(q[0] - qr[0]), dw = fabs(qd[0] - qdr[0]);
-    *bJ = (fabs(0.5 * dJ * w * w) + fabs(s->torque)) * dphi + J * (w + 0.5 * dw) * dw + fabs(dJ) * w * dw * dphi;
+    for (int j = 0; j < MM_SC_NQ; j++)
+        b += M[j] * fmax(fabs(qd[j]), fabs(qdr[j])) * fabs(qd[j] - qdr[j]);
+    /* J(phi) w^2 / 2 - torque phi: (J_a - J_b) w_a^2 / 2 + J_b (w_a^2 - w_b^2) / 2 */
+    double dJ, Ja = mm_sc_inertia(s, q[0], NULL), Jb = mm_sc_inertia(s, qr[0], &dJ);
+    double w = fmax(fabs(qd[0]), fabs(qdr[0]));
+    *bJ = 0.5 * fabs(Ja - Jb) * qd[0] * qd[0] + Jb * w * fabs(qd[0] - qdr[0]) + fabs(s->torque) * fabs(q[0] - qr[0]);
     /* the reference's own error: tol_ref on the crank angle and speed (absolute and relative) */
-    double e_ref = tol_ref * ((fabs(0.5 * dJ * w * w) + fabs(s->torque)) * (1 + fabs(qr[0])) + J * w * (1 + w));
+    double e_ref = tol_ref * ((fabs(0.5 * dJ * w * w) + fabs(s->torque)) * (1 + fabs(qr[0])) + Jb * w * (1 + w));
     *bJ += e_ref;
     return b + e_ref;
 }

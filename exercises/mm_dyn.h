@@ -74,12 +74,12 @@ void mm_dyn_sc_inertia_range(const mm_slider_crank *s, double *Jmin, double *Jma
 double mm_dyn_extreme_error(const double *v, int n, int i);
 
 /* How far the slider-crank's energy at the state (q, qd) can lie from its
- * value at the reference state (qr, qdr): the gradient of the kinetic
- * energy minus the torque's work times the distance, with the quadratic
- * term of T; *bJ the same for J(phi) w^2 / 2 minus the work in the crank's
- * (phi, w); both plus what an error tol_ref (absolute and relative) of the
- * reference's crank angle and speed can make.  A bound to second order in
- * the distance.  Cannot fail. */
+ * value at the reference state (qr, qdr): the kinetic energy minus the
+ * torque's work, bounded body by body; *bJ the same for J(phi) w^2 / 2
+ * minus the work in the crank's (phi, w).  Both exact bounds at any
+ * distance, plus what an error tol_ref (absolute and relative) of the
+ * reference's crank angle and speed can make (to first order).  Cannot
+ * fail. */
 double mm_dyn_sc_energy_bound(const mm_slider_crank *s, const double *q, const double *qd, const double *qr,
                               const double *qdr, double tol_ref, double *bJ);
 

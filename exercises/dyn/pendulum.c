@@ -306,7 +306,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * integration's own energy error decides the timing (eq. 9) */
     double dTdE = isfinite(p.T) ? mm_dyn_pend_period_sensitivity(&p) : 0;
     double phase = isfinite(p.T) ? 2 * wmax * t_end / p.T * dTdE * drift : 0;
-    double tol_th = RTOL * (1 + big) * steps + phase;
+    /* the steps' errors and the dense output's between them: 1.5 times the
+     * step term (eq. 8; measured: a short run on a fine grid reached 1.14) */
+    double tol_th = 1.5 * RTOL * (1 + big) * steps + phase;
     mm_res_check_abs(res, "theta(t): DOP853 vs the exact solution in Jacobi functions, worst point [rad]",
                      worst, 0, tol_th);
     if (tol_th > 0.1)
