@@ -7,7 +7,6 @@
 #include "mm_exercise.h"
 #include "mm_ode.h"
 #include "mm_sdof.h"
-#include "mm_result_v1.h"   /* the builders by name, until every exercise declares its outputs */
 
 /* n equally spaced values from a to b into x (n >= 2), written as
  * a + (b - a) * i / (n - 1) so that round grids print short. */

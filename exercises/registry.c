@@ -78,6 +78,15 @@ extern const mm_exercise mm_ex_vib_coulomb;
 /* ==== end of 5.2-5.9 ==== */
 
 /* ==== 5 Vibrations, 5.10-5.12 ==== */
+extern const mm_exercise mm_ex_vib_2dof;
+extern const mm_exercise mm_ex_vib_absorber;
+extern const mm_exercise mm_ex_vib_2dof_transient;
+extern const mm_exercise mm_ex_vib_chain_modes;
+extern const mm_exercise mm_ex_vib_ndof_transient;
+extern const mm_exercise mm_ex_vib_bar_modes;
+extern const mm_exercise mm_ex_vib_bar_wave;
+extern const mm_exercise mm_ex_vib_beam_modes;
+extern const mm_exercise mm_ex_vib_beam_transient;
 /* ==== end of 5.10-5.12 ==== */
 
 const mm_exercise *const mm_exercises[] = {
@@ -150,6 +159,15 @@ const mm_exercise *const mm_exercises[] = {
     /* ==== end of 5.2-5.9 ==== */
 
     /* ==== 5 Vibrations, 5.10-5.12 ==== */
+    &mm_ex_vib_2dof,
+    &mm_ex_vib_absorber,
+    &mm_ex_vib_2dof_transient,
+    &mm_ex_vib_chain_modes,
+    &mm_ex_vib_ndof_transient,
+    &mm_ex_vib_bar_modes,
+    &mm_ex_vib_bar_wave,
+    &mm_ex_vib_beam_modes,
+    &mm_ex_vib_beam_transient,
     /* ==== end of 5.10-5.12 ==== */
 };
 

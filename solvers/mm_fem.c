@@ -5,10 +5,12 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "mm_linalg.h"
+#include "mm_mdof.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -285,6 +287,31 @@ static double assemble_band(const mm_fem_problem *p, const long *map, size_t nf,
     return top;
 }
 
+size_t mm_fem_free_dofs(const mm_fem_problem *p, long *map)
+{
+    size_t ndof = mm_fem_ndof(p), fixed[4], nfix = fixed_dofs(p, fixed);
+    for (size_t g = 0; g < ndof; g++)
+        map[g] = 0;
+    for (size_t i = 0; i < nfix; i++)
+        map[fixed[i]] = -1;
+    long next = 0;
+    for (size_t g = 0; g < ndof; g++)
+        map[g] = map[g] < 0 ? -1 : next++;
+    return (size_t)next;
+}
+
+int mm_fem_half_band(const mm_fem_problem *p, size_t nf)
+{
+    int kd = half_band(p->kind);
+    return (size_t)kd >= nf ? (int)nf - 1 : kd;
+}
+
+double mm_fem_assemble_band(const mm_fem_problem *p, const long *map, size_t nf,
+                            double *Kb, double *Mb)
+{
+    return assemble_band(p, map, nf, mm_fem_half_band(p, nf), Kb, Mb);
+}
+
 /* Dense symmetric n x n from band storage. */
 static void band_to_dense(size_t n, int kd, const double *Ab, double *A)
 {
@@ -330,13 +357,129 @@ static void rayleigh(const mm_fem_problem *p, const double *phi, double *kk,
     }
 }
 
-static mm_fem_method pick_method(mm_fem_method asked, size_t nf, size_t nev)
+static mm_fem_method pick_method(mm_fem_method asked, size_t nf, size_t nev, int rigid)
 {
-    if (asked == MM_FEM_DENSE || asked == MM_FEM_BANDED)
+    if (asked != MM_FEM_AUTO)
         return asked;
-    if (nf > MM_LINALG_MAX_N)
-        return MM_FEM_BANDED;
-    return nf > 40 && 3 * nev < nf ? MM_FEM_BANDED : MM_FEM_DENSE;
+    int few = nf > MM_LINALG_MAX_N || (nf > 40 && 3 * nev < nf);
+    if (!few)
+        return MM_FEM_DENSE;
+    return !rigid && nev <= 20 ? MM_FEM_SUBSPACE : MM_FEM_BANDED;
+}
+
+/* Banded symmetric algebra, defined below with the transient drivers. */
+static void band_matvec(size_t n, int kd, const double *Ab, const double *x, double *y);
+static size_t band_cholesky(size_t n, int kd, double *Ab);
+static void band_chol_solve(size_t n, int kd, const double *Ub, int diag, double *x);
+
+/* The nwant lowest eigenpairs of the banded pencil (Kb, Mb), K positive
+ * definite, by subspace iteration (K. J. Bathe, Finite Element Procedures,
+ * sec. 11.6): X <- K^-1 M X, then the Ritz step on its span, until the
+ * wanted Ritz values stop changing.  lambda[nwant], V (nf x nwant,
+ * row-major, mass-normalised).  MM_ESINGULAR when K is not positive
+ * definite, MM_ENOCONV when 300 iterations do not settle. */
+static int subspace(size_t nf, int kd, const double *Kb, const double *Mb, size_t nwant,
+                    double *lambda, double *V, mm_error *err)
+{
+    size_t w = (size_t)kd + 1, p = nwant + nwant / 2 + 4;
+    if (p > nf)
+        p = nf;
+    int rc = MM_OK;
+    double *Kc = malloc(nf * w * sizeof *Kc), *X = malloc(nf * p * sizeof *X), *Y = malloc(nf * p * sizeof *Y);
+    double *Z = malloc(nf * p * sizeof *Z), *Kr = malloc(p * p * sizeof *Kr), *Mr = malloc(p * p * sizeof *Mr);
+    double *Q = malloc(p * p * sizeof *Q), *lam = malloc(p * sizeof *lam), *prev = malloc(p * sizeof *prev);
+    if (!Kc || !X || !Y || !Z || !Kr || !Mr || !Q || !lam || !prev) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    memcpy(Kc, Kb, nf * w * sizeof *Kc);
+    if (band_cholesky(nf, kd, Kc)) {
+        rc = mm_error_set(err, MM_ESINGULAR, "bc", "the stiffness matrix is not positive definite");
+        goto out;
+    }
+    uint64_t st = UINT64_C(0x9E3779B97F4A7C15);        /* a fixed, irregular start */
+    for (size_t j = 0; j < p; j++)
+        for (size_t i = 0; i < nf; i++) {
+            st ^= st << 13, st ^= st >> 7, st ^= st << 17;
+            X[j * nf + i] = j == 0 ? 1.0 : (double)(st >> 11) / 9007199254740992.0 - 0.5;
+        }
+    int settled = 0;
+    for (size_t j = 0; j < p; j++)                     /* Y = M X */
+        band_matvec(nf, kd, Mb, X + j * nf, Y + j * nf);
+    for (int it = 0;; it++) {
+        for (size_t j = 0; j < p; j++) {               /* Z = K^-1 Y, X <- M Z */
+            memcpy(Z + j * nf, Y + j * nf, nf * sizeof *Z);
+            band_chol_solve(nf, kd, Kc, 0, Z + j * nf);
+            band_matvec(nf, kd, Mb, Z + j * nf, X + j * nf);
+        }
+        for (size_t a = 0; a < p; a++)                 /* Kr = Z^T K Z = Z^T (old Y), Mr = Z^T M Z */
+            for (size_t b = a; b < p; b++) {
+                double sk = 0, sm = 0;
+                for (size_t i = 0; i < nf; i++) {
+                    sk += Z[a * nf + i] * Y[b * nf + i];
+                    sm += Z[a * nf + i] * X[b * nf + i];
+                }
+                Kr[a * p + b] = Kr[b * p + a] = sk;
+                Mr[a * p + b] = Mr[b * p + a] = sm;
+            }
+        for (size_t a = 0; a < p; a++)                 /* symmetric to rounding: make it exact */
+            for (size_t b = a + 1; b < p; b++)
+                Kr[a * p + b] = Kr[b * p + a] = 0.5 * (Kr[a * p + b] + Kr[b * p + a]);
+        mm_error e2;
+        if ((rc = mm_linalg_sygv((int)p, Kr, Mr, lam, Q, &e2))) {
+            rc = mm_error_set(err, rc == MM_ESINGULAR ? MM_ENOCONV : rc, NULL, "subspace iteration: %s", e2.msg);
+            goto out;
+        }
+        /* the new vectors Z Q, and their M products (M Z) Q for the next
+         * round: Y <- (M Z) Q, Z <- Z Q (Z Q into Y's old place first) */
+        for (size_t j = 0; j < p; j++)
+            for (size_t i = 0; i < nf; i++) {
+                double sum = 0;
+                for (size_t k = 0; k < p; k++)
+                    sum += Z[k * nf + i] * Q[k * p + j];
+                Y[j * nf + i] = sum;
+            }
+        double *t = Z;
+        Z = Y, Y = t;                                  /* Z: the Ritz vectors */
+        for (size_t j = 0; j < p; j++)
+            for (size_t i = 0; i < nf; i++) {
+                double sum = 0;
+                for (size_t k = 0; k < p; k++)
+                    sum += X[k * nf + i] * Q[k * p + j];
+                Y[j * nf + i] = sum;
+            }
+        /* settled: the wanted Ritz values change by less than 1e-10 twice
+         * running (they then jitter at ~1e-12, their rounding; the modes
+         * are good to ~1e-6 and the Rayleigh quotients the caller takes
+         * of them to ~1e-12) */
+        double change = 0;
+        for (size_t j = 0; j < nwant && it > 0; j++)
+            change = fmax(change, fabs(lam[j] - prev[j]) / fabs(lam[j]));
+        memcpy(prev, lam, p * sizeof *lam);
+        settled = it > 0 && change <= 1e-10 ? settled + 1 : 0;
+        if (settled == 2)
+            break;
+        if (it == 300) {
+            rc = mm_error_set(err, MM_ENOCONV, NULL, "subspace iteration did not settle");
+            goto out;
+        }
+    }
+    for (size_t j = 0; j < nwant; j++) {
+        lambda[j] = lam[j];
+        for (size_t i = 0; i < nf; i++)
+            V[i * nwant + j] = Z[j * nf + i];
+    }
+out:
+    free(prev);
+    free(lam);
+    free(Q);
+    free(Mr);
+    free(Kr);
+    free(Z);
+    free(Y);
+    free(X);
+    free(Kc);
+    return rc;
 }
 
 /* Sign: the first displacement (u or w, not theta) larger than 1e-6 of the
@@ -377,14 +520,16 @@ int mm_fem_modes_solve(const mm_fem_problem *p, size_t nmodes,
                             "modes must be between 1 and %d; got %zu",
                             MM_FEM_MAX_MODES, nmodes);
     if (opt->method != MM_FEM_AUTO && opt->method != MM_FEM_DENSE &&
-        opt->method != MM_FEM_BANDED)
+        opt->method != MM_FEM_BANDED && opt->method != MM_FEM_SUBSPACE)
         return mm_error_set(err, MM_EVALUE, "method",
                             "unknown solver method code %d", (int)opt->method);
 
     size_t ndof = mm_fem_ndof(p), fixed[4], nfix = fixed_dofs(p, fixed);
     size_t nf = ndof - nfix, nrig = rigid_possible(p);
     size_t nwant = nmodes + nrig < nf ? nmodes + nrig : nf;
-    mm_fem_method method = pick_method(opt->method, nf, nwant);
+    mm_fem_method method = pick_method(opt->method, nf, nwant, nrig > 0);
+    if (method == MM_FEM_SUBSPACE && nrig > 0)
+        method = MM_FEM_BANDED;           /* K is singular: no K^-1 */
     int kd = half_band(p->kind);
     if ((size_t)kd >= nf)
         kd = (int)nf - 1;             /* a tiny mesh: the band is the matrix */
@@ -409,20 +554,19 @@ int mm_fem_modes_solve(const mm_fem_problem *p, size_t nmodes,
         goto out;
     }
 
-    /* free-DOF numbering: global order with the fixed DOFs taken out */
-    for (size_t g = 0; g < ndof; g++)
-        map[g] = 0;
-    for (size_t i = 0; i < nfix; i++)
-        map[fixed[i]] = -1;
-    long next = 0;
-    for (size_t g = 0; g < ndof; g++)
-        map[g] = map[g] < 0 ? -1 : next++;
+    mm_fem_free_dofs(p, map);      /* global order with the fixed DOFs taken out */
 
     double top = assemble_band(p, map, nf, kd, Kb, Mb);
     if (method == MM_FEM_DENSE) {
         band_to_dense(nf, kd, Kb, K);
         band_to_dense(nf, kd, Mb, M);
         rc = mm_linalg_sygv((int)nf, K, M, lambda, V, err);
+    } else if (method == MM_FEM_SUBSPACE) {
+        rc = subspace(nf, kd, Kb, Mb, nwant, lambda, V, err);
+        if (rc == MM_ENOCONV && opt->method == MM_FEM_AUTO) {   /* fall back */
+            method = MM_FEM_BANDED;
+            rc = mm_linalg_sbgv_first((int)nf, kd, (int)nwant, Kb, Mb, lambda, V, err);
+        }
     } else {
         rc = mm_linalg_sbgv_first((int)nf, kd, (int)nwant, Kb, Mb, lambda, V, err);
     }
@@ -564,4 +708,551 @@ int mm_fem_exact_omegas(const mm_fem_problem *p, size_t nmodes,
         omega[j] = bl * bl * sqrt(u->E * u->I / (u->rho * u->A * L * L * L * L));
     }
     return MM_OK;
+}
+
+/* ==== banded symmetric algebra ================================================ */
+
+/* y = A x for the symmetric band A (upper band storage, half-bandwidth kd). */
+static void band_matvec(size_t n, int kd, const double *Ab, const double *x, double *y)
+{
+    size_t w = (size_t)kd + 1;
+    for (size_t i = 0; i < n; i++)
+        y[i] = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *row = Ab + i * w;
+        y[i] += row[0] * x[i];
+        for (size_t d = 1; d < w && i + d < n; d++) {
+            y[i] += row[d] * x[i + d];
+            y[i + d] += row[d] * x[i];
+        }
+    }
+}
+
+/* A = U^T U in place (U upper, band storage); the diagonal slots receive
+ * 1 / U_ii (the solves multiply).  Returns 0, or i + 1 when pivot i is
+ * not positive (A not positive definite). */
+static size_t band_cholesky(size_t n, int kd, double *Ab)
+{
+    size_t w = (size_t)kd + 1;
+    for (size_t i = 0; i < n; i++) {
+        double *ui = Ab + i * w;
+        size_t k0 = i > (size_t)kd ? i - (size_t)kd : 0;
+        double d = ui[0];
+        for (size_t k = k0; k < i; k++)
+            d -= Ab[k * w + (i - k)] * Ab[k * w + (i - k)];
+        if (!(d > 0))
+            return i + 1;
+        double r = 1 / sqrt(d);
+        ui[0] = r;
+        for (size_t dj = 1; dj < w && i + dj < n; dj++) {
+            size_t j = i + dj;
+            double sum = ui[dj];
+            for (size_t k = j > (size_t)kd ? j - (size_t)kd : 0; k < i; k++)
+                sum -= Ab[k * w + (i - k)] * Ab[k * w + (j - k)];
+            ui[dj] = sum * r;
+        }
+    }
+    return 0;
+}
+
+/* Is the band matrix diagonal (a lumped mass, say)? */
+static int band_is_diagonal(size_t n, int kd, const double *Ab)
+{
+    size_t w = (size_t)kd + 1;
+    for (size_t i = 0; i < n; i++)
+        for (size_t d = 1; d < w && i + d < n; d++)
+            if (Ab[i * w + d] != 0)
+                return 0;
+    return 1;
+}
+
+/* Solve U^T U x = b in place (Ub from band_cholesky); diag: Ub is
+ * diagonal (band_is_diagonal), one product per entry. */
+static void band_chol_solve(size_t n, int kd, const double *Ub, int diag, double *x)
+{
+    size_t w = (size_t)kd + 1;
+    if (diag) {
+        for (size_t i = 0; i < n; i++)
+            x[i] *= Ub[i * w] * Ub[i * w];
+        return;
+    }
+    for (size_t i = 0; i < n; i++) {              /* U^T y = b */
+        double sum = x[i];
+        size_t k0 = i > (size_t)kd ? i - (size_t)kd : 0;
+        for (size_t k = k0; k < i; k++)
+            sum -= Ub[k * w + (i - k)] * x[k];
+        x[i] = sum * Ub[i * w];
+    }
+    for (size_t i = n; i-- > 0;) {                /* U x = y */
+        double sum = x[i];
+        size_t dmax = n - 1 - i < w - 1 ? n - 1 - i : w - 1;
+        for (size_t d = 1; d <= dmax; d++)
+            sum -= Ub[i * w + d] * x[i + d];
+        x[i] = sum * Ub[i * w];
+    }
+}
+
+/* ==== omega_max, loads, statics ================================================ */
+
+int mm_fem_omega_max(const mm_fem_problem *p, double *omega_max, mm_error *err)
+{
+    int rc = mm_fem_check(p, err);
+    if (rc)
+        return rc;
+    size_t ndof = mm_fem_ndof(p);
+    long *map = malloc(ndof * sizeof *map);
+    double *Kb = NULL, *Mb = NULL;
+    size_t nf = map ? mm_fem_free_dofs(p, map) : 0;
+    int kd = mm_fem_half_band(p, nf);
+    if (map) {
+        Kb = malloc(nf * ((size_t)kd + 1) * sizeof *Kb);
+        Mb = malloc(nf * ((size_t)kd + 1) * sizeof *Mb);
+    }
+    if (!map || !Kb || !Mb) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    double top = mm_fem_assemble_band(p, map, nf, Kb, Mb);
+    /* s = 1e-3 of the bound: K + s M definite, and omega_max^2 + s known
+     * to the solver's relative accuracy */
+    double sh = 1e-3 * top, mu;
+    for (size_t i = 0; i < nf * ((size_t)kd + 1); i++)
+        Kb[i] += sh * Mb[i];
+    if ((rc = mm_linalg_sbgv_first((int)nf, kd, 1, Mb, Kb, &mu, NULL, err)))
+        goto out;
+    *omega_max = sqrt(fmax(1 / mu - sh, 0));
+out:
+    free(Mb);
+    free(Kb);
+    free(map);
+    return rc;
+}
+
+double mm_fem_omega_bound(const mm_fem_problem *p)
+{
+    double top = 0;
+    for (size_t e = 0; e < p->n_el; e++) {
+        mm_fem_element el = element_at(p, e);
+        top = fmax(top, element_top(p->kind, p->mass, &el));
+        if (!p->elements)
+            break;                       /* uniform: every element alike */
+    }
+    return sqrt(top);
+}
+
+/* Element e and local coordinate xi in [0, 1] of the point x of the mesh;
+ * -1 when x is outside [0, L]. */
+static long locate(const mm_fem_problem *p, double x, double *xi, double *Le)
+{
+    if (!p->elements) {                      /* uniform: the element by division */
+        double L = p->uniform.L, h = L / (double)p->n_el;
+        if (!(x >= 0 && x <= L * (1 + 1e-15)))
+            return -1;
+        size_t e = (size_t)fmin(floor(x / h), (double)p->n_el - 1);
+        *Le = h;
+        *xi = fmin(fmax(x / h - (double)e, 0), 1);
+        return (long)e;
+    }
+    double x0 = 0;
+    for (size_t e = 0; e < p->n_el; e++) {
+        mm_fem_element el = element_at(p, e);
+        double x1 = p->elements ? x0 + el.L : p->uniform.L * (double)(e + 1) / (double)p->n_el;
+        if (x >= x0 && (x <= x1 || e + 1 == p->n_el) && x <= x1 * (1 + 1e-15)) {
+            *Le = x1 - x0;
+            *xi = fmin(fmax((x - x0) / *Le, 0), 1);
+            return (long)e;
+        }
+        x0 = x1;
+    }
+    return -1;
+}
+
+/* Shape functions at xi of an element of length Le: 2 (bar) or 4 (beam). */
+static void shape_fns(mm_fem_kind kind, double xi, double Le, double *N)
+{
+    if (kind == MM_FEM_BAR) {
+        N[0] = 1 - xi;
+        N[1] = xi;
+        return;
+    }
+    double x2 = xi * xi, x3 = x2 * xi;
+    N[0] = 1 - 3 * x2 + 2 * x3;
+    N[1] = Le * (xi - 2 * x2 + x3);
+    N[2] = 3 * x2 - 2 * x3;
+    N[3] = Le * (x3 - x2);
+}
+
+void mm_fem_load_vector(const mm_fem_problem *p, const mm_fem_load *ld, double t, double *f)
+{
+    size_t ndof = mm_fem_ndof(p);
+    memset(f, 0, ndof * sizeof *f);
+    double x, amp;
+    if (ld->kind == MM_FEM_LOAD_MOVING) {
+        x = ld->v * t;
+        amp = ld->P;
+    } else {
+        if (!(t < ld->t_off))
+            return;
+        x = ld->x;
+        amp = ld->Omega > 0 ? ld->P * cos(ld->Omega * t) : ld->P;
+    }
+    double xi, Le, N[4];
+    long e = locate(p, x, &xi, &Le);
+    if (e < 0)
+        return;
+    int dpn = dofs_per_node(p->kind);
+    shape_fns(p->kind, xi, Le, N);
+    for (int a = 0; a < 2 * dpn; a++)
+        f[(size_t)e * (size_t)dpn + (size_t)a] += amp * N[a];
+}
+
+int mm_fem_static_solve(const mm_fem_problem *p, const double *f, double *u, mm_error *err)
+{
+    int rc = mm_fem_check(p, err);
+    if (rc)
+        return rc;
+    if (p->bc == MM_FEM_FREE_FREE)
+        return mm_error_set(err, MM_ESINGULAR, "bc", "a free-free member has no static "
+                            "deflection: nothing holds it against the load");
+    size_t ndof = mm_fem_ndof(p);
+    long *map = malloc(ndof * sizeof *map);
+    size_t nf = map ? mm_fem_free_dofs(p, map) : 0;
+    int kd = mm_fem_half_band(p, nf);
+    double *Kb = map ? malloc(nf * ((size_t)kd + 1) * sizeof *Kb) : NULL;
+    double *Mb = map ? malloc(nf * ((size_t)kd + 1) * sizeof *Mb) : NULL;
+    double *x = map ? malloc(nf * sizeof *x) : NULL;
+    if (!map || !Kb || !Mb || !x) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    mm_fem_assemble_band(p, map, nf, Kb, Mb);
+    if (band_cholesky(nf, kd, Kb)) {
+        rc = mm_error_set(err, MM_ESINGULAR, "bc", "the stiffness matrix is singular");
+        goto out;
+    }
+    for (size_t g = 0; g < ndof; g++)
+        if (map[g] >= 0)
+            x[map[g]] = f[g];
+    band_chol_solve(nf, kd, Kb, 0, x);
+    for (size_t g = 0; g < ndof; g++)
+        u[g] = map[g] >= 0 ? x[map[g]] : 0;
+out:
+    free(x);
+    free(Mb);
+    free(Kb);
+    free(map);
+    return rc;
+}
+
+/* ==== modal superposition ======================================================== */
+
+/* The modal coordinate of mode phi (all global DOFs) under a load crossing
+ * at speed v, sampled at the nt times t: exact per element (the modal
+ * force P phi(v t) is a cubic in t there), free after the load has left. */
+static void moving_modal(const mm_fem_problem *p, const double *phi, double omega, double c,
+                         const mm_fem_load *ld, int nt, const double *t, double *eta_out)
+{
+    double eta = 0, etad = 0, tnow = 0, x0 = 0, te = 0, tn = 0, a[4] = {0, 0, 0, 0};
+    size_t e = 0;
+    int on = 1;
+    for (int i = 0; i < nt; i++) {
+        while (tnow < t[i]) {
+            if (on && tnow >= tn) {            /* the load enters the next element, or leaves */
+                if (e == p->n_el) {
+                    on = 0;
+                    a[0] = a[1] = a[2] = a[3] = 0;
+                    te = tnow;
+                    tn = INFINITY;
+                    continue;
+                }
+                mm_fem_element el = element_at(p, e);
+                double L = el.L, r = ld->v / L;
+                const double *u = phi + 2 * e;   /* w1 theta1 w2 theta2 */
+                /* phi along the element, a cubic in xi = (x - x0)/L = r tau */
+                double c0 = u[0], c1 = L * u[1], c2 = -3 * u[0] - 2 * L * u[1] + 3 * u[2] - L * u[3],
+                       c3 = 2 * u[0] + L * u[1] - 2 * u[2] + L * u[3];
+                a[0] = ld->P * c0;
+                a[1] = ld->P * c1 * r;
+                a[2] = ld->P * c2 * r * r;
+                a[3] = ld->P * c3 * r * r * r;
+                te = x0 / ld->v;
+                x0 += L;
+                tn = x0 / ld->v;
+                e++;
+                continue;
+            }
+            double target = fmin(t[i], tn), sft = tnow - te, b[4];
+            /* the cubic in tau = t - te, rewritten from tnow */
+            b[0] = a[0] + sft * (a[1] + sft * (a[2] + sft * a[3]));
+            b[1] = a[1] + sft * (2 * a[2] + 3 * sft * a[3]);
+            b[2] = a[2] + 3 * sft * a[3];
+            b[3] = a[3];
+            mm_mdof_sdof_poly(omega, c, b, target - tnow, &eta, &etad);
+            tnow = target;
+        }
+        eta_out[i] = eta;
+    }
+}
+
+int mm_fem_modal_response(const mm_fem_problem *p, const mm_fem_modes *modes, size_t m,
+                          const mm_fem_damping *d, const mm_fem_load *ld, int nt,
+                          const double *t, int nout, const size_t *dofs, double *out,
+                          mm_error *err)
+{
+    if (m < 1 || m > modes->n_modes || !modes->shape)
+        return mm_error_set(err, MM_ERANGE, "modes", "modes retained must be between 1 and %zu; "
+                            "got %zu", modes->n_modes, m);
+    if (ld->kind == MM_FEM_LOAD_MOVING && p->kind != MM_FEM_BEAM)
+        return mm_error_set(err, MM_EVALUE, "load", "a moving load is offered for beams only");
+    size_t ndof = mm_fem_ndof(p);
+    double *f = malloc(ndof * sizeof *f), *eta = malloc((size_t)nt * sizeof *eta);
+    if (!f || !eta) {
+        free(eta);
+        free(f);
+        return mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+    }
+    mm_fem_load unit = *ld;
+    unit.P = 1;
+    unit.t_off = INFINITY;
+    unit.Omega = 0;
+    if (ld->kind == MM_FEM_LOAD_POINT)
+        mm_fem_load_vector(p, &unit, 0, f);        /* shape functions at x */
+    memset(out, 0, (size_t)nt * (size_t)nout * sizeof *out);
+    for (size_t j = 0; j < m; j++) {
+        const double *phi = modes->shape + j * ndof;
+        double w = modes->omega[j], c = d ? d->a + d->b * w * w : 0;
+        if (ld->kind == MM_FEM_LOAD_POINT) {
+            double pj = 0;
+            for (size_t g = 0; g < ndof; g++)
+                pj += phi[g] * f[g];
+            mm_mdof_pulse g = {ld->P * pj, ld->Omega, ld->t_off};
+            for (int i = 0; i < nt; i++)
+                eta[i] = mm_mdof_sdof_pulse(w, c, 0, 0, &g, t[i], NULL);
+        } else {
+            moving_modal(p, phi, w, c, ld, nt, t, eta);
+        }
+        for (int i = 0; i < nt; i++)
+            for (int r = 0; r < nout; r++)
+                out[(size_t)i * (size_t)nout + (size_t)r] += phi[dofs[r]] * eta[i];
+    }
+    free(eta);
+    free(f);
+    return MM_OK;
+}
+
+/* ==== direct integration ========================================================== */
+
+/* 1/2 q^T K q of the free-DOF vector q, from element strains and
+ * curvatures (no cancellation inside K q, as in rayleigh()). */
+static double strain_energy(const mm_fem_problem *p, const long *map, const double *q)
+{
+    int dpn = dofs_per_node(p->kind);
+    double e = 0, v[4];
+    for (size_t el = 0; el < p->n_el; el++) {
+        mm_fem_element m = element_at(p, el);
+        for (int a = 0; a < 2 * dpn; a++) {
+            long fi = map[el * (size_t)dpn + (size_t)a];
+            v[a] = fi >= 0 ? q[fi] : 0;
+        }
+        double h = m.L;
+        if (p->kind == MM_FEM_BAR) {
+            e += 0.5 * m.E * m.A / h * (v[1] - v[0]) * (v[1] - v[0]);
+        } else {
+            double sl = (v[2] - v[0]) / h, k0 = (6 * sl - 4 * v[1] - 2 * v[3]) / h, k1 = (-6 * sl + 2 * v[1] + 4 * v[3]) / h;
+            e += m.E * m.I * h * (k0 * k0 + k0 * k1 + k1 * k1) / 6;
+        }
+    }
+    return e;
+}
+
+int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fem_transient *tr,
+                           mm_error *err)
+{
+    int rc = mm_fem_check(p, err);
+    if (rc)
+        return rc;
+    size_t ndof = mm_fem_ndof(p);
+    if (!(tr->h > 0) || !isfinite(tr->h))
+        return mm_error_set(err, MM_ERANGE, "h", "the time step must be > 0; got %g", tr->h);
+    if (tr->steps < 1 || tr->steps > MM_FEM_MAX_STEPS)
+        return mm_error_set(err, MM_ERANGE, "steps", "steps must be between 1 and %ld; got %ld",
+                            MM_FEM_MAX_STEPS, tr->steps);
+    if (tr->stride < 1)
+        return mm_error_set(err, MM_ERANGE, "stride", "stride must be at least 1");
+    for (int r = 0; r < tr->nout; r++)
+        if (tr->dofs[r] >= ndof)
+            return mm_error_set(err, MM_ERANGE, "dofs", "DOF %zu is not in the mesh", tr->dofs[r]);
+    for (int s = 0; s < tr->nsnap; s++)
+        if (tr->snap[s] < 0 || tr->snap[s] > tr->steps)
+            return mm_error_set(err, MM_ERANGE, "snap", "snapshot step %ld is not in the run",
+                                tr->snap[s]);
+    if (ld->kind == MM_FEM_LOAD_MOVING && p->kind != MM_FEM_BEAM)
+        return mm_error_set(err, MM_EVALUE, "load", "a moving load is offered for beams only");
+
+    long *map = malloc(ndof * sizeof *map);
+    size_t nf = map ? mm_fem_free_dofs(p, map) : 0, w = 0;
+    int kd = mm_fem_half_band(p, nf);
+    w = (size_t)kd + 1;
+    double *Kb = NULL, *Mb = NULL, *Sb = NULL, *Mf = NULL, *vec = NULL, *f = NULL, *fo = NULL;
+    if (map) {
+        Kb = malloc(nf * w * sizeof *Kb);
+        Mb = malloc(nf * w * sizeof *Mb);
+        Sb = malloc(nf * w * sizeof *Sb);
+        Mf = malloc(nf * w * sizeof *Mf);
+        vec = malloc(8 * nf * sizeof *vec);
+        f = malloc(ndof * sizeof *f);
+    }
+    if (!map || !Kb || !Mb || !Sb || !Mf || !vec || !f) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    mm_fem_assemble_band(p, map, nf, Kb, Mb);
+    double *q = vec, *v = vec + nf, *a = vec + 2 * nf, *r = vec + 3 * nf, *t1 = vec + 4 * nf,
+           *qt = vec + 5 * nf, *vt = vec + 6 * nf, *t2 = vec + 7 * nf;
+    const double h = tr->h, ca = tr->damping.a, cb = tr->damping.b;
+    /* the matrices solved with: M (start), and S of the scheme */
+    double sm, sk;          /* S = sm M + sk K */
+    if (tr->scheme == MM_FEM_AVERAGE) {
+        sm = 1 + 0.5 * h * ca;
+        sk = 0.5 * h * cb + 0.25 * h * h;
+    } else {
+        sm = 1 + 0.5 * h * ca;
+        sk = 0.5 * h * cb;
+    }
+    for (size_t i = 0; i < nf * w; i++) {
+        Sb[i] = sm * Mb[i] + sk * Kb[i];
+        Mf[i] = Mb[i];
+    }
+    int mdiag = band_is_diagonal(nf, kd, Mf), sdiag = band_is_diagonal(nf, kd, Sb);
+    if (band_cholesky(nf, kd, Mf) || band_cholesky(nf, kd, Sb)) {
+        rc = mm_error_set(err, MM_ESINGULAR, "h", "the matrix a step solves with is not positive "
+                          "definite");
+        goto out;
+    }
+    /* start at rest: a0 = M^-1 f(0) */
+    memset(q, 0, 3 * nf * sizeof *q);
+    mm_fem_load_vector(p, ld, 0, f);
+    for (size_t g = 0; g < ndof; g++)
+        if (map[g] >= 0)
+            a[map[g]] = f[g];
+    band_chol_solve(nf, kd, Mf, mdiag, a);
+
+    /* the energy identity: E~ with the correction of beta, W and D by the
+     * rule in q, accumulated every step, E~ evaluated at the stored steps */
+    const double be = tr->scheme == MM_FEM_AVERAGE ? 0.25 : 0.0;
+    fo = malloc(2 * nf * sizeof *fo);
+    if (!fo) {
+        rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+        goto out;
+    }
+    double *fprev = fo, *cv0 = fo + nf, Wq = 0, Dq = 0, E0 = 0, bal = 0, big = 0;
+    for (size_t g = 0; g < ndof; g++)
+        if (map[g] >= 0)
+            fprev[map[g]] = f[g];
+    memset(cv0, 0, nf * sizeof *cv0);            /* at rest: C v = 0 */
+    int row = 0, snapi = 0;
+    for (long k = 0;; k++) {
+        /* record step k */
+        if (k % tr->stride == 0 || k == tr->steps) {
+            double ek = 0, ama = 0, e = strain_energy(p, map, q);
+            band_matvec(nf, kd, Mb, v, t1);
+            for (size_t i = 0; i < nf; i++)
+                ek += 0.5 * v[i] * t1[i];
+            band_matvec(nf, kd, Mb, a, t1);
+            for (size_t i = 0; i < nf; i++)
+                ama += a[i] * t1[i];
+            double Et = ek + e - 0.5 * h * h * (0.25 - be) * ama;
+            if (k == 0)
+                E0 = Et;
+            bal = fmax(bal, fabs(Et - E0 - Wq + Dq));
+            big = fmax(big, fmax(fmax(ek, e), fmax(fabs(Wq), fabs(Dq))));
+        }
+        if (tr->out && k % tr->stride == 0) {
+            for (int o = 0; o < tr->nout; o++) {
+                long fi = map[tr->dofs[o]];
+                tr->out[(size_t)row * (size_t)tr->nout + (size_t)o] = fi >= 0 ? q[fi] : 0;
+            }
+            row++;
+        }
+        for (int s = 0; s < tr->nsnap; s++)
+            if (tr->snap[s] == k && tr->snaps) {
+                double *dst = tr->snaps + (size_t)s * ndof;
+                for (size_t g = 0; g < ndof; g++)
+                    dst[g] = map[g] >= 0 ? q[map[g]] : 0;
+                snapi++;
+            }
+        if (k == tr->steps)
+            break;
+        double tn = h * (double)(k + 1);
+        mm_fem_load_vector(p, ld, tn, f);
+        for (size_t g = 0; g < ndof; g++)
+            if (map[g] >= 0)
+                r[map[g]] = f[g];
+        if (tr->scheme == MM_FEM_AVERAGE) {
+            /* predictors, then S a1 = f1 - C vt - K qt */
+            for (size_t i = 0; i < nf; i++) {
+                qt[i] = q[i] + h * v[i] + 0.25 * h * h * a[i];
+                vt[i] = v[i] + 0.5 * h * a[i];
+            }
+        } else {
+            for (size_t i = 0; i < nf; i++) {
+                qt[i] = q[i] + h * v[i] + 0.5 * h * h * a[i];
+                vt[i] = v[i] + 0.5 * h * a[i];
+            }
+        }
+        band_matvec(nf, kd, Kb, qt, t1);            /* K qt */
+        for (size_t i = 0; i < nf; i++)
+            r[i] -= t1[i];
+        if (ca != 0 || cb != 0) {                   /* C vt = a M vt + b K vt */
+            band_matvec(nf, kd, Mb, vt, t1);
+            band_matvec(nf, kd, Kb, vt, t2);
+            for (size_t i = 0; i < nf; i++)
+                r[i] -= ca * t1[i] + cb * t2[i];
+        }
+        band_chol_solve(nf, kd, Sb, sdiag, r);      /* a_{k+1} */
+        double qbig = 0, dW = 0, dD = 0;
+        for (size_t g = 0; g < ndof; g++)            /* f_{k+1} again (r was overwritten) */
+            if (map[g] >= 0)
+                t2[map[g]] = f[g];
+        for (size_t i = 0; i < nf; i++) {
+            double bt = tr->scheme == MM_FEM_AVERAGE ? 0.25 * h * h : 0, qn = qt[i] + bt * r[i];
+            dW += 0.5 * (qn - q[i]) * (fprev[i] + t2[i]);
+            qt[i] = qn - q[i];                       /* keep the step's dq */
+            q[i] = qn;
+            v[i] = vt[i] + 0.5 * h * r[i];
+            a[i] = r[i];
+            qbig = fmax(qbig, fabs(q[i]));
+        }
+        memcpy(fprev, t2, nf * sizeof *fprev);
+        if (ca != 0 || cb != 0) {                   /* C v_{k+1} into t1, D by the rule in q */
+            band_matvec(nf, kd, Mb, v, t1);
+            band_matvec(nf, kd, Kb, v, t2);
+            for (size_t i = 0; i < nf; i++) {
+                double cv = ca * t1[i] + cb * t2[i];
+                dD += 0.5 * qt[i] * (cv0[i] + cv);
+                cv0[i] = cv;
+            }
+        }
+        Wq += dW;
+        Dq += dD;
+        if (!isfinite(qbig) || qbig > 1e150) {
+            rc = mm_error_set(err, MM_ENONFINITE, "h", "the motion grew without bound by t = %g s: "
+                              "the step h = %g s is past the stability limit of %s", tn, h,
+                              tr->scheme == MM_FEM_CENTRAL ? "central difference" : "the scheme");
+            goto out;
+        }
+    }
+    (void)snapi;
+    tr->energy_balance = big > 0 ? bal / big : 0;
+    rc = MM_OK;
+out:
+    free(fo);
+    free(f);
+    free(vec);
+    free(Mf);
+    free(Sb);
+    free(Mb);
+    free(Kb);
+    free(map);
+    return rc;
 }

@@ -125,6 +125,13 @@ typedef struct mm_newmark_options {
                              the size of the forces in (1); in [1e-14, 1e-2] */
     int newton_max_iter;  /* most Newton corrections per step */
     long max_steps;       /* refuse runs needing more steps than this */
+    int work_in_q;        /* energy bookkeeping: 0 (default) integrates the
+                             powers q'.F and q'.C q' by the trapezoidal rule
+                             in t; 1 integrates F dq and C q' dq by the
+                             trapezoidal rule in q, (q_{k+1} - q_k).(F_k +
+                             F_{k+1})/2, which average acceleration keeps
+                             exactly on every linear system, forced and
+                             damped (Hughes, ch. 9) */
 } mm_newmark_options;
 
 /* ---- result ------------------------------------------------------------- */
@@ -135,10 +142,11 @@ typedef struct mm_newmark_options {
  * potential uses the symmetric part of K; the work of the antisymmetric
  * (circulatory) part of K is counted in work.  work and dissipated
  * integrate the powers q'.F and q'.C q' by the trapezoidal rule over each
- * step, so the balance residual is a second-order error indicator that
- * needs no reference solution.  It is round-off only where the scheme
- * conserves energy exactly: average acceleration on a free undamped
- * linear system. */
+ * step (or in q, options.work_in_q), so the balance residual is a
+ * second-order error indicator that needs no reference solution.  It is
+ * round-off only where the scheme conserves energy exactly: average
+ * acceleration on a free undamped linear system (and, with work_in_q, on
+ * any linear system). */
 typedef struct mm_newmark_energy {
     double kinetic;       /* 1/2 q'^T M q' [J] */
     double potential;     /* 1/2 q^T K q [J] */
@@ -156,6 +164,15 @@ typedef struct mm_newmark_result {
     mm_newmark_energy *energy;  /* energy bookkeeping at each row */
     int max_rows;
 
+    /* Optional (NULL: none): called with the state at t_0 (k = 0) and after
+     * every step k = 1..steps, whether the step is stored or not, so that a
+     * caller can follow every step without storing it.  The arrays hold n
+     * values and are valid during the call only.  Return 0 to go on, or a
+     * nonzero code to stop the run (returned as for the force callback). */
+    int (*observe)(long k, double t, const double *q, const double *qd, const double *qdd,
+                   void *params);
+    void *observe_params;
+
     /* Filled by mm_newmark_solve (also when it fails part-way: then they
      * describe the run up to the failure). */
     int rows;                   /* rows stored */
@@ -165,12 +182,16 @@ typedef struct mm_newmark_result {
     long newton_iters;          /* Newton corrections (0 for linear problems,
                                    which take one direct solve per step) */
     long factorizations;        /* LU factorizations of an n x n matrix */
-    double omega_max;           /* estimate of the highest natural frequency
-                                   from M and K - dF/dq at t0 [rad/s], or 0 */
+    double omega_max;           /* the highest natural frequency of M and the
+                                   symmetric part of K - dF/dq at t0 [rad/s],
+                                   computed exactly (all eigenvalues of the
+                                   pencil, LAPACK dsygvd: to rounding), or 0
+                                   when there is no positive stiffness */
     double h_stable;            /* stability limit of a conditionally stable
-                                   scheme (2/omega_max for central difference
-                                   and Verlet) [s]; 0 when the scheme has none
-                                   or omega_max is unknown */
+                                   scheme, mm_newmark_omega_h_limit / omega_max
+                                   (2/omega_max for central difference and
+                                   Verlet) [s]; 0 when the scheme has none
+                                   or omega_max is 0 */
     double energy_start;        /* kinetic + potential at t0 [J] */
     mm_newmark_energy energy_end;
     double energy_balance;      /* max over the steps of
@@ -237,6 +258,46 @@ int mm_newmark_output_rows(const mm_newmark_problem *p,
  * On failure res holds the rows and counters up to the failing step. */
 int mm_newmark_solve(const mm_newmark_problem *p, const mm_newmark_options *o,
                      mm_newmark_work *w, mm_newmark_result *res, mm_error *err);
+
+/* ---- stability and the amplification matrix ---------------------------- */
+
+/* The largest Omega = omega h at which o's scheme stays stable on an
+ * undamped linear system, or 0 when it is stable at every step:
+ *   central difference, Verlet                    2
+ *   linear acceleration                           2 sqrt(3)
+ *   Newmark (beta, gamma) with 2 beta < gamma     1 / sqrt(gamma/2 - beta)
+ *   average acceleration, HHT-alpha, generalized-alpha, Newmark with
+ *   2 beta >= gamma >= 1/2                        0 (unconditionally stable)
+ * The step limit is h < limit / omega_max.  Damping lowers Verlet's limit
+ * (its damping force sees the half-step velocity): mm_newmark_spectral_radius
+ * tells.  Reads o->method, o->beta, o->gamma.  Cannot fail. */
+double mm_newmark_omega_h_limit(const mm_newmark_options *o);
+
+/* One step of o's scheme (step o->h) on the LINEAR system
+ *     M q'' + C q' + K q = F(t)
+ * as the linear map it is (T. J. R. Hughes, The Finite Element Method,
+ * ch. 9), on the state y = (q, q', q'') of 3n values:
+ *     y_{k+1} = A y_k + B0 F(t_k) + B1 F(t_{k+1})                        (A)
+ * A is 3n x 3n, B0 and B1 are 3n x n (row-major; B0 and B1 may be NULL).
+ * Written from the schemes' defining equations (N1), (N2), (G) of
+ * mm_newmark.c, not by running a step, so that the recursion it gives is an
+ * independent statement of what mm_newmark_solve computes: its powers are
+ * the exact discrete solution of the scheme.  M is n x n positive definite,
+ * C and K n x n or NULL (zero).  For plain Newmark, central difference and
+ * Verlet the rows of q'' make A of rank 2n (q'' follows from q, q').
+ * Returns MM_OK, or MM_ERANGE (n outside 1..MM_NEWMARK_MAX_DOF, an invalid
+ * option: as mm_newmark_check), MM_ESINGULAR (the matrix the step solves
+ * with, e.g. M + gamma h C + beta h^2 K, is singular), MM_ENOMEM. */
+int mm_newmark_amplification(int n, const double *M, const double *C, const double *K,
+                             const mm_newmark_options *o, double *A, double *B0,
+                             double *B1, mm_error *err);
+
+/* Spectral radius (largest |eigenvalue|) of A for the 1-DOF oscillator
+ * x'' + 2 zeta omega x' + omega^2 x = 0 at the step o->h: the solution of
+ * the scheme decays (< 1), keeps its size (1) or grows (> 1) per step.
+ * omega >= 0, zeta >= 0.  Returns NaN when the options are invalid.
+ * Cannot fail otherwise. */
+double mm_newmark_spectral_radius(const mm_newmark_options *o, double omega, double zeta);
 
 /* A name for each method, as used in the HTTP answer's "method" field:
  * "newmark-average-acceleration", "newmark-linear-acceleration",

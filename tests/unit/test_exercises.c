@@ -172,6 +172,29 @@ static void every_exercise_should_pass_its_checks_at_the_defaults(void **state)
     }
 }
 
+/* A plot needs no more points than its pixels: every default answer fits
+ * in 64 KB before compression (issue 16's figure), animations included. */
+static void every_default_answer_should_fit_in_64_kb(void **state)
+{
+    (void)state;
+    int over = 0;
+    for (int i = 0; i < mm_exercise_count; i++) {
+        const mm_exercise *ex = mm_exercises[i];
+        request r = {.n = 0};
+        cJSON *doc;
+        char *text;
+        run(ex, &r, &doc, &text);
+        size_t len = text ? strlen(text) : 0;
+        if (len > 64 * 1024) {
+            print_error("%s: its default answer is %zu bytes (at most 65536)\n", ex->id, len);
+            over++;
+        }
+        free(text);
+        cJSON_Delete(doc);
+    }
+    assert_int_equal(over, 0);
+}
+
 static void every_exercise_should_pass_its_checks_at_random_parameters(void **state)
 {
     (void)state;
@@ -365,6 +388,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(every_exercise_should_pass_its_checks_at_the_defaults),
+        cmocka_unit_test(every_default_answer_should_fit_in_64_kb),
         cmocka_unit_test(every_exercise_should_pass_its_checks_at_random_parameters),
         cmocka_unit_test(values_outside_the_limits_should_be_refused_naming_the_parameter),
         cmocka_unit_test(answers_should_be_deterministic_and_the_same_by_get_and_post),

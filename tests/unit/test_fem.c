@@ -13,6 +13,7 @@
 
 #include "mm_test.h"
 #include "mm_fem.h"
+#include "mm_mdof.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -408,6 +409,216 @@ static void graded_per_element_mesh_should_converge_to_the_same_member(void **st
 
 /* ---- errors ----------------------------------------------------------------- */
 
+
+/* ---- omega_max, loads, statics ------------------------------------------------ */
+
+#define EPS 2.220446049250313e-16
+
+/* The top of the spectrum: against every eigenvalue of the dense solver,
+ * and for the lumped fixed-free bar (a chain with half a mass at its free
+ * end) against its closed form (2c/h) sin((2n-1) pi / (4n)). */
+static void omega_max_should_be_the_top_of_the_spectrum(void **state)
+{
+    (void)state;
+    static const mm_fem_kind kinds[3] = {MM_FEM_BAR, MM_FEM_BAR, MM_FEM_BEAM};
+    static const mm_fem_mass masses[3] = {MM_FEM_LUMPED, MM_FEM_CONSISTENT, MM_FEM_CONSISTENT};
+    static const mm_fem_bc bcs[3] = {MM_FEM_FIXED_FREE, MM_FEM_FREE_FREE, MM_FEM_FIXED_FREE};
+    for (int c = 0; c < 3; c++) {
+        mm_fem_problem p = member(kinds[c], bcs[c], masses[c], 30);
+        size_t nf = mm_fem_ndof(&p) - (bcs[c] == MM_FEM_FIXED_FREE ? (size_t)(kinds[c] == MM_FEM_BEAM ? 2 : 1) : 0);
+        double *om = malloc(nf * sizeof *om), wmax;
+        mm_fem_options opt;
+        mm_fem_options_init(&opt);
+        opt.method = MM_FEM_DENSE;
+        mm_fem_modes res = {om, NULL, 0, 0, 0, MM_FEM_AUTO};
+        mm_error err;
+        size_t want = nf - (bcs[c] == MM_FEM_FREE_FREE);
+        assert_int_equal(mm_fem_modes_solve(&p, want > 100 ? 100 : want, &opt, &res, &err), MM_OK);
+        assert_int_equal(mm_fem_omega_max(&p, &wmax, &err), MM_OK);
+        if (want <= 100)   /* the dense solver's top, Rayleigh-refined */
+            check_rel(wmax, om[res.n_modes - 1], 1e-12, "omega_max vs the dense solver's top");
+        if (c == 0) {
+            double cw = sqrt(2.1e11 / 7850), h = 1.0 / 30;
+            check_rel(wmax, 2 * cw / h * sin(59 * PI / 120), 1e-13, "lumped fixed-free bar, closed form");
+        }
+        free(om);
+    }
+}
+
+/* Consistent loads carry the force and its moment; cubic beam elements are
+ * exact for point loads (a cantilever's tip: P L^3 / 3EI; a simply
+ * supported beam at midspan: P L^3 / 48 EI; a point between nodes too). */
+static void static_deflection_should_match_beam_formulas(void **state)
+{
+    (void)state;
+    double EI = 2.1e11 * 1e-8, P = -100;
+    mm_fem_problem p = member(MM_FEM_BEAM, MM_FEM_FIXED_FREE, MM_FEM_CONSISTENT, 7);
+    size_t nd = mm_fem_ndof(&p);
+    double *f = malloc(18 * sizeof *f), *u = malloc(18 * sizeof *u);   /* room for 8 elements */
+    mm_fem_load ld = {MM_FEM_LOAD_POINT, P, 0.3, 0, INFINITY, 0};
+    mm_fem_load_vector(&p, &ld, 0, f);
+    double sf = 0, sm = 0;
+    for (size_t i = 0; i < 8; i++) {
+        sf += f[2 * i];
+        sm += f[2 * i] * (double)i / 7 + f[2 * i + 1];
+    }
+    check_rel(sf, P, 1e-15, "the nodal forces add up to P");
+    check_rel(sm, P * 0.3, 1e-14, "and their moment to P a");
+    mm_error err;
+    /* tip load */
+    ld.x = 1;
+    mm_fem_load_vector(&p, &ld, 0, f);
+    assert_int_equal(mm_fem_static_solve(&p, f, u, &err), MM_OK);
+    /* cond(K) of a beam ~ 1e4 here (w and theta in different units): 1e-12 */
+    check_rel(u[nd - 2], P / (3 * EI), 1e-12, "cantilever tip deflection P L^3 / 3EI");
+    /* a point between nodes: deflection at the load P a^2 (3L - a) / 6EI at the tip */
+    ld.x = 0.3;
+    mm_fem_load_vector(&p, &ld, 0, f);
+    assert_int_equal(mm_fem_static_solve(&p, f, u, &err), MM_OK);
+    check_rel(u[nd - 2], P * 0.09 * (3 - 0.3) / (6 * EI), 1e-12, "tip under a load at a = 0.3 L");
+    p = member(MM_FEM_BEAM, MM_FEM_PINNED_PINNED, MM_FEM_CONSISTENT, 8);
+    ld.x = 0.5;
+    mm_fem_load_vector(&p, &ld, 0, f);
+    assert_int_equal(mm_fem_static_solve(&p, f, u, &err), MM_OK);
+    check_rel(u[8], P / (48 * EI), 1e-12, "midspan P L^3 / 48 EI");
+    p = member(MM_FEM_BEAM, MM_FEM_FREE_FREE, MM_FEM_CONSISTENT, 8);
+    assert_int_equal(mm_fem_static_solve(&p, f, u, &err), MM_ESINGULAR);
+    free(u);
+    free(f);
+}
+
+/* ---- transient response ------------------------------------------------------- */
+
+/* A 12-element cantilever under a tip step load and a harmonic load, with
+ * Rayleigh damping: the banded average-acceleration run equals the
+ * superposition of every mode's exact discrete Newmark solution (the
+ * scheme commutes with the modal decomposition of a proportionally damped
+ * system), to rounding. */
+static void banded_newmark_should_equal_the_modal_newmark_solution(void **state)
+{
+    (void)state;
+    enum { NEL = 12, NM = 24, STEPS = 400 };
+    mm_fem_problem p = member(MM_FEM_BEAM, MM_FEM_FIXED_FREE, MM_FEM_CONSISTENT, NEL);
+    size_t nd = mm_fem_ndof(&p), tip = nd - 2;
+    double om[NM], *sh = malloc(NM * nd * sizeof *sh), *f = malloc(nd * sizeof *f);
+    mm_fem_options opt;
+    mm_fem_options_init(&opt);
+    opt.method = MM_FEM_DENSE;
+    mm_fem_modes md = {om, sh, 0, 0, 0, MM_FEM_AUTO};
+    mm_error err;
+    assert_int_equal(mm_fem_modes_solve(&p, NM, &opt, &md, &err), MM_OK);
+    assert_int_equal(md.n_modes, NM);
+    mm_fem_damping dmp = {2.0, 1e-5};
+    static const double Omegas[2] = {0, 300};
+    for (int c = 0; c < 2; c++) {
+        mm_fem_load ld = {MM_FEM_LOAD_POINT, 50, 1.0, Omegas[c], INFINITY, 0};
+        double out[STEPS + 1];
+        mm_fem_transient tr = {MM_FEM_AVERAGE, 2e-4, STEPS, dmp, 1, 1, &tip, out, 0, NULL, NULL, 0};
+        assert_int_equal(mm_fem_transient_solve(&p, &ld, &tr, &err), MM_OK);
+        ld.P = 1;
+        mm_fem_load_vector(&p, &ld, 0, f);
+        double qm[STEPS + 1] = {0}, big = 0, worst = 0;
+        long ks[STEPS + 1];
+        for (int i = 0; i <= STEPS; i++)
+            ks[i] = i;
+        for (int j = 0; j < NM; j++) {
+            double pj = 0, one = 1, k2 = om[j] * om[j], cj = dmp.a + dmp.b * k2, eta[STEPS + 1];
+            for (size_t g = 0; g < nd; g++)
+                pj += sh[j * nd + g] * f[g] * 50;
+            mm_mdof_system s = {1, &one, &cj, &k2};
+            mm_mdof_motion mo = {NULL, NULL, &pj, Omegas[c]};
+            mm_newmark_options o;
+            mm_newmark_options_init(&o);
+            o.h = 2e-4;
+            assert_int_equal(mm_mdof_newmark_exact(&s, &mo, &o, STEPS + 1, ks, eta, NULL, &err), MM_OK);
+            for (int i = 0; i <= STEPS; i++)
+                qm[i] += sh[j * nd + tip] * eta[i];
+        }
+        for (int i = 0; i <= STEPS; i++) {
+            worst = fmax(worst, fabs(out[i] - qm[i]));
+            big = fmax(big, fabs(qm[i]));
+        }
+        /* 24 modes, 400 steps: rounding of the banded solves and of the
+         * modes (their top frequencies are stiff: omega h up to 50) */
+        check_abs(worst, 0, 1e-10 * big, c ? "harmonic load" : "step load");
+    }
+    free(f);
+    free(sh);
+}
+
+/* Modal superposition with every mode, exact in time, against the direct
+ * run as h halves: the difference falls like h^2 (Newmark's error), for a
+ * harmonic point load and for a load crossing a simply supported beam.  (A
+ * jump in the load, a rectangular pulse, falls inside a step and costs the
+ * direct run its second order: not tested here.) */
+static void modal_response_should_be_the_limit_of_the_direct_run(void **state)
+{
+    (void)state;
+    /* 4 elements keep omega_max h small enough (0.05 at the coarsest
+     * step) for every mode to be in the asymptotic range */
+    enum { NEL = 4, NM = 8 };
+    mm_fem_problem p = member(MM_FEM_BEAM, MM_FEM_PINNED_PINNED, MM_FEM_CONSISTENT, NEL);
+    size_t nd = mm_fem_ndof(&p), mid = 4;
+    double om[NM], *sh = malloc(NM * nd * sizeof *sh);
+    mm_fem_options opt;
+    mm_fem_options_init(&opt);
+    opt.method = MM_FEM_DENSE;
+    mm_fem_modes md = {om, sh, 0, 0, 0, MM_FEM_AUTO};
+    mm_error err;
+    assert_int_equal(mm_fem_modes_solve(&p, NM, &opt, &md, &err), MM_OK);
+    mm_fem_damping dmp = {5, 0};
+    mm_fem_load lds[2] = {{MM_FEM_LOAD_POINT, -100, 0.37, 900, INFINITY, 0},
+                          {MM_FEM_LOAD_MOVING, -100, 0, 0, INFINITY, 40}};
+    for (int c = 0; c < 2; c++) {
+        double T = 0.02, e[3];
+        for (int r = 0; r < 3; r++) {
+            long steps = 8000L << r;
+            double h = T / (double)steps, *out = malloc((size_t)(steps + 1) * sizeof *out);
+            mm_fem_transient tr = {MM_FEM_AVERAGE, h, steps, dmp, steps / 40, 1, &mid, out, 0, NULL, NULL, 0};
+            assert_int_equal(mm_fem_transient_solve(&p, &lds[c], &tr, &err), MM_OK);
+            double t[41], q[41];
+            for (int i = 0; i <= 40; i++)
+                t[i] = T * i / 40;
+            assert_int_equal(mm_fem_modal_response(&p, &md, NM, &dmp, &lds[c], 41, t, 1, &mid, q, &err), MM_OK);
+            e[r] = 0;
+            for (int i = 0; i <= 40; i++)
+                e[r] = fmax(e[r], fabs(out[i] - q[i]));
+            free(out);
+        }
+        /* in the asymptotic range: log2 of the error ratio within 0.2 of 2 */
+        check_abs(log2(e[0] / e[1]), 2, 0.2, c ? "moving load: order" : "harmonic load: order");
+        check_abs(log2(e[1] / e[2]), 2, 0.2, c ? "moving load: order" : "harmonic load: order");
+    }
+    free(sh);
+}
+
+/* Subspace iteration agrees with the dense solver, and keeps mode 1 of a
+ * 1000-element cantilever to rounding where the banded solver loses six
+ * digits (bench_fem): the discretisation error there is 1e-15. */
+static void subspace_iteration_should_match_dense_and_stay_accurate_when_fine(void **state)
+{
+    (void)state;
+    mm_fem_problem p = member(MM_FEM_BEAM, MM_FEM_FIXED_FREE, MM_FEM_CONSISTENT, 60);
+    double od[6], os[6], ex;
+    mm_fem_options opt;
+    mm_fem_options_init(&opt);
+    opt.method = MM_FEM_DENSE;
+    mm_fem_modes rd = {od, NULL, 0, 0, 0, MM_FEM_AUTO}, rs = {os, NULL, 0, 0, 0, MM_FEM_AUTO};
+    mm_error err;
+    assert_int_equal(mm_fem_modes_solve(&p, 6, &opt, &rd, &err), MM_OK);
+    opt.method = MM_FEM_SUBSPACE;
+    assert_int_equal(mm_fem_modes_solve(&p, 6, &opt, &rs, &err), MM_OK);
+    assert_int_equal(rs.method, MM_FEM_SUBSPACE);
+    for (int j = 0; j < 6; j++)
+        check_rel(os[j], od[j], 1e-11, "subspace vs dense (both Rayleigh-refined)");
+    p.n_el = 1000;
+    mm_fem_options_init(&opt);
+    assert_int_equal(mm_fem_modes_solve(&p, 1, &opt, &rs, &err), MM_OK);
+    assert_int_equal(rs.method, MM_FEM_SUBSPACE);
+    assert_int_equal(mm_fem_exact_omegas(&p, 1, &ex, &err), MM_OK);
+    check_rel(os[0], ex, 1e-11, "mode 1 of 1000 elements");
+}
+
 static void errors_should_name_the_parameter(void **state)
 {
     (void)state;
@@ -474,6 +685,11 @@ int main(void)
         cmocka_unit_test(dense_and_banded_solvers_should_agree),
         cmocka_unit_test(one_element_bar_should_give_its_hand_calculation),
         cmocka_unit_test(graded_per_element_mesh_should_converge_to_the_same_member),
+        cmocka_unit_test(omega_max_should_be_the_top_of_the_spectrum),
+        cmocka_unit_test(static_deflection_should_match_beam_formulas),
+        cmocka_unit_test(banded_newmark_should_equal_the_modal_newmark_solution),
+        cmocka_unit_test(modal_response_should_be_the_limit_of_the_direct_run),
+        cmocka_unit_test(subspace_iteration_should_match_dense_and_stay_accurate_when_fine),
         cmocka_unit_test(errors_should_name_the_parameter),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

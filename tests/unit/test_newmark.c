@@ -456,9 +456,164 @@ static void central_difference_should_estimate_the_limit_of_a_two_dof_system(voi
     mm_error err;
     assert_int_equal(integrate(&p, &o, &res, &err), MM_OK);
     double wmax = sqrt((7.0 + sqrt(33.0)) / 4.0);
-    check_rel(res.omega_max, wmax, 1e-8, "power iteration converged to 1e-10 in omega^2");
-    check_rel(res.h_stable, 2.0 / wmax, 1e-8, "h_stable = 2 / omega_max");
+    check_rel(res.omega_max, wmax, 1e-14, "omega_max from every eigenvalue: exact to rounding");
+    check_rel(res.h_stable, 2.0 / wmax, 1e-14, "h_stable = 2 / omega_max");
     result_free(&res);
+}
+
+
+/* ======================================================================== */
+/* Stability limit and amplification matrix                                 */
+/* ======================================================================== */
+
+/* The n = 160 fixed-fixed chain, k = 1e4 N/m, m = 1 kg: omega_max =
+ * 2 sqrt(k/m) sin(n pi / (2 (n + 1))), so h_stable = 0.0100005 s; the
+ * power iteration this replaced said 0.0100196 s (issue 9): too large, an
+ * unstable step called stable. */
+static void central_difference_should_find_the_exact_limit_of_a_160_mass_chain(void **state)
+{
+    (void)state;
+    enum { N = 160 };
+    double *M = calloc(N * N, sizeof *M), *K = calloc(N * N, sizeof *K), q0[N];
+    for (int i = 0; i < N; i++) {
+        M[i * N + i] = 1;
+        K[i * N + i] = 2e4;
+        if (i + 1 < N)
+            K[i * N + i + 1] = K[(i + 1) * N + i] = -1e4;
+        q0[i] = sin(3.0 * i);
+    }
+    mm_newmark_problem p;
+    memset(&p, 0, sizeof p);
+    p.n = N; p.M = M; p.K = K; p.q0 = q0; p.t_end = 0.01;
+    mm_newmark_options o = options(MM_NEWMARK_CENTRAL, 0.001);
+    mm_newmark_result res;
+    mm_error err;
+    assert_int_equal(integrate(&p, &o, &res, &err), MM_OK);
+    double wmax = 200 * sin(N * M_PI / (2.0 * (N + 1)));
+    /* the largest eigenvalue of a symmetric pencil: backward error of a few
+     * eps, here exactly conditioned (M = I) */
+    check_rel(res.omega_max, wmax, 1e-13, "omega_max of the chain, closed form");
+    check_rel(res.h_stable, 2 / wmax, 1e-13, "h_stable = 2/omega_max = 0.0100005 s");
+    assert_true(res.h_stable < 0.0100006);
+    result_free(&res);
+    free(M);
+    free(K);
+}
+
+static void omega_h_limit_should_be_the_textbook_values(void **state)
+{
+    (void)state;
+    mm_newmark_options o;
+    mm_newmark_options_init(&o);
+    static const struct { mm_newmark_method m; double lim; } t[] = {
+        {MM_NEWMARK_CENTRAL, 2}, {MM_NEWMARK_VERLET, 2}, {MM_NEWMARK_LINEAR, 3.4641016151377544},
+        {MM_NEWMARK_AVERAGE, 0}, {MM_NEWMARK_HHT, 0}, {MM_NEWMARK_GENERALIZED_ALPHA, 0},
+    };
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+        o.method = t[i].m;
+        check_rel(mm_newmark_omega_h_limit(&o), t[i].lim, 1e-15, mm_newmark_method_name(t[i].m));
+    }
+    o.method = MM_NEWMARK_BETA_GAMMA;
+    o.beta = 0.1, o.gamma = 0.5;      /* 1/sqrt(0.25 - 0.1) */
+    check_rel(mm_newmark_omega_h_limit(&o), 1 / sqrt(0.15), 1e-15, "beta 0.1, gamma 0.5");
+    o.beta = 0.3;                     /* 2 beta >= gamma: unconditional */
+    check_abs(mm_newmark_omega_h_limit(&o), 0, 0, "beta 0.3");
+}
+
+/* The spectral radius on x'' + omega^2 x = 0: 1 for average acceleration at
+ * any step; 1 for central difference below omega h = 2 and, above it, the
+ * root of l^2 - (2 - W^2) l + 1 = 0 of largest size; HHT-alpha tends to
+ * (1 + alpha)/(1 - alpha) at infinite omega h, generalized-alpha to rho_inf. */
+static void spectral_radius_should_match_the_closed_forms(void **state)
+{
+    (void)state;
+    mm_newmark_options o = options(MM_NEWMARK_AVERAGE, 1);
+    for (double W = 0.01; W < 1e4; W *= 3.7)
+        check_rel(mm_newmark_spectral_radius(&o, W, 0), 1, 1e-12, "average acceleration undamped");
+    o.method = MM_NEWMARK_CENTRAL;
+    check_rel(mm_newmark_spectral_radius(&o, 1.999, 0), 1, 1e-6, "central difference below 2");
+    for (double W = 2.001; W < 10; W *= 1.3) {
+        double b = 2 - W * W, l = fabs((b - sqrt(b * b - 4)) / 2);
+        check_rel(mm_newmark_spectral_radius(&o, W, 0), l, 1e-12, "central difference above 2");
+        assert_true(mm_newmark_spectral_radius(&o, W, 0) > 1);
+    }
+    o.method = MM_NEWMARK_HHT;
+    o.alpha = -0.3;
+    check_rel(mm_newmark_spectral_radius(&o, 1e7, 0), 0.7 / 1.3, 1e-5, "HHT at infinity");
+    o.method = MM_NEWMARK_GENERALIZED_ALPHA;
+    o.rho_inf = 0.6;
+    /* a double eigenvalue -rho_inf at infinity: its pair splits like
+     * sqrt(1/(omega h)), so 3e-5 at omega h = 1e7 */
+    check_rel(mm_newmark_spectral_radius(&o, 1e7, 0), 0.6, 1e-4, "generalized-alpha at infinity");
+    /* damping lowers Verlet's limit below 2 */
+    o.method = MM_NEWMARK_VERLET;
+    assert_true(mm_newmark_spectral_radius(&o, 1.99, 0.2) > 1);
+    o.method = MM_NEWMARK_CENTRAL;
+    assert_true(mm_newmark_spectral_radius(&o, 1.99, 0.2) < 1);
+}
+
+static int f3(double t, const double *q, const double *qd, double *F, void *params)
+{
+    (void)q;
+    (void)qd;
+    (void)params;
+    F[0] = cos(3 * t);
+    F[1] = 0.5 * cos(3 * t);
+    F[2] = -cos(3 * t);
+    return 0;
+}
+
+/* The powers of the amplification matrix (A) reproduce every scheme's run
+ * of a damped, forced 3-DOF system step for step: two statements of the
+ * same recursion, one written from the scheme's equations, one stepping. */
+static void amplification_matrix_should_reproduce_every_scheme(void **state)
+{
+    (void)state;
+    double M[9] = {2, 0.5, 0, 0.5, 1, 0, 0, 0, 1.5};
+    double K[9] = {300, -100, 0, -100, 250, -150, 0, -150, 150};
+    double C[9] = {0.8, -0.2, 0, -0.2, 0.5, -0.1, 0, -0.1, 0.3};
+    double q0[3] = {0.01, -0.02, 0.005}, v0[3] = {0.1, 0, -0.2};
+    static const mm_newmark_method ms[] = {MM_NEWMARK_AVERAGE, MM_NEWMARK_LINEAR, MM_NEWMARK_HHT,
+                                           MM_NEWMARK_GENERALIZED_ALPHA, MM_NEWMARK_CENTRAL,
+                                           MM_NEWMARK_VERLET, MM_NEWMARK_BETA_GAMMA};
+    for (size_t mi = 0; mi < sizeof ms / sizeof ms[0]; mi++) {
+        mm_newmark_problem p;
+        memset(&p, 0, sizeof p);
+        p.n = 3; p.M = M; p.C = C; p.K = K; p.q0 = q0; p.qd0 = v0; p.t_end = 2.0;
+        p.force = f3; p.force_kind = MM_NEWMARK_FORCE_TIME;
+        mm_newmark_options o = options(ms[mi], 0.02);
+        o.beta = 0.3, o.gamma = 0.6;
+        mm_newmark_result res;
+        mm_error err;
+        assert_int_equal(integrate(&p, &o, &res, &err), MM_OK);
+        double A[81], B0[27], B1[27], y[9], y1[9], F0[3], F1[3];
+        assert_int_equal(mm_newmark_amplification(3, M, C, K, &o, A, B0, B1, &err), MM_OK);
+        for (int i = 0; i < 3; i++) {
+            y[i] = res.q[i];
+            y[3 + i] = res.qd[i];
+            y[6 + i] = res.qdd[i];
+        }
+        double worst = 0, big = 0;
+        for (int k = 0; k < res.rows - 1; k++) {
+            f3(res.t[k], NULL, NULL, F0, NULL);
+            f3(res.t[k + 1], NULL, NULL, F1, NULL);
+            for (int i = 0; i < 9; i++) {
+                y1[i] = 0;
+                for (int j = 0; j < 9; j++)
+                    y1[i] += A[i * 9 + j] * y[j];
+                for (int j = 0; j < 3; j++)
+                    y1[i] += B0[i * 3 + j] * F0[j] + B1[i * 3 + j] * F1[j];
+            }
+            memcpy(y, y1, sizeof y);
+            for (int i = 0; i < 3; i++) {
+                worst = fmax(worst, fabs(y[i] - res.q[(k + 1) * 3 + i]));
+                big = fmax(big, fabs(y[i]));
+            }
+        }
+        /* 100 steps, each adding a few eps of the state's size */
+        check_abs(worst, 0, 1e-12 * big, mm_newmark_method_name(ms[mi]));
+        result_free(&res);
+    }
 }
 
 /* ======================================================================== */
@@ -582,6 +737,27 @@ static void energy_balance_should_be_a_second_order_error_indicator(void **state
     check_rel(forced_balance(MM_NEWMARK_CENTRAL, 0.01, NULL) /
               forced_balance(MM_NEWMARK_CENTRAL, 0.005, NULL), 4.0, 0.1,
               "central difference: second order too");
+}
+
+/* With the work taken by the trapezoidal rule in q, average acceleration
+ * keeps the balance to rounding on a forced, damped system (its step
+ * identity E_{k+1} - E_k = (q_{k+1} - q_k).(F_k + F_{k+1} - C v_k -
+ * C v_{k+1})/2), while central difference still shows its error. */
+static void work_in_q_should_make_the_average_acceleration_balance_exact(void **state)
+{
+    (void)state;
+    osc s = {1.0, 2.0, 100.0, 1.0, 8.0};
+    double x0 = 0.01, v0 = 0.0;
+    mm_newmark_problem p = osc_problem(&s, &x0, &v0, 10.0);
+    mm_newmark_options o = options(MM_NEWMARK_AVERAGE, 0.01);
+    o.work_in_q = 1;
+    mm_newmark_result res;
+    mm_error err;
+    assert_int_equal(integrate_bare(&p, &o, &res, &err), MM_OK);
+    check_abs(res.energy_error, 0, 1e-13, "1000 steps of rounding");
+    o.method = MM_NEWMARK_CENTRAL;
+    assert_int_equal(integrate_bare(&p, &o, &res, &err), MM_OK);
+    assert_true(res.energy_error > 1e-6);
 }
 
 /* HHT-alpha removes energy that no physical damper took: on a free
@@ -1146,10 +1322,15 @@ int main(void)
         cmocka_unit_test(central_difference_should_stay_bounded_just_below_the_limit),
         cmocka_unit_test(linear_acceleration_should_report_blow_up_past_its_limit),
         cmocka_unit_test(central_difference_should_estimate_the_limit_of_a_two_dof_system),
+        cmocka_unit_test(central_difference_should_find_the_exact_limit_of_a_160_mass_chain),
+        cmocka_unit_test(omega_h_limit_should_be_the_textbook_values),
+        cmocka_unit_test(spectral_radius_should_match_the_closed_forms),
+        cmocka_unit_test(amplification_matrix_should_reproduce_every_scheme),
         cmocka_unit_test(average_acceleration_should_lengthen_the_period_by_omega_h_squared_over_12),
         cmocka_unit_test(verlet_energy_error_should_stay_bounded_over_1e5_periods),
         cmocka_unit_test(average_acceleration_should_conserve_energy_over_1e5_periods),
         cmocka_unit_test(energy_balance_should_be_a_second_order_error_indicator),
+        cmocka_unit_test(work_in_q_should_make_the_average_acceleration_balance_exact),
         cmocka_unit_test(energy_balance_should_show_the_numerical_dissipation_of_hht_alpha),
         cmocka_unit_test(energy_balance_should_count_the_work_of_a_nonsymmetric_stiffness),
         cmocka_unit_test(hht_alpha_should_damp_the_stiff_mode_at_its_spectral_radius),

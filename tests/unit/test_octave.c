@@ -362,7 +362,7 @@ static void every_script_should_reproduce_the_answer_in_octave(void **state)
         snprintf(path, sizeof path, "%.*sm", (int)strlen(ex->theory) - 2, ex->theory);
         char *body = slurp(path);
         if (!body) {
-            print_message("%-26s no script body (%s)\n", ex->id, path);
+            print_error("%s has no Octave script: write %s (README, \"How to add an exercise\")\n", ex->id, path);
             missing++;
             continue;
         }
@@ -468,6 +468,7 @@ static void every_script_should_reproduce_the_answer_in_octave(void **state)
     print_message("%d scripts run, %d numbers compared, %d exercises without a script\n", nrun, compared,
                   missing);
     assert_int_equal(failures, 0);
+    assert_int_equal(missing, 0);          /* a new exercise without a script fails the suite */
 }
 
 static int setup(void **state)

@@ -17,7 +17,7 @@ const ED = '.truss-ed';
 /** The editor on the page: the page's own mount, or the stand-in. */
 async function editor(page, origin, query = '') {
   await openExercise(page, origin, `id=sta-truss${query ? '&' + query : ''}`);
-  const own = await page.waitForSelector(`.extension ${ED}`, { timeout: 4000 }).catch(() => null);
+  const own = await page.waitForSelector(`.extension ${ED}`, { timeout: 15000 }).catch(() => null);
   if (!own) {
     await page.evaluate(async () => {
       const mod = await import('/js/ex/sta-truss.js');

@@ -8,10 +8,11 @@
 //     api   { getParams()      -> {name: text} of the values in the form,
 //             setParams(obj)   -> set some values (text, as in a query
 //                                 string) and solve again, as if typed,
-//             onAnswer(cb)     -> cb(answer) after every answer (also now),
+//             onAnswer(cb)     -> cb(answer) after every answer (also now);
+//                                 a refusal as its body, {error: {code, param, message}},
 //             lang             -> the page's language, 'en' | 'cs' | 'de' }.
 //   mount may return a function that undoes it (called on page teardown).
 // Extensions talk to the server only through the public API, like the page.
 export const extensions = {
-  'sta-truss': () => import('./sta-truss.js'),
+  'sta-truss': () => import('./sta-truss.js?v=__MM_ASSET_VERSION__'),
 };

@@ -12,10 +12,11 @@ const GRID = 0.5;            // m: new joints snap to it, so the URL stays short
 const PICK = 14;             // px: how near a click must be to a joint
 
 const STYLE = `
-.truss-ed { border: 1px solid #d9d6cf; border-radius: 6px; padding: 0.5rem; background: #fff; margin: 0.5rem 0; }
+.truss-ed { border: 1px solid #d9d6cf; border-radius: 6px; padding: 0.5rem; background: #fff; margin: 0.5rem 0;
+  color: #1d232a; color-scheme: light; }   /* a light drawing board in every scheme: its colours are fixed */
 .truss-ed .tools { display: flex; flex-wrap: wrap; gap: 0.3rem; align-items: center; margin-bottom: 0.4rem; }
 .truss-ed .tools button { font: inherit; font-size: 0.9rem; padding: 0.2rem 0.6rem; border: 1px solid #b9b4aa;
-  background: #f6f4ef; border-radius: 4px; cursor: pointer; }
+  background: #f6f4ef; color: #1d232a; border-radius: 4px; cursor: pointer; }
 .truss-ed .tools button[aria-pressed="true"] { background: #1f5fa8; color: #fff; border-color: #1f5fa8; }
 .truss-ed .tools label { font-size: 0.85rem; color: #505a64; }
 .truss-ed .tools input { width: 5.5em; font: inherit; font-size: 0.9rem; }

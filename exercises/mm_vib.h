@@ -1,0 +1,103 @@
+/* mm_vib.h — what the multi-DOF vibration exercises (5.10-5.12, and
+ * num-newmark) share that is not numerics: drawing masses on springs,
+ * bars and beams in an answer's animation, and a mode's motion in frames.
+ * The numerics are in solvers/mm_mdof.h and solvers/mm_fem.h.
+ */
+#ifndef MM_VIB_H
+#define MM_VIB_H
+
+#include "mm_exercise.h"
+#include "mm_fem.h"
+#include "mm_status.h"
+
+/* How many frames show a motion of the given shortest period over t_end
+ * within max_frames (<= MM_ANIM_MAX_FRAMES): 16 frames a period; when
+ * that cannot cover t_end, the animation covers *t_show < t_end, else
+ * t_show = t_end.  At least 2 frames.  A period <= 0 or infinite:
+ * max_frames / 2 frames over t_end.  Keeping answers small (64 KB at the
+ * defaults) is what max_frames is for: pass budget / numbers per frame. */
+int mm_vib_frames(double t_end, double period, int max_frames, double *t_show);
+
+/* Points of a spring drawn by mm_vib_masses_draw: 2 leads, 3 coils. */
+#define MM_VIB_SPRING_POINTS 8
+
+/* Masses on their springs, nf frames: n blocks in a row, block i at rest
+ * at x = (i + 1) gap, moved by q[f*n + i] [m] in frame f.  The springs come
+ * from the stiffness matrix K (n x n): -K_ij joins blocks i and j (next
+ * neighbours in the row; others drawn as a line arching above), the row
+ * sum sum_j K_ij ties block i to the nearer wall (a wall is drawn where a
+ * spring meets it).  gap: rest spacing [m], a few times the largest |q|.
+ * Creates the shapes "wall", "spring i-j", "mass i".  Returns MM_OK or
+ * MM_ENOMEM. */
+int mm_vib_masses_draw(mm_result *res, int n, const double *K, int nf, const double *q,
+                       double gap);
+
+/* Numbers per frame of mm_vib_masses_draw for n masses (at most). */
+int mm_vib_masses_numbers(int n, const double *K);
+
+/* A chain of n masses between walls (right_wall: 0 for a free right end),
+ * nf frames: the masses as dots on a line of springs (straight), moved
+ * along the line by q[f*n + i] [m], and the same displacements drawn
+ * across the line as a curve above it (a chain's mode looks like a
+ * string's).  At most 60 masses are drawn (every k-th of a longer chain)
+ * and 120 points of the curve.  gap: the rest spacing [m].  Creates
+ * "springs", "mass i", "wall left", "wall right", "u across".  Returns
+ * MM_OK or MM_ENOMEM. */
+int mm_vib_chain_draw(mm_result *res, int n, int right_wall, int nf, const double *q, double gap);
+
+/* q[f*n + i] = A phi[i*ld + j] sin(2 pi f / (nf - 1)): one period of mode j
+ * in nf frames, and t[f] = f T / (nf - 1), T = 2 pi / omega (t in periods
+ * when omega = 0).  Cannot fail. */
+void mm_vib_mode_frames(int n, const double *phi, int ld, int j, double omega, double A, int nf,
+                        double *t, double *q);
+
+/* A bar's or beam's motion, nf frames of the displacement u (nf x ndof,
+ * every global DOF): a beam's centre line deflected by w(x) (Hermite
+ * interpolation, 2 points per element, at most 61 in all), a bar's axis
+ * with its nodes moved along it (drawn as dots, 11 at most) and the curve
+ * of u(x) drawn above it (at most 51 points), both scaled by scale (metres
+ * of drawing per metre of displacement).  Supports drawn as ground.  Creates "member", "nodes"
+ * (bar), "u(x)" (bar), "support".  Returns MM_OK or MM_ENOMEM. */
+int mm_vib_member_draw(mm_result *res, const mm_fem_problem *p, int nf, const double *u,
+                       double scale);
+
+/* The matrices of M q'' + C q' + K q = F as parameters named "M", "C",
+ * "K" (C may be NULL): square, n x n like M, symmetric to 1e-12 of their
+ * largest entry, M positive definite, C and K positive semidefinite; and
+ * the nvec vectors vec[k] (named vnames[k]) of n values each.  Returns
+ * MM_OK or MM_ERANGE / MM_EVALUE naming the parameter and saying why. */
+int mm_vib_check_system(const mm_value *M, const mm_value *C, const mm_value *K, int nvec,
+                        const mm_value *const *vec, const char *const *vnames, mm_error *err);
+
+/* A modally damped system M q'' + C q' + K q = F cos(W t), C = M Phi
+ * diag(c) Phi^T M (c_j = 2 zeta_j omega_j), from q0, v0, computed three
+ * ways at the ns sampled steps k_i h (every stride-th of N = ceil(t_end/h)
+ * steps, and the last), for the transient exercises:
+ *   q_nm   direct integration, mm_newmark average acceleration, coupled;
+ *   q_ex   modal superposition of all n modes, each exact (mm_mdof);
+ *   q_m    the same with the first m modes only (truncated);
+ * and two checks made on res: q_nm against the superposition of every
+ * mode's exact discrete Newmark solution (rounding: the scheme commutes
+ * with the modal decomposition), and q_ex against the transition matrix of
+ * the coupled system (rounding).  Phi: n x n mass-normalised modes, omega
+ * their frequencies.  Arrays come from res's arena.  Returns MM_OK or an
+ * mm_status code with err filled. */
+typedef struct mm_vib_transient {
+    int ns;               /* samples */
+    long steps, stride;   /* Newmark steps, and steps between samples */
+    double *t, *q_nm, *q_ex, *q_m;   /* ns, and ns x n each */
+    double err_max;       /* max |q_nm - q_ex|: Newmark's error, exact to rounding */
+    double trunc_max;     /* max |q_m - q_ex|: the truncation error, exact */
+    double round;         /* the rounding of these (an estimate) */
+    double round_nm;      /* that of err_max, with the Newmark run's own rounding */
+} mm_vib_transient;
+
+int mm_vib_transient_run(mm_result *res, int n, const double *M, const double *K, const double *omega,
+                         const double *Phi, const double *c, int m, const double *q0, const double *v0,
+                         const double *F, double W, double h, double t_end, int points,
+                         mm_vib_transient *out, mm_error *err);
+
+/* The largest |u| over n values, or 1 when all are 0 (a scale's divisor). */
+double mm_vib_big(const double *u, size_t n);
+
+#endif
