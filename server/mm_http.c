@@ -1167,6 +1167,24 @@ static void allow_text(const char *set, char *out, size_t size)
         k += (size_t)snprintf(out + k, size - k, *s == ' ' ? ", " : "%c", *s);
 }
 
+/* 301 to the base path with its slash (the query is dropped: a page's own). */
+static enum MHD_Result send_redirect(req *r, const char *method, const char *url, const char *base)
+{
+    char to[300];
+    snprintf(to, sizeof to, "%s/", base);
+    struct MHD_Response *resp = MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
+    if (!resp)
+        return MHD_NO;
+    MHD_add_response_header(resp, MHD_HTTP_HEADER_LOCATION, to);
+    MHD_add_response_header(resp, MHD_HTTP_HEADER_CACHE_CONTROL, "no-cache");
+    enum MHD_Result ret = MHD_queue_response(r->c, MHD_HTTP_MOVED_PERMANENTLY, resp);
+    MHD_destroy_response(resp);
+    r->answered = 1;
+    count(r->s, r->route, 301, 0);
+    log_line(r->s, r, method, url, 301, 0, "redirect");
+    return ret;
+}
+
 static enum MHD_Result route_request(req *r, const char *method, const char *full_url)
 {
     ctx x = {.r = r, .method = method, .full_url = full_url};
@@ -1176,8 +1194,8 @@ static enum MHD_Result route_request(req *r, const char *method, const char *ful
         if (strncmp(url, st->base, st->base_len) != 0 || (url[st->base_len] && url[st->base_len] != '/'))
             return send_error(r, method, full_url, MM_ENOTFOUND, "", "no such page", NULL);
         url += st->base_len;
-        if (!*url)
-            url = "/";
+        if (!*url)                           /* "/mech": the page's relative URLs need "/mech/" */
+            return send_redirect(r, method, full_url, st->base);
     }
     x.url = url;
     x.head = strcmp(method, "HEAD") == 0;

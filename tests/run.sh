@@ -23,9 +23,10 @@ for t in "$BUILD"/tests/test_*; do
   name=$(basename "$t")
   log="test-output/$name.log"
   echo "== $name"
+  start=$SECONDS
   "$t" > "$log" 2>&1
   rc=$?
-  tail -n 3 "$log" | grep -E 'PASSED|FAILED' | sed 's/^/   /'
+  tail -n 3 "$log" | grep -E 'PASSED|FAILED' | sed "s/\$/ ($((SECONDS - start)) s)/; s/^/   /"
   count "$log"
   if ((rc != 0)); then
     grep -E '^\[  (FAILED|ERROR)|error|Error' "$log" | head -20 | sed 's/^/   /'

@@ -731,6 +731,10 @@ static void a_course_should_choose_order_and_narrow_limits(void **state)
     assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(cat, 0), "id")->valuestring, "num-linear-system");
     cJSON_Delete(cat);
     mm_reply_free(&r);
+    request(&f, NULL, "/statics", NULL, NULL, &r);      /* the pages' relative URLs need the slash */
+    assert_int_equal(r.status, 301);
+    assert_non_null(strstr(r.headers, "Location: /statics/\r\n"));
+    mm_reply_free(&r);
     assert_int_equal(mm_fixture_stop(&f), 0);
     char *text = slurp(log);
     assert_non_null(strstr(text, "course.json:3: no exercise \"vib-no-such\""));
