@@ -1,7 +1,10 @@
 /* mm_dyn.c — see mm_dyn.h. */
 #include "mm_dyn.h"
 
+#include <float.h>
 #include <math.h>
+
+#include "mm_elliptic.h"
 
 double mm_dyn_quantum(double size)
 {
@@ -33,4 +36,389 @@ void mm_dyn_frame_times(mm_anim *a, double t_show)
 {
     for (int f = 0; f < a->nframes; f++)
         a->t[f] = a->nframes > 1 ? t_show * f / (a->nframes - 1) : 0;
+}
+
+/* ---- dyn-robot-2link: the planned move of the two-link arm ----------------- */
+
+
+
+/* The time law s(tau), tau = t/T, and its derivatives (eq. 2 and 3). */
+static void law(int quintic, double tau, double *s, double *ds, double *dds)
+{
+    if (quintic) {
+        double u = 1 - tau;
+        *s = tau * tau * tau * (10 - 15 * tau + 6 * tau * tau);
+        *ds = 30 * tau * tau * u * u;
+        *dds = 60 * tau * u * (1 - 2 * tau);
+    } else {
+        *s = tau * tau * (3 - 2 * tau);
+        *ds = 6 * tau * (1 - tau);
+        *dds = 6 - 12 * tau;
+    }
+}
+
+/* The planned q, q', q'' at time t. */
+void mm_dyn_plan_at(const mm_dyn_plan *p, double t, double *q, double *qd, double *qdd)
+{
+    double s, ds, dds;
+    law(p->quintic, fmin(fmax(t / p->T, 0), 1), &s, &ds, &dds);
+    for (int j = 0; j < 2; j++) {
+        q[j] = p->q0[j] + p->dq[j] * s;
+        qd[j] = p->dq[j] * ds / p->T;
+        qdd[j] = p->dq[j] * dds / (p->T * p->T);
+    }
+}
+
+void mm_dyn_plan_torque(const mm_dyn_plan *p, double t, double *tau)
+{
+    double q[2], qd[2], qdd[2];
+    mm_dyn_plan_at(p, t, q, qd, qdd);
+    mm_robot2_inverse(&p->arm, q, qd, qdd, tau);          /* eq. (1) */
+}
+
+/* Forward dynamics driven by the planned torques: y = (q1, q2, q1', q2'). */
+int mm_dyn_plan_forward_rhs(double t, const double *y, double *dy, void *ctx)
+{
+    mm_dyn_plan *p = ctx;
+    double tau[2], q[2], qd[2], qdd[2];
+    mm_dyn_plan_at(p, t, q, qd, qdd);
+    if (p->t_left < 0 && fmax(fabs(y[0] - q[0]), fabs(y[1] - q[1])) > 2 * M_PI) {
+        p->t_left = t;                                    /* it fell off the path: stop */
+        return MM_ENOCONV;
+    }
+    mm_dyn_plan_torque(p, t, tau);
+    dy[0] = y[2];
+    dy[1] = y[3];
+    mm_robot2_forward(&p->arm, y, y + 2, tau, dy + 2);   /* eq. (5) */
+    return 0;
+}
+
+/* ---- how unstable the open-loop arm is along the path ---------------------------- */
+
+/* A cheap upper estimate of how unstable the open-loop arm is: the growth
+ * rate of small errors at time t from the gravity stiffness (delta q'' =
+ * -M^-1 dG/dq delta q: a positive eigenvalue mu gives e^(sqrt(mu) t), the
+ * arm balancing above its joints) plus the joint speeds (the Coriolis and
+ * centrifugal terms feed errors at about |q'|), integrated over the move by
+ * Simpson's rule.  Used to bound the work before anything is integrated. */
+static double growth_rate(const mm_dyn_plan *p, double t)
+{
+    double q[2], qd[2], qdd[2], M[4];
+    mm_dyn_plan_at(p, t, q, qd, qdd);
+    const mm_robot2 *s = &p->arm;
+    mm_robot2_mass(s, q[1], M);
+    double a = (0.5 * s->m1 + s->m2) * s->g * s->l1, b = 0.5 * s->m2 * s->g * s->l2;
+    double s1 = sin(q[0]), s12 = sin(q[0] + q[1]);
+    double K[4] = {a * s1 + b * s12, b * s12, b * s12, b * s12};   /* -dG/dq */
+    double det = M[0] * M[3] - M[1] * M[2];
+    double A[4] = {(M[3] * K[0] - M[1] * K[2]) / det, (M[3] * K[1] - M[1] * K[3]) / det,
+                   (M[0] * K[2] - M[2] * K[0]) / det, (M[0] * K[3] - M[2] * K[1]) / det};
+    double tr = A[0] + A[3], dt = A[0] * A[3] - A[1] * A[2], disc = tr * tr / 4 - dt;
+    double mu = tr / 2 + sqrt(fmax(disc, 0));
+    return sqrt(fmax(mu, 0)) + fabs(qd[0]) + fabs(qd[1]);
+}
+
+double mm_dyn_plan_growth(const mm_dyn_plan *p)
+{
+    enum { NS = 64 };
+    double sum = 0;
+    for (int i = 0; i <= NS; i++)
+        sum += (i == 0 || i == NS ? 1 : i % 2 ? 4 : 2) * growth_rate(p, p->T * i / NS);
+    return sum * p->T / (3 * NS);
+}
+
+/* The variational equations along the planned path: Phi' = J(t) Phi,
+ * Phi(0) = I, with J the Jacobian of the forward dynamics (eq. 5) at the
+ * planned state, by central differences.  y = Phi, 16 values row-major. */
+int mm_dyn_plan_variational_rhs(double t, const double *y, double *dy, void *ctx)
+{
+    mm_dyn_plan *p = ctx;
+    double q[2], qd[2], qdd[2], x[4], J[16];
+    mm_dyn_plan_at(p, t, q, qd, qdd);
+    x[0] = q[0], x[1] = q[1], x[2] = qd[0], x[3] = qd[1];
+    for (int k = 0; k < 4; k++) {
+        double h = 1e-6 * (1 + fabs(x[k])), xp[4], xm[4], fp[4], fm[4];
+        for (int j = 0; j < 4; j++)
+            xp[j] = xm[j] = x[j];
+        xp[k] += h, xm[k] -= h;
+        mm_dyn_plan_forward_rhs(t, xp, fp, ctx);
+        mm_dyn_plan_forward_rhs(t, xm, fm, ctx);
+        for (int i = 0; i < 4; i++)
+            J[4 * i + k] = (fp[i] - fm[i]) / (2 * h);
+    }
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double v = 0;
+            for (int k = 0; k < 4; k++)
+                v += J[4 * i + k] * y[4 * k + j];
+            dy[4 * i + j] = v;
+        }
+    return 0;
+}
+
+/* ---- the largest |tau_j| ------------------------------------------------------ */
+
+typedef struct peak_ctx {
+    const mm_dyn_plan *p;
+    int j;
+} peak_ctx;
+
+static double abs_tau(const peak_ctx *c, double t)
+{
+    double tau[2];
+    mm_dyn_plan_torque(c->p, t, tau);
+    return fabs(tau[c->j]);
+}
+
+/* Sample on nt points, then golden-section search around the best sample.
+ * The maximum found is attained (a lower bound); the true one exceeds it by
+ * at most |tau''| w^2 / 8 over the final bracket w, estimated from second
+ * differences. */
+double mm_dyn_plan_peak(const mm_dyn_plan *p, int j, double *t_at, double *err)
+{
+    peak_ctx c = {p, j};
+    enum { NT = 2001 };
+    int best = 0;
+    double vbest = -1;
+    for (int i = 0; i < NT; i++) {
+        double v = abs_tau(&c, p->T * i / (NT - 1));
+        if (v > vbest)
+            vbest = v, best = i;
+    }
+    double a = p->T * (best > 0 ? best - 1 : 0) / (NT - 1), b = p->T * (best < NT - 1 ? best + 1 : NT - 1) / (NT - 1);
+    const double r = 0.6180339887498949;
+    double x1 = b - r * (b - a), x2 = a + r * (b - a), f1 = abs_tau(&c, x1), f2 = abs_tau(&c, x2);
+    for (int it = 0; it < 80 && b - a > 4 * DBL_EPSILON * fmax(fabs(a), fabs(b)); it++) {
+        if (f1 > f2) {
+            b = x2, x2 = x1, f2 = f1;
+            x1 = b - r * (b - a), f1 = abs_tau(&c, x1);
+        } else {
+            a = x1, x1 = x2, f1 = f2;
+            x2 = a + r * (b - a), f2 = abs_tau(&c, x2);
+        }
+    }
+    double t = f1 > f2 ? x1 : x2, v = fmax(f1, fmax(f2, vbest));
+    if (vbest >= fmax(f1, f2))
+        t = p->T * best / (NT - 1);                /* an end point or a kink of |tau| */
+    double h = 1e-3 * p->T, tm = fmax(t - h, 0), tp = fmin(t + h, p->T);
+    double curv = fabs(abs_tau(&c, tp) - 2 * abs_tau(&c, 0.5 * (tm + tp)) + abs_tau(&c, tm)) /
+                  (0.25 * (tp - tm) * (tp - tm));
+    double w = fmax(b - a, 4 * DBL_EPSILON * p->T);
+    *t_at = t;
+    *err = curv * w * w / 8 + 4 * DBL_EPSILON * v;
+    return v;
+}
+
+/* ---- dyn-slider-crank ------------------------------------------------------- */
+
+/* The extremes of the effective inertia J(phi) (eq. 5) over a turn: 720
+ * samples, each refined by golden sections.  J is even about 0 and pi, so
+ * half a turn is enough. */
+void mm_dyn_sc_inertia_range(const mm_slider_crank *s, double *Jmin, double *Jmax)
+{
+    enum { NS = 360 };
+    *Jmin = INFINITY, *Jmax = 0;
+    for (int sign = -1; sign <= 1; sign += 2) {
+        int best = 0;
+        double vb = -INFINITY;
+        for (int i = 0; i <= NS; i++) {
+            double v = sign * mm_sc_inertia(s, M_PI * i / NS, NULL);
+            if (v > vb)
+                vb = v, best = i;
+        }
+        double a = M_PI * fmax(best - 1, 0) / NS, b = M_PI * fmin(best + 1, NS) / NS, g = 0.6180339887498949;
+        double x1 = b - g * (b - a), x2 = a + g * (b - a);
+        double f1 = sign * mm_sc_inertia(s, x1, NULL), f2 = sign * mm_sc_inertia(s, x2, NULL);
+        for (int it = 0; it < 60; it++) {
+            if (f1 > f2) {
+                b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = sign * mm_sc_inertia(s, x1, NULL);
+            } else {
+                a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = sign * mm_sc_inertia(s, x2, NULL);
+            }
+        }
+        double v = fmax(vb, fmax(f1, f2)) * sign;
+        if (sign < 0)
+            *Jmin = v;
+        else
+            *Jmax = v;
+    }
+}
+
+/* The error of reading an extreme off the samples: the parabola through
+ * the best sample and its neighbours moves it by this much (an estimate). */
+double mm_dyn_extreme_error(const double *v, int n, int i)
+{
+    if (i <= 0 || i >= n - 1)
+        return 0;                                   /* at an end of the run: the run's own value */
+    double c = 2 * v[i] - v[i - 1] - v[i + 1], d = v[i + 1] - v[i - 1];
+    return c != 0 ? d * d / (8 * fabs(c)) : 0;
+}
+
+
+/* ---- dyn-pendulum: the closed form ----------------------------------------- */
+
+
+/* sin theta with the top exact: theta = pi (the double nearest pi, as the
+ * parameter reads it) is the inverted equilibrium, sin = 0. */
+double mm_dyn_sin_top(double th)
+{
+    double r = th - 2 * M_PI * nearbyint(th / (2 * M_PI));   /* r in [-pi, pi] */
+    if (r > M_PI_2)
+        return sin(M_PI - r);
+    if (r < -M_PI_2)
+        return -sin(M_PI + r);
+    return sin(r);
+}
+
+/* The exact theta(t) and theta'(t) (eqs. 4 and 6). */
+double mm_dyn_pend_exact(const mm_dyn_pend *p, double t, double *w)
+{
+    double sn, cn, dn, am;
+    switch (p->motion) {
+    case MM_DYN_SWING:
+        mm_elliptic_jacobi(p->wn * t + p->u0, p->k, p->kc, &sn, &cn, &dn, NULL);
+        *w = 2 * p->k * p->wn * cn;
+        return 2 * atan2(p->k * sn, dn);       /* sin(theta/2) = k sn, cos(theta/2) = dn */
+    case MM_DYN_SEPARATRIX:
+        if (p->omega0 == 0) {
+            *w = 0;
+            return M_PI;
+        }
+        /* with a push: the limit k = 1 of the rotation formula */
+        /* fall through */
+    default:
+        mm_elliptic_jacobi(p->sg * p->kk * p->wn * t + p->u0, p->k, p->kc, &sn, &cn, &dn, &am);
+        *w = 2 * p->sg * p->kk * p->wn * dn;
+        return 2 * am;
+    }
+}
+
+mm_dyn_pend mm_dyn_pend_init(double L, double g, double theta0, double omega0)
+{
+    mm_dyn_pend p = {.L = L, .g = g, .theta0 = theta0, .omega0 = omega0};
+    p.wn = sqrt(p.g / p.L);
+    p.T0 = 2 * M_PI / p.wn;
+    double s = sin(0.5 * p.theta0);
+    double c = p.theta0 == M_PI ? 0 : cos(0.5 * p.theta0);   /* the top exactly */
+    double a = fabs(p.omega0) / (2 * p.wn);
+    /* eq. (3): k^2 = sin^2(theta0/2) + (omega0 / (2 wn))^2, kc^2 = 1 - k^2 */
+    double kc2 = (c - a) * (c + a);
+    if (kc2 > 0) {
+        p.motion = MM_DYN_SWING;
+        p.kc = sqrt(kc2);
+        p.k = sqrt(s * s + a * a);
+        p.T = 4 * mm_elliptic_Kc(p.kc) / p.wn;                       /* eq. (5) */
+        /* sn(u0) = sin(theta0/2)/k, cn(u0) = omega0/(2 k wn): u0 = F(phi0) */
+        p.u0 = mm_elliptic_F(atan2(s, p.omega0 / (2 * p.wn)), p.k, p.kc);
+    } else if (kc2 == 0 && p.omega0 == 0) {
+        p.motion = MM_DYN_SEPARATRIX;                                        /* at rest on the top */
+        p.T = INFINITY;
+        p.k = 1;
+    } else {
+        /* over the top (or on the separatrix with a push): theta/2 = am(sg kk wn t + u0, 1/kk) */
+        p.motion = kc2 == 0 ? MM_DYN_SEPARATRIX : MM_DYN_OVER;
+        p.kk = sqrt(s * s + a * a);
+        p.k = 1 / p.kk;
+        p.kc = sqrt(-kc2) / p.kk;
+        p.sg = p.omega0 >= 0 ? 1 : -1;
+        p.T = p.kc > 0 ? 2 * mm_elliptic_Kc(p.kc) / (p.kk * p.wn) : INFINITY;   /* eq. (7) */
+        p.u0 = mm_elliptic_F(0.5 * p.theta0, p.k, p.kc);
+    }
+    return p;
+}
+
+/* Energy per unit m L^2: theta'^2 / 2 + wn^2 (1 - cos theta), written with
+ * 2 sin^2(theta/2) so that it keeps its digits near the bottom. */
+double mm_dyn_pend_energy(const mm_dyn_pend *p, double th, double w)
+{
+    double s = sin(0.5 * th);
+    return 0.5 * w * w + 2 * p->wn * p->wn * s * s;
+}
+
+/* The period (eqs. 5 and 7) as a function of the distance d = |E - Es| of
+ * the energy per unit m L^2 from the separatrix's Es = 2 g/L, on the side
+ * the motion is on. */
+static double period_of_distance(const mm_dyn_pend *p, double d)
+{
+    double Es = 2 * p->wn * p->wn;
+    if (p->motion == MM_DYN_SWING)
+        return 4 * mm_elliptic_Kc(sqrt(d / Es)) / p->wn;
+    double E = Es + d;
+    return 2 * mm_elliptic_Kc(sqrt(d / E)) / (sqrt(E / Es) * p->wn);
+}
+
+/* |dT/dE| by a central difference in d, relative step 1e-4 (accurate to
+ * ~1e-8 relative: it only sizes a tolerance).  d comes from kc, which
+ * keeps its digits right up to the separatrix. */
+double mm_dyn_pend_period_sensitivity(const mm_dyn_pend *p)
+{
+    double Es = 2 * p->wn * p->wn;
+    double d = p->motion == MM_DYN_SWING ? Es * p->kc * p->kc : Es * p->kk * p->kk * p->kc * p->kc, h = 1e-4;
+    return fabs(period_of_distance(p, d * (1 + h)) - period_of_distance(p, d * (1 - h))) / (2 * h * d);
+}
+
+
+/* ---- dyn-double-pendulum ---------------------------------------------------- */
+
+/* The fastest rate of the motion [1/s]: the fast small-oscillation
+ * frequency, or the largest angular speed the energy allows:
+ * w^T M w <= 2 (E - V_min) with the smallest eigenvalue of M at least
+ * det M / trace M = m1 m2 l1^2 l2^2 / ((m1+m2) l1^2 + m2 l2^2). */
+double mm_dyn_dpend_rate(const mm_dpend *s, const double *y0)
+{
+    double ws, wf, E = mm_dpend_energy(s, y0, NULL);
+    mm_dpend_linear(s, &ws, &wf);
+    double Vmin = -(s->m1 + s->m2) * s->g * s->l1 - s->m2 * s->g * s->l2;
+    double lmin = s->m1 * s->m2 * s->l1 * s->l1 * s->l2 * s->l2 /
+                  ((s->m1 + s->m2) * s->l1 * s->l1 + s->m2 * s->l2 * s->l2);
+    return fmax(wf, sqrt(2 * fmax(E - Vmin, 0) / lmin));
+}
+
+/* DOP853 or DOPRI5 of Lagrange's equations (eq. 3) on the grid t[0..n-1];
+ * y receives n x 4 values. */
+int mm_dyn_dpend_run(const mm_dpend *s, const double *y0, double t_end, int n, const double *t,
+                     mm_ode_method m, double rtol, double *y, mm_ode_result *r, mm_error *err)
+{
+    mm_ode_problem prob = {.n = 4, .f = mm_dpend_rhs_lagrange, .params = (void *)s, .t0 = 0, .t_end = t_end,
+                           .y0 = y0};
+    mm_ode_options opt;
+    mm_ode_options_init(&opt);
+    opt.method = m;
+    opt.rtol = rtol;
+    opt.atol = rtol;
+    opt.max_steps = 2000000;
+    *r = (mm_ode_result){.t_out = t, .nout = (size_t)n, .y_out = y};
+    int rc = mm_ode_check(&prob, &opt, r, err);
+    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(4) : NULL;
+    if (rc == MM_OK)
+        rc = mm_ode_solve(&prob, &opt, w, r, err);
+    mm_ode_work_free(w);
+    return rc;
+}
+
+/* The distance of two states in the state space, angles in radians and
+ * angular velocities in units of the fast frequency. */
+double mm_dyn_dpend_distance(const double *a, const double *b, double wf)
+{
+    double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = (a[2] - b[2]) / wf, d3 = (a[3] - b[3]) / wf;
+    return sqrt(d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3);
+}
+
+
+double mm_dyn_sc_energy_bound(const mm_slider_crank *s, const double *q, const double *qd, const double *qr,
+                              const double *qdr, double tol_ref, double *bJ)
+{
+    /* |a^2 - b^2| / 2 <= max(|a|, |b|) |a - b|: exact, at any distance */
+    const double M[MM_SC_NQ] = {s->J_crank, s->m_rod, s->m_rod, s->J_rod, s->m_piston};
+    double b = fabs(s->torque) * fabs(q[0] - qr[0]);
+    for (int j = 0; j < MM_SC_NQ; j++)
+        b += M[j] * fmax(fabs(qd[j]), fabs(qdr[j])) * fabs(qd[j] - qdr[j]);
+    /* J(phi) w^2 / 2 - torque phi: (J_a - J_b) w_a^2 / 2 + J_b (w_a^2 - w_b^2) / 2 */
+    double dJ, Ja = mm_sc_inertia(s, q[0], NULL), Jb = mm_sc_inertia(s, qr[0], &dJ);
+    double w = fmax(fabs(qd[0]), fabs(qdr[0]));
+    *bJ = 0.5 * fabs(Ja - Jb) * qd[0] * qd[0] + Jb * w * fabs(qd[0] - qdr[0]) + fabs(s->torque) * fabs(q[0] - qr[0]);
+    /* the reference's own error: tol_ref on the crank angle and speed (absolute and relative) */
+    double e_ref = tol_ref * ((fabs(0.5 * dJ * w * w) + fabs(s->torque)) * (1 + fabs(qr[0])) + Jb * w * (1 + w));
+    *bJ += e_ref;
+    return b + e_ref;
 }

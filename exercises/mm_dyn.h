@@ -6,6 +6,8 @@
 #define MM_DYN_H
 
 #include "mm_exercise.h"
+#include "mm_multibody.h"
+#include "mm_ode.h"
 
 /* The decimal quantum of an animation drawn to the size `size` [m]: the
  * power of ten at or below size * 1e-5 (a thousandth of a pixel on a
@@ -23,5 +25,113 @@ void mm_dyn_round_shape(mm_shape *s, double q);
 /* The frame times of an animation: nf frames evenly over [0, t_show].
  * Cannot fail. */
 void mm_dyn_frame_times(mm_anim *a, double t_show);
+
+/* ---- dyn-robot-2link: a point-to-point move of the two-link arm -------------- */
+
+/* The move: joint angles from q0 to q0 + dq in time T by the quintic
+ * (quintic = 1) or cubic time law (robot_2link.md, eq. 2 and 3). */
+typedef struct mm_dyn_plan {
+    mm_robot2 arm;
+    int quintic;
+    double q0[2], dq[2], T;
+    double t_left;          /* forward simulation: when it left the path by 2 pi (or -1) */
+} mm_dyn_plan;
+
+/* The planned q, q', q'' at time t (clamped to [0, T]).  Cannot fail. */
+void mm_dyn_plan_at(const mm_dyn_plan *p, double t, double *q, double *qd, double *qdd);
+
+/* The joint torques that drive the planned move at time t (inverse
+ * dynamics, eq. 1).  Cannot fail. */
+void mm_dyn_plan_torque(const mm_dyn_plan *p, double t, double *tau);
+
+/* The open-loop forward dynamics under the planned torques (eq. 5), an
+ * mm_ode right-hand side: y = (q1, q2, q1', q2'), ctx a mm_dyn_plan.  While
+ * p->t_left < 0, leaving the path by 2 pi records the time there and
+ * returns MM_ENOCONV (the integration stops). */
+int mm_dyn_plan_forward_rhs(double t, const double *y, double *dy, void *ctx);
+
+/* A cheap upper estimate of the exponent by which the open-loop arm
+ * amplifies small errors over the move.  Cannot fail. */
+double mm_dyn_plan_growth(const mm_dyn_plan *p);
+
+/* The variational equations Phi' = J(t) Phi along the planned path, an
+ * mm_ode right-hand side of 16 values (Phi row-major); set p->t_left >= 0. */
+int mm_dyn_plan_variational_rhs(double t, const double *y, double *dy, void *ctx);
+
+/* The largest |tau_j| over the move, its time *t_at and an error estimate
+ * *err of the value.  Cannot fail. */
+double mm_dyn_plan_peak(const mm_dyn_plan *p, int j, double *t_at, double *err);
+
+/* ---- dyn-slider-crank and reading extremes off samples ---------------------- */
+
+/* The extremes *Jmin, *Jmax of the slider-crank's effective inertia J(phi)
+ * (slider_crank.md, eq. 5) over a turn.  Cannot fail. */
+void mm_dyn_sc_inertia_range(const mm_slider_crank *s, double *Jmin, double *Jmax);
+
+/* An estimate of the error of v[i] as the extreme of the samples v[0..n-1]:
+ * how far the parabola through v[i] and its neighbours moves it (0 at an
+ * end).  Cannot fail. */
+double mm_dyn_extreme_error(const double *v, int n, int i);
+
+/* How far the slider-crank's energy at the state (q, qd) can lie from its
+ * value at the reference state (qr, qdr): the kinetic energy minus the
+ * torque's work, bounded body by body; *bJ the same for J(phi) w^2 / 2
+ * minus the work in the crank's (phi, w).  Both exact bounds at any
+ * distance, plus what an error tol_ref (absolute and relative) of the
+ * reference's crank angle and speed can make (to first order).  Cannot
+ * fail. */
+double mm_dyn_sc_energy_bound(const mm_slider_crank *s, const double *q, const double *qd, const double *qr,
+                              const double *qdr, double tol_ref, double *bJ);
+
+/* ---- dyn-pendulum: the exact motion of the plane pendulum (pendulum.md) ----- */
+
+/* The kinds of motion; the fields of the closed form (eqs. 3-7). */
+enum { MM_DYN_SWING = 0, MM_DYN_SEPARATRIX = 1, MM_DYN_OVER = 2 };
+typedef struct mm_dyn_pend {
+    double L, g, wn;        /* wn = sqrt(g/L) */
+    double theta0, omega0;
+    int motion;
+    double k, kc;           /* SWING: modulus and its complement; OVER: of 1/k */
+    double kk;              /* OVER: the energy modulus k > 1 (kc, k then of 1/kk) */
+    double u0;              /* argument of the Jacobi functions at t = 0 */
+    double sg;              /* OVER: direction of the rotation */
+    double T, T0;           /* period (INFINITY on the separatrix), small-angle period */
+} mm_dyn_pend;
+
+/* The closed form of the pendulum of length L under g started at theta0
+ * with speed omega0: the motion, its moduli and period.  Cannot fail. */
+mm_dyn_pend mm_dyn_pend_init(double L, double g, double theta0, double omega0);
+
+/* The exact theta(t), and theta'(t) in *w (eqs. 4 and 6).  Cannot fail. */
+double mm_dyn_pend_exact(const mm_dyn_pend *p, double t, double *w);
+
+/* sin theta, exactly 0 at theta = pi (the double nearest pi as the
+ * parameter reads it: the inverted equilibrium).  Cannot fail. */
+double mm_dyn_sin_top(double th);
+
+/* Energy per unit m L^2: theta'^2 / 2 + wn^2 (1 - cos theta), keeping its
+ * digits near the bottom.  Cannot fail. */
+double mm_dyn_pend_energy(const mm_dyn_pend *p, double th, double w);
+
+/* |dT/dE|, the period's sensitivity to the energy per unit m L^2, by a
+ * central difference (~1e-8 relative: it sizes a tolerance).  Cannot fail. */
+double mm_dyn_pend_period_sensitivity(const mm_dyn_pend *p);
+
+/* ---- dyn-double-pendulum ------------------------------------------------------ */
+
+/* The fastest rate of the double pendulum's motion from y0 [1/s]: the fast
+ * small-oscillation frequency, or the largest angular speed its energy
+ * allows.  Cannot fail. */
+double mm_dyn_dpend_rate(const mm_dpend *s, const double *y0);
+
+/* Lagrange's equations (double_pendulum.md, eq. 3) integrated by method m
+ * at tolerance rtol from y0 over [0, t_end]; y receives the n x 4 states at
+ * t[0..n-1], *r the run's statistics.  Errors of mm_ode_solve. */
+int mm_dyn_dpend_run(const mm_dpend *s, const double *y0, double t_end, int n, const double *t,
+                     mm_ode_method m, double rtol, double *y, mm_ode_result *r, mm_error *err);
+
+/* The distance of two states, angles in radians and angular velocities in
+ * units of wf.  Cannot fail. */
+double mm_dyn_dpend_distance(const double *a, const double *b, double wf);
 
 #endif

@@ -87,25 +87,11 @@ static mm_dpend model_of(const mm_value *in)
     return (mm_dpend){.m1 = in[P_M1].x, .m2 = in[P_M2].x, .l1 = in[P_L1].x, .l2 = in[P_L2].x, .g = in[P_G].x};
 }
 
-/* The fastest rate of the motion [1/s]: the fast small-oscillation
- * frequency, or the largest angular speed the energy allows:
- * w^T M w <= 2 (E - V_min) with the smallest eigenvalue of M at least
- * det M / trace M = m1 m2 l1^2 l2^2 / ((m1+m2) l1^2 + m2 l2^2). */
-static double rate(const mm_dpend *s, const double *y0)
-{
-    double ws, wf, E = mm_dpend_energy(s, y0, NULL);
-    mm_dpend_linear(s, &ws, &wf);
-    double Vmin = -(s->m1 + s->m2) * s->g * s->l1 - s->m2 * s->g * s->l2;
-    double lmin = s->m1 * s->m2 * s->l1 * s->l1 * s->l2 * s->l2 /
-                  ((s->m1 + s->m2) * s->l1 * s->l1 + s->m2 * s->l2 * s->l2);
-    return fmax(wf, sqrt(2 * fmax(E - Vmin, 0) / lmin));
-}
-
 static int check(const mm_value *in, mm_error *err)
 {
     mm_dpend s = model_of(in);
     double y0[4] = {in[P_TH1].x, in[P_TH2].x, in[P_W1].x, in[P_W2].x}, t_end = in[P_TEND].x;
-    double r = rate(&s, y0);
+    double r = mm_dyn_dpend_rate(&s, y0);
     if (t_end * r > MAX_RADIANS)
         return mm_error_set(err, MM_ERANGE, "t_end",
                             "t_end = %g s spans %.3g radians of the fastest motion (rate %.4g 1/s); at most %g "
@@ -129,28 +115,6 @@ static int check(const mm_value *in, mm_error *err)
 }
 
 /* ---- runs ---------------------------------------------------------------------- */
-
-/* DOP853 or DOPRI5 of Lagrange's equations (eq. 3) on the grid t[0..n-1];
- * y receives n x 4 values. */
-static int run_lagrange(const mm_dpend *s, const double *y0, double t_end, int n, const double *t,
-                        mm_ode_method m, double rtol, double *y, mm_ode_result *r, mm_error *err)
-{
-    mm_ode_problem prob = {.n = 4, .f = mm_dpend_rhs_lagrange, .params = (void *)s, .t0 = 0, .t_end = t_end,
-                           .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = m;
-    opt.rtol = rtol;
-    opt.atol = rtol;
-    opt.max_steps = 2000000;
-    *r = (mm_ode_result){.t_out = t, .nout = (size_t)n, .y_out = y};
-    int rc = mm_ode_check(&prob, &opt, r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(4) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, r, err);
-    mm_ode_work_free(w);
-    return rc;
-}
 
 /* The symplectic run's observer: the energy error at every step, its
  * maximum over each half of the run, and the plotted samples. */
@@ -181,14 +145,6 @@ static int observe(long step, double t, const double *y, void *ctx)
     return 0;
 }
 
-/* The distance of two states in the state space, angles in radians and
- * angular velocities in units of the fast frequency. */
-static double distance(const double *a, const double *b, double wf)
-{
-    double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = (a[2] - b[2]) / wf, d3 = (a[3] - b[3]) / wf;
-    return sqrt(d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3);
-}
-
 /* ---- the animation ------------------------------------------------------------- */
 
 static int animate(const mm_dpend *s, double t_end, const double *y0, const double *y0b, mm_result *res,
@@ -196,7 +152,7 @@ static int animate(const mm_dpend *s, double t_end, const double *y0, const doub
 {
     double ws, wf, t_show;
     mm_dpend_linear(s, &ws, &wf);
-    int nf = mm_scene_frames(t_end, 2 * M_PI / rate(s, y0), &t_show);
+    int nf = mm_scene_frames(t_end, 2 * M_PI / mm_dyn_dpend_rate(s, y0), &t_show);
     if (nf > 120) {                            /* 5 s of play at 24 frames a second is enough to see */
         t_show *= 119.0 / (nf - 1);            /* the twins part; the answer stays small */
         nf = 120;
@@ -208,9 +164,9 @@ static int animate(const mm_dpend *s, double t_end, const double *y0, const doub
     mm_dyn_frame_times(a, t_show);
     mm_ode_result r;
     double te = a->t[nf - 1] > 0 ? a->t[nf - 1] : t_end;
-    int rc = run_lagrange(s, y0, te, nf, a->t, MM_ODE_DOP853, RTOL_TWIN, ya, &r, err);
+    int rc = mm_dyn_dpend_run(s, y0, te, nf, a->t, MM_ODE_DOP853, RTOL_TWIN, ya, &r, err);
     if (rc == MM_OK)
-        rc = run_lagrange(s, y0b, te, nf, a->t, MM_ODE_DOP853, RTOL_TWIN, yb, &r, err);
+        rc = mm_dyn_dpend_run(s, y0b, te, nf, a->t, MM_ODE_DOP853, RTOL_TWIN, yb, &r, err);
     if (rc != MM_OK)
         return rc;
     enum { NPATH = 400 };
@@ -280,9 +236,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     mm_linspace(0, t_end, n, s1->x);
     mm_ode_result rr, rd;
-    int rc = run_lagrange(&s, y0, t_end, n, s1->x, MM_ODE_DOP853, RTOL_REF, yr, &rr, err);
+    int rc = mm_dyn_dpend_run(&s, y0, t_end, n, s1->x, MM_ODE_DOP853, RTOL_REF, yr, &rr, err);
     if (rc == MM_OK)
-        rc = run_lagrange(&s, y0, t_end, n, s1->x, MM_ODE_DOPRI5, rtol, yd, &rd, err);
+        rc = mm_dyn_dpend_run(&s, y0, t_end, n, s1->x, MM_ODE_DOPRI5, rtol, yd, &rd, err);
     if (rc != MM_OK)
         return rc;
     double ref_drift = 0, dp_drift = 0, lh_worst = 0, lh_scale = 0;
@@ -322,7 +278,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* the symplectic run on Hamilton's equations, in (theta, p) */
     double yp0[4], scale[4];
     mm_dpend_to_momenta(&s, y0, yp0);
-    double pscale = (s.m1 + s.m2) * s.l1 * s.l1 * rate(&s, y0);
+    double pscale = (s.m1 + s.m2) * s.l1 * s.l1 * mm_dyn_dpend_rate(&s, y0);
     scale[0] = scale[1] = 1, scale[2] = scale[3] = pscale;
     mm_symp_problem sp = {.n = 4, .f = mm_dpend_rhs_hamilton, .params = &s, .t0 = 0, .t_end = t_end, .y0 = yp0,
                           .scale = scale};
@@ -358,7 +314,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method_stat(res, "symplectic_largest_energy_error", sy_drift);
 
     /* checks */
-    double steps = 8 + rate(&s, y0) * t_end;     /* DOP853 takes a few steps even over a short run */
+    double steps = 8 + mm_dyn_dpend_rate(&s, y0) * t_end;     /* DOP853 takes a few steps even over a short run */
     mm_res_check_abs(res, "energy of the reference run (DOP853, rtol 1e-10): largest relative error",
                      ref_drift, 0, 0.8 * RTOL_REF * steps);
     mm_check_residual(res, "Lagrange's equations vs Hamilton's: dp/dt = d(M w)/dt at every plotted state "
@@ -380,24 +336,24 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     ya = mm_res_alloc(res, (size_t)n * 4 * sizeof *ya);
     if (!ya)
         return MM_ENOMEM;
-    rc = run_lagrange(&s, y0, t_ly, n, ssep->x, MM_ODE_DOP853, RTOL_TWIN, ya, &rb, err);
+    rc = mm_dyn_dpend_run(&s, y0, t_ly, n, ssep->x, MM_ODE_DOP853, RTOL_TWIN, ya, &rb, err);
     if (rc != MM_OK)
         return rc;
-    rc = run_lagrange(&s, y0b, t_ly, n, ssep->x, MM_ODE_DOP853, RTOL_TWIN, yb, &rb, err);
+    rc = mm_dyn_dpend_run(&s, y0b, t_ly, n, ssep->x, MM_ODE_DOP853, RTOL_TWIN, yb, &rb, err);
     if (rc != MM_OK)
         return rc;
-    double d0 = distance(y0, y0b, wf);
+    double d0 = mm_dyn_dpend_distance(y0, y0b, wf);
     int i_lo = -1, i_hi = -1;
     double t_h = -1;
     for (int i = 0; i < n; i++) {
-        double d = distance(ya + 4 * i, yb + 4 * i, wf);
+        double d = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
         ssep->y[i] = fmax(d, DBL_EPSILON * d0);
         /* the exponential regime: from 1e3 d0 (past the start's transient) to 1e-3 (before saturation) */
         if (i_lo < 0 && d > 1e3 * d0)
             i_lo = i;
         if (i_hi < 0 && d > 1e-3) {
             i_hi = i;
-            double dp = distance(ya + 4 * (i - 1), yb + 4 * (i - 1), wf);
+            double dp = mm_dyn_dpend_distance(ya + 4 * (i - 1), yb + 4 * (i - 1), wf);
             /* log-linear interpolation between the two grid points */
             t_h = ssep->x[i - 1] + (ssep->x[i] - ssep->x[i - 1]) * log(1e-3 / dp) / log(d / dp);
         }
@@ -436,7 +392,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * regular motion (the twins stay together) over many periods, the second
      * half of the run may not exceed the first by more than the variation
      * between the regions the motion visits (x4) and round-off */
-    if (i_lo < 0 && t_end * rate(&s, y0) > 20 * 2 * M_PI)
+    if (i_lo < 0 && t_end * mm_dyn_dpend_rate(&s, y0) > 20 * 2 * M_PI)
         mm_res_check_abs(res, "symplectic energy error: largest over the second half vs over the first half",
                          ob.max_second, 0, 4 * ob.max_first + 64 * DBL_EPSILON * sqrt((double)N));
     if (dp_drift > 10 * sy_drift && t_end * wf > 200)

@@ -86,69 +86,9 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the arm moving, with the planned path of its tip"),
 };
 
-typedef struct plan {
-    mm_robot2 arm;
-    int quintic;
-    double q0[2], dq[2], T;
-    double t_left;          /* forward simulation: when it left the path by 2 pi (or -1) */
-} plan;
-
-static plan plan_of(const mm_value *in);
-
-/* The time law s(tau), tau = t/T, and its derivatives (eq. 2 and 3). */
-static void law(int quintic, double tau, double *s, double *ds, double *dds)
+static mm_dyn_plan plan_of(const mm_value *in)
 {
-    if (quintic) {
-        double u = 1 - tau;
-        *s = tau * tau * tau * (10 - 15 * tau + 6 * tau * tau);
-        *ds = 30 * tau * tau * u * u;
-        *dds = 60 * tau * u * (1 - 2 * tau);
-    } else {
-        *s = tau * tau * (3 - 2 * tau);
-        *ds = 6 * tau * (1 - tau);
-        *dds = 6 - 12 * tau;
-    }
-}
-
-/* The planned q, q', q'' at time t. */
-static void planned(const plan *p, double t, double *q, double *qd, double *qdd)
-{
-    double s, ds, dds;
-    law(p->quintic, fmin(fmax(t / p->T, 0), 1), &s, &ds, &dds);
-    for (int j = 0; j < 2; j++) {
-        q[j] = p->q0[j] + p->dq[j] * s;
-        qd[j] = p->dq[j] * ds / p->T;
-        qdd[j] = p->dq[j] * dds / (p->T * p->T);
-    }
-}
-
-static void torque_at(const plan *p, double t, double *tau)
-{
-    double q[2], qd[2], qdd[2];
-    planned(p, t, q, qd, qdd);
-    mm_robot2_inverse(&p->arm, q, qd, qdd, tau);          /* eq. (1) */
-}
-
-/* Forward dynamics driven by the planned torques: y = (q1, q2, q1', q2'). */
-static int forward_rhs(double t, const double *y, double *dy, void *ctx)
-{
-    plan *p = ctx;
-    double tau[2], q[2], qd[2], qdd[2];
-    planned(p, t, q, qd, qdd);
-    if (p->t_left < 0 && fmax(fabs(y[0] - q[0]), fabs(y[1] - q[1])) > 2 * M_PI) {
-        p->t_left = t;                                    /* it fell off the path: stop */
-        return MM_ENOCONV;
-    }
-    torque_at(p, t, tau);
-    dy[0] = y[2];
-    dy[1] = y[3];
-    mm_robot2_forward(&p->arm, y, y + 2, tau, dy + 2);   /* eq. (5) */
-    return 0;
-}
-
-static plan plan_of(const mm_value *in)
-{
-    plan p = {.arm = {.l1 = in[P_L1].x, .l2 = in[P_L2].x, .m1 = in[P_M1].x, .m2 = in[P_M2].x, .g = in[P_G].x},
+    mm_dyn_plan p = {.arm = {.l1 = in[P_L1].x, .l2 = in[P_L2].x, .m1 = in[P_M1].x, .m2 = in[P_M2].x, .g = in[P_G].x},
               .quintic = (int)in[P_TRAJ].x == 0, .T = in[P_T].x, .t_left = -1};
     p.q0[0] = in[P_Q10].x;
     p.q0[1] = in[P_Q20].x;
@@ -157,46 +97,12 @@ static plan plan_of(const mm_value *in)
     return p;
 }
 
-/* ---- how unstable the open-loop arm is along the path ---------------------------- */
-
-/* A cheap upper estimate of how unstable the open-loop arm is: the growth
- * rate of small errors at time t from the gravity stiffness (delta q'' =
- * -M^-1 dG/dq delta q: a positive eigenvalue mu gives e^(sqrt(mu) t), the
- * arm balancing above its joints) plus the joint speeds (the Coriolis and
- * centrifugal terms feed errors at about |q'|), integrated over the move by
- * Simpson's rule.  Used to bound the work before anything is integrated. */
-static double growth_rate(const plan *p, double t)
-{
-    double q[2], qd[2], qdd[2], M[4];
-    planned(p, t, q, qd, qdd);
-    const mm_robot2 *s = &p->arm;
-    mm_robot2_mass(s, q[1], M);
-    double a = (0.5 * s->m1 + s->m2) * s->g * s->l1, b = 0.5 * s->m2 * s->g * s->l2;
-    double s1 = sin(q[0]), s12 = sin(q[0] + q[1]);
-    double K[4] = {a * s1 + b * s12, b * s12, b * s12, b * s12};   /* -dG/dq */
-    double det = M[0] * M[3] - M[1] * M[2];
-    double A[4] = {(M[3] * K[0] - M[1] * K[2]) / det, (M[3] * K[1] - M[1] * K[3]) / det,
-                   (M[0] * K[2] - M[2] * K[0]) / det, (M[0] * K[3] - M[2] * K[1]) / det};
-    double tr = A[0] + A[3], dt = A[0] * A[3] - A[1] * A[2], disc = tr * tr / 4 - dt;
-    double mu = tr / 2 + sqrt(fmax(disc, 0));
-    return sqrt(fmax(mu, 0)) + fabs(qd[0]) + fabs(qd[1]);
-}
-
-static double growth_exponent(const plan *p)
-{
-    enum { NS = 64 };
-    double sum = 0;
-    for (int i = 0; i <= NS; i++)
-        sum += (i == 0 || i == NS ? 1 : i % 2 ? 4 : 2) * growth_rate(p, p->T * i / NS);
-    return sum * p->T / (3 * NS);
-}
-
 #define MAX_EXPONENT 36      /* e^36 = 4e15: past it an open-loop simulation is noise */
 
 static int check(const mm_value *in, mm_error *err)
 {
-    plan p = plan_of(in);
-    double E = growth_exponent(&p);
+    mm_dyn_plan p = plan_of(in);
+    double E = mm_dyn_plan_growth(&p);
     if (E > MAX_EXPONENT)
         return mm_error_set(err, MM_ERANGE, "T",
                             "along this move the arm balances so far above its joints, for so long, that an "
@@ -205,40 +111,11 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* The variational equations along the planned path: Phi' = J(t) Phi,
- * Phi(0) = I, with J the Jacobian of the forward dynamics (eq. 5) at the
- * planned state, by central differences.  y = Phi, 16 values row-major. */
-static int variational_rhs(double t, const double *y, double *dy, void *ctx)
-{
-    plan *p = ctx;
-    double q[2], qd[2], qdd[2], x[4], J[16];
-    planned(p, t, q, qd, qdd);
-    x[0] = q[0], x[1] = q[1], x[2] = qd[0], x[3] = qd[1];
-    for (int k = 0; k < 4; k++) {
-        double h = 1e-6 * (1 + fabs(x[k])), xp[4], xm[4], fp[4], fm[4];
-        for (int j = 0; j < 4; j++)
-            xp[j] = xm[j] = x[j];
-        xp[k] += h, xm[k] -= h;
-        forward_rhs(t, xp, fp, ctx);
-        forward_rhs(t, xm, fm, ctx);
-        for (int i = 0; i < 4; i++)
-            J[4 * i + k] = (fp[i] - fm[i]) / (2 * h);
-    }
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) {
-            double v = 0;
-            for (int k = 0; k < 4; k++)
-                v += J[4 * i + k] * y[4 * k + j];
-            dy[4 * i + j] = v;
-        }
-    return 0;
-}
-
 /* How much the open-loop arm amplifies small errors over the move: the
  * largest norm ||Phi(t)||_inf (max row sum) of the fundamental matrix on a
  * grid of 33 times (an estimate: an error made at t0 > 0 grows by
  * Phi(t) Phi(t0)^-1, which is smaller while errors only grow). */
-static int amplification(const plan *p, mm_result *res, double *A, mm_error *err)
+static int amplification(const mm_dyn_plan *p, mm_result *res, double *A, mm_error *err)
 {
     enum { NA = 33 };
     double t[NA], y0[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
@@ -246,9 +123,9 @@ static int amplification(const plan *p, mm_result *res, double *A, mm_error *err
     if (!y)
         return MM_ENOMEM;
     mm_linspace(0, p->T, NA, t);
-    plan pp = *p;
+    mm_dyn_plan pp = *p;
     pp.t_left = 1;                                        /* no divergence test here */
-    mm_ode_problem prob = {.n = 16, .f = variational_rhs, .params = &pp, .t0 = 0, .t_end = p->T, .y0 = y0};
+    mm_ode_problem prob = {.n = 16, .f = mm_dyn_plan_variational_rhs, .params = &pp, .t0 = 0, .t_end = p->T, .y0 = y0};
     mm_ode_options opt;
     mm_ode_options_init(&opt);
     opt.method = MM_ODE_DOP853;
@@ -274,74 +151,21 @@ static int amplification(const plan *p, mm_result *res, double *A, mm_error *err
     return MM_OK;
 }
 
-/* ---- the largest |tau_j| ------------------------------------------------------ */
-
-typedef struct peak_ctx {
-    const plan *p;
-    int j;
-} peak_ctx;
-
-static double abs_tau(const peak_ctx *c, double t)
-{
-    double tau[2];
-    torque_at(c->p, t, tau);
-    return fabs(tau[c->j]);
-}
-
-/* Sample on nt points, then golden-section search around the best sample.
- * The maximum found is attained (a lower bound); the true one exceeds it by
- * at most |tau''| w^2 / 8 over the final bracket w, estimated from second
- * differences. */
-static double peak(const plan *p, int j, double *t_at, double *err)
-{
-    peak_ctx c = {p, j};
-    enum { NT = 2001 };
-    int best = 0;
-    double vbest = -1;
-    for (int i = 0; i < NT; i++) {
-        double v = abs_tau(&c, p->T * i / (NT - 1));
-        if (v > vbest)
-            vbest = v, best = i;
-    }
-    double a = p->T * (best > 0 ? best - 1 : 0) / (NT - 1), b = p->T * (best < NT - 1 ? best + 1 : NT - 1) / (NT - 1);
-    const double r = 0.6180339887498949;
-    double x1 = b - r * (b - a), x2 = a + r * (b - a), f1 = abs_tau(&c, x1), f2 = abs_tau(&c, x2);
-    for (int it = 0; it < 80 && b - a > 4 * DBL_EPSILON * fmax(fabs(a), fabs(b)); it++) {
-        if (f1 > f2) {
-            b = x2, x2 = x1, f2 = f1;
-            x1 = b - r * (b - a), f1 = abs_tau(&c, x1);
-        } else {
-            a = x1, x1 = x2, f1 = f2;
-            x2 = a + r * (b - a), f2 = abs_tau(&c, x2);
-        }
-    }
-    double t = f1 > f2 ? x1 : x2, v = fmax(f1, fmax(f2, vbest));
-    if (vbest >= fmax(f1, f2))
-        t = p->T * best / (NT - 1);                /* an end point or a kink of |tau| */
-    double h = 1e-3 * p->T, tm = fmax(t - h, 0), tp = fmin(t + h, p->T);
-    double curv = fabs(abs_tau(&c, tp) - 2 * abs_tau(&c, 0.5 * (tm + tp)) + abs_tau(&c, tm)) /
-                  (0.25 * (tp - tm) * (tp - tm));
-    double w = fmax(b - a, 4 * DBL_EPSILON * p->T);
-    *t_at = t;
-    *err = curv * w * w / 8 + 4 * DBL_EPSILON * v;
-    return v;
-}
-
 /* ---- the stretched arm on the way --------------------------------------------- */
 
 /* q2(t) - 0 for Brent */
 static int q2_of(double t, double *f, void *ctx)
 {
-    const plan *p = ctx;
+    const mm_dyn_plan *p = ctx;
     double q[2], qd[2], qdd[2];
-    planned(p, t, q, qd, qdd);
+    mm_dyn_plan_at(p, t, q, qd, qdd);
     *f = q[1];
     return 0;
 }
 
 /* ---- the animation ------------------------------------------------------------- */
 
-static int animate(const plan *p, mm_result *res)
+static int animate(const mm_dyn_plan *p, mm_result *res)
 {
     double t_show;
     int nf = mm_scene_frames(p->T, p->T / 5, &t_show);
@@ -363,14 +187,14 @@ static int animate(const plan *p, mm_result *res)
     path->style = "highlight";
     for (int k = 0; k < NP; k++) {
         double qq[2], qd[2], qdd[2], x[3], y[3];
-        planned(p, p->T * k / (NP - 1), qq, qd, qdd);
+        mm_dyn_plan_at(p, p->T * k / (NP - 1), qq, qd, qdd);
         mm_robot2_points(&p->arm, qq, x, y);
         path->x[k] = x[2], path->y[k] = y[2];
     }
     elbow->radius = tip->radius = 0.025 * reach;
     for (int f = 0; f < nf; f++) {
         double qq[2], qd[2], qdd[2], x[3], y[3];
-        planned(p, a->t[f], qq, qd, qdd);
+        mm_dyn_plan_at(p, a->t[f], qq, qd, qdd);
         mm_robot2_points(&p->arm, qq, x, y);
         for (int k = 0; k < 3; k++)
             arm->x[3 * f + k] = x[k], arm->y[3 * f + k] = y[k];
@@ -392,7 +216,7 @@ static int animate(const plan *p, mm_result *res)
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
-    plan p = plan_of(in);
+    mm_dyn_plan p = plan_of(in);
     const mm_robot2 *s = &p.arm;
     int n = (int)in[P_POINTS].x;
     /* the elbow's range: at q2 = +-pi link 2 would lie on link 1 */
@@ -415,7 +239,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_linspace(0, p.T, n, sq1->x);
     for (int i = 0; i < n; i++) {
         double t = sq1->x[i], q[2], qd[2], qdd[2], tau[2], zero[2] = {0, 0}, tst[2];
-        planned(&p, t, q, qd, qdd);
+        mm_dyn_plan_at(&p, t, q, qd, qdd);
         mm_robot2_inverse(s, q, qd, qdd, tau);
         mm_robot2_inverse(s, q, zero, zero, tst);
         sq2->x[i] = st1->x[i] = st2->x[i] = ss1->x[i] = ss2->x[i] = sdj->x[i] = t;
@@ -425,7 +249,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         sdj->y[i] = s->l1 * s->l2 * sin(q[1]);
     }
 
-    double t1, t2, e1, e2, T1 = peak(&p, 0, &t1, &e1), T2 = peak(&p, 1, &t2, &e2);
+    double t1, t2, e1, e2, T1 = mm_dyn_plan_peak(&p, 0, &t1, &e1), T2 = mm_dyn_plan_peak(&p, 1, &t2, &e2);
     mm_res_scalar_err(res, O_TAU1_MAX, T1, e1, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_TAU2_MAX, T2, e2, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_T_TAU1, t1, 1e-6 * p.T, MM_ERR_ESTIMATE);
@@ -450,7 +274,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             /* an exact zero of the computed q2(t) ends Brent early: then the
              * root is off by the rounding of q2 over its speed there */
             double q[2], qd[2], qdd[2];
-            planned(&p, ts, q, qd, qdd);
+            mm_dyn_plan_at(&p, ts, q, qd, qdd);
             double e = fx == 0 ? 4 * DBL_EPSILON * (fabs(qa) + fabs(qb)) / fabs(qd[1]) : width;
             mm_res_scalar_err(res, O_T_SING, ts, e + 1e-14 * p.T, MM_ERR_BOUND);
         } else {
@@ -486,7 +310,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double a = p.T * k / 64, b = p.T * (k + 1) / 64;
         for (int i = 0; i < 5; i++) {
             double t = 0.5 * (a + b) + 0.5 * (b - a) * gx[i], q[2], qd[2], qdd[2], tau[2];
-            planned(&p, t, q, qd, qdd);
+            mm_dyn_plan_at(&p, t, q, qd, qdd);
             mm_robot2_inverse(s, q, qd, qdd, tau);
             double pw = tau[0] * qd[0] + tau[1] * qd[1];
             work += 0.5 * (b - a) * gw[i] * pw;
@@ -507,7 +331,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!y)
         return MM_ENOMEM;
     double y0[4] = {p.q0[0], p.q0[1], 0, 0};
-    mm_ode_problem prob = {.n = 4, .f = forward_rhs, .params = &p, .t0 = 0, .t_end = p.T, .y0 = y0};
+    mm_ode_problem prob = {.n = 4, .f = mm_dyn_plan_forward_rhs, .params = &p, .t0 = 0, .t_end = p.T, .y0 = y0};
     mm_ode_options opt;
     mm_ode_options_init(&opt);
     opt.method = MM_ODE_DOP853;

@@ -93,39 +93,6 @@ static mm_slider_crank mech_of(const mm_value *in)
                              .J_rod = in[P_JR].x, .m_piston = in[P_MP].x, .torque = in[P_TORQUE].x};
 }
 
-/* The extremes of the effective inertia J(phi) (eq. 5) over a turn: 720
- * samples, each refined by golden sections.  J is even about 0 and pi, so
- * half a turn is enough. */
-static void inertia_range(const mm_slider_crank *s, double *Jmin, double *Jmax)
-{
-    enum { NS = 360 };
-    *Jmin = INFINITY, *Jmax = 0;
-    for (int sign = -1; sign <= 1; sign += 2) {
-        int best = 0;
-        double vb = -INFINITY;
-        for (int i = 0; i <= NS; i++) {
-            double v = sign * mm_sc_inertia(s, M_PI * i / NS, NULL);
-            if (v > vb)
-                vb = v, best = i;
-        }
-        double a = M_PI * fmax(best - 1, 0) / NS, b = M_PI * fmin(best + 1, NS) / NS, g = 0.6180339887498949;
-        double x1 = b - g * (b - a), x2 = a + g * (b - a);
-        double f1 = sign * mm_sc_inertia(s, x1, NULL), f2 = sign * mm_sc_inertia(s, x2, NULL);
-        for (int it = 0; it < 60; it++) {
-            if (f1 > f2) {
-                b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = sign * mm_sc_inertia(s, x1, NULL);
-            } else {
-                a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = sign * mm_sc_inertia(s, x2, NULL);
-            }
-        }
-        double v = fmax(vb, fmax(f1, f2)) * sign;
-        if (sign < 0)
-            *Jmin = v;
-        else
-            *Jmax = v;
-    }
-}
-
 /* A bound of the crank speed over the run from the energy (eq. 6): with
  * J >= Jmin, J w^2 / 2 <= J0 w0^2 / 2 + |torque| w_max t. */
 static double speed_bound(const mm_slider_crank *s, double w0, double t_end, double Jmin)
@@ -142,7 +109,7 @@ static int check(const mm_value *in, mm_error *err)
                             "the rod (l = %g m) must be longer than the crank (r = %g m), by 5 %% at least, or the "
                             "piston cannot follow a full turn: make l at least %.4g m", s.l, s.r, 1.05 * s.r);
     double Jmin, Jmax;
-    inertia_range(&s, &Jmin, &Jmax);
+    mm_dyn_sc_inertia_range(&s, &Jmin, &Jmax);
     double w = speed_bound(&s, in[P_OMEGA0].x, in[P_TEND].x, Jmin), rev = w * in[P_TEND].x / (2 * M_PI);
     if (rev > MAX_REV)
         return mm_error_set(err, MM_ERANGE, "t_end",
@@ -229,16 +196,6 @@ static int animate(const mm_slider_crank *s, int partition, int ny, double t_end
     return MM_OK;
 }
 
-/* The error of reading an extreme off the samples: the parabola through
- * the best sample and its neighbours moves it by this much (an estimate). */
-static double extreme_error(const double *v, int n, int i)
-{
-    if (i <= 0 || i >= n - 1)
-        return 0;                                   /* at an end of the run: the run's own value */
-    double c = 2 * v[i] - v[i - 1] - v[i + 1], d = v[i + 1] - v[i - 1];
-    return c != 0 ? d * d / (8 * fabs(c)) : 0;
-}
-
 /* ---- solve ------------------------------------------------------------------------ */
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -249,7 +206,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_sc_system sys = {.sc = s, .alpha = alpha, .beta = alpha};
 
     double J0 = mm_sc_inertia(&s, 0, NULL), Jmin, Jmax;
-    inertia_range(&s, &Jmin, &Jmax);
+    mm_dyn_sc_inertia_range(&s, &Jmin, &Jmax);
     mm_res_scalar(res, O_J0, J0);
     mm_res_scalar_err(res, O_JMIN, Jmin, 1e-14 * Jmax, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_JMAX, Jmax, 1e-14 * Jmax, MM_ERR_ESTIMATE);
@@ -376,8 +333,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             ihi = i;
     }
     double fl = 1e-12 * fmax(fabs(whi), fabs(wlo));            /* the reference's own error */
-    double elo = fabs(wlo - rlo) + extreme_error(so->y, n, ilo) + fl;
-    double ehi = fabs(whi - rhi) + extreme_error(so->y, n, ihi) + fl;
+    double elo = fabs(wlo - rlo) + mm_dyn_extreme_error(so->y, n, ilo) + fl;
+    double ehi = fabs(whi - rhi) + mm_dyn_extreme_error(so->y, n, ihi) + fl;
     mm_res_scalar_err(res, O_WMIN, wlo, elo, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_WMAX, whi, ehi, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_WEND, so->y[n - 1], fabs(so->y[n - 1] - yref[2 * n - 1]) + fl, MM_ERR_ESTIMATE);
@@ -389,7 +346,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar_err(res, O_REV, phi_end / (2 * M_PI),
                       (fabs(phi_end - yref[2 * (n - 1)]) + 1e-12 * fabs(phi_end)) / (2 * M_PI), MM_ERR_ESTIMATE);
     /* the joint forces of the reference run, for the error of their maxima */
-    double ra = 0, rb = 0, rn = 0;
+    /* the reference's error: its tolerance at every step it took, added up */
+    double ra = 0, rb = 0, rn = 0, eb = 0, ebJ = 0, tol_ref = orf.rtol * (double)rref.n_accepted;
     int ia = 0, ib = 0, in_ = 0;
     double *absn = mm_res_alloc(res, (size_t)n * sizeof *absn);
     if (!absn)
@@ -400,6 +358,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (mm_sc_accel(&s, q, qd, 0, 0, qdd, lam) != MM_OK)
             return mm_error_set(err, MM_ESINGULAR, "l", "the constraints became dependent: the rod stood vertical");
         ra = fmax(ra, hypot(lam[0], lam[1])), rb = fmax(rb, hypot(lam[2], lam[3])), rn = fmax(rn, fabs(lam[3]));
+        double qm[MM_SC_NQ], qdm[MM_SC_NQ], bJ;
+        state_at(&s, partition, y + (size_t)i * (size_t)ny, qm, qdm);
+        eb = fmax(eb, mm_dyn_sc_energy_bound(&s, qm, qdm, q, qd, tol_ref, &bJ));
+        ebJ = fmax(ebJ, bJ);
         absn[i] = fabs(sn->y[i]);
         if (sfa->y[i] > sfa->y[ia])
             ia = i;
@@ -408,22 +370,23 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (absn[i] > absn[in_])
             in_ = i;
     }
-    mm_res_scalar_err(res, O_FMAX_A, fa_max, fabs(fa_max - ra) + extreme_error(sfa->y, n, ia) + 1e-12 * fa_max,
+    mm_res_scalar_err(res, O_FMAX_A, fa_max, fabs(fa_max - ra) + mm_dyn_extreme_error(sfa->y, n, ia) + 1e-12 * fa_max,
                       MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_FMAX_B, fb_max, fabs(fb_max - rb) + extreme_error(sfb->y, n, ib) + 1e-12 * fb_max,
+    mm_res_scalar_err(res, O_FMAX_B, fb_max, fabs(fb_max - rb) + mm_dyn_extreme_error(sfb->y, n, ib) + 1e-12 * fb_max,
                       MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_NMAX, n_max, fabs(n_max - rn) + extreme_error(absn, n, in_) + 1e-12 * fb_max,
+    mm_res_scalar_err(res, O_NMAX, n_max, fabs(n_max - rn) + mm_dyn_extreme_error(absn, n, in_) + 1e-12 * fb_max,
                       MM_ERR_ESTIMATE);
 
     double rad = 1 + fabs(y[(size_t)(n - 1) * (size_t)ny]);
-    /* each step errs by about rtol of the state; the errors add up over the
-     * radians turned, and more where the inertia J(phi) varies more (the
-     * constants cover every case seen in the parameter sweeps, eq. 8) */
-    double grow = RTOL * rad * Jmax / Jmin;
+    /* the energy error the run's measured state error can make (eq. 8): the
+     * gradient of the energy times the distance from the reference run plus
+     * the reference's own error, doubled, and a few eps of the energy for
+     * its round-off */
+    double floor_E = 64 * DBL_EPSILON * Escale;
     mm_res_check_abs(res, "energy balance: kinetic energy - T0 - torque (phi - phi0), worst point [J]", Eworst, 0,
-                     8 * grow * Escale);
+                     2 * eb + floor_E);
     mm_res_check_abs(res, "J(phi) w^2 / 2 with the closed-form inertia (eq. 5) vs T0 + torque (phi - phi0) [J]",
-                     TJ_worst, 0, 8 * grow * Escale);
+                     TJ_worst, 0, 2 * ebJ + floor_E);
     mm_check_residual(res, "joint forces: bearing + guide forces vs the rate of momentum [N] "
                            "(scale: sum of the forces and inertia forces)", mom_worst, mom_scale, 16);
     if (partition)

@@ -348,7 +348,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     mm_res_scalar(res, O_DF, fs / (double)n);
     mm_res_scalar(res, O_WINDOW, (double)n / fs);
-    mm_res_scalar_err(res, O_MAXERR, max_err / X0, 64 * DBL_EPSILON * log2((double)n), MM_ERR_BOUND);
+    /* its rounding, relative to X(0): the FFT's, and the phases' 2 pi f t_c
+     * and 2 pi f t0 up to the band edge (the same terms the band check
+     * allows each bin; a script that forms exp(-2 pi i f t_c) without
+     * reducing f t_c lands that far away: 1.6e-12 seen where the FFT's
+     * term alone said 1.1e-13) */
+    double maxerr_err = 64 * DBL_EPSILON * log2((double)n) +
+                        8 * M_PI * DBL_EPSILON * f_band * (fabs(tc) + fabs(t0) + dt);
+    mm_res_scalar_err(res, O_MAXERR, max_err / X0, maxerr_err, MM_ERR_BOUND);
     mm_res_scalar(res, O_BAND, f_band);
 
     /* ---- checks ---- */

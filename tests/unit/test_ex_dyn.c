@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "mm_api.h"
+#include "mm_dyn.h"
 #include "mm_pipeline.h"
 
 static const cJSON *find(const cJSON *doc, const char *list, const char *name)
@@ -249,6 +250,118 @@ static void robot_defaults_should_start_from_the_static_torques(void **state)
     cJSON_Delete(d);
 }
 
+/* issue 10: a short run of a short pendulum plotted on a fine grid erred
+ * 1.14 times the step term of eq. (8) (the dense output between the few
+ * steps adds its own error): the check failed on a valid request.  The
+ * tolerance now allows 1.5 times it, and stays within 100x of the error
+ * at the defaults. */
+static void pendulum_short_run_on_a_fine_grid_should_pass_its_trajectory_check(void **state)
+{
+    (void)state;
+    const char *name = "theta(t): DOP853 vs the exact solution in Jacobi functions, worst point [rad]";
+    cJSON *d = solve_ok("dyn-pendulum", "L=0.00167503&g=10.4317&theta0=0.412348&t_end=0.0285716&"
+                                        "omega0=-29.7686&points=2016");
+    cJSON_Delete(d);
+    d = solve_ok("dyn-pendulum", "");
+    const cJSON *c = find(d, "checks", name);
+    assert_non_null(c);
+    double e = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
+    assert_true(e > 0 && cJSON_GetObjectItem(c, "tolerance")->valuedouble <= 100 * e);
+    cJSON_Delete(d);
+}
+
+/* ---- the chapter's shared code (exercises/mm_dyn.c) ------------------------------- */
+
+static void dyn_plan_should_start_and_end_at_rest_and_drive_the_planned_acceleration(void **state)
+{
+    (void)state;
+    for (int quintic = 0; quintic <= 1; quintic++) {
+        mm_dyn_plan p = {.arm = {.l1 = 1, .l2 = 0.7, .m1 = 3, .m2 = 2, .g = 9.81}, .quintic = quintic,
+                         .q0 = {0.3, -0.4}, .dq = {1.1, 0.9}, .T = 2, .t_left = -1};
+        double q[2], qd[2], qdd[2];
+        mm_dyn_plan_at(&p, 0, q, qd, qdd);
+        check_abs(q[0], 0.3, 0, "q1(0) = q10 exactly");
+        check_abs(qd[0] + qd[1], 0, 0, "at rest at t = 0");
+        mm_dyn_plan_at(&p, 2, q, qd, qdd);
+        check_rel(q[1], -0.4 + 0.9, 4 * DBL_EPSILON, "q2(T) = q21");
+        check_abs(qd[0] + qd[1], 0, 1e-15, "at rest at t = T");
+        /* forward dynamics under the inverse-dynamics torques gives back the
+         * planned acceleration: two different routines of mm_multibody */
+        double y[4], dy[4], t = 0.7;
+        mm_dyn_plan_at(&p, t, q, qd, qdd);
+        y[0] = q[0], y[1] = q[1], y[2] = qd[0], y[3] = qd[1];
+        assert_int_equal(mm_dyn_plan_forward_rhs(t, y, dy, &p), 0);
+        check_abs(dy[2], qdd[0], 1e-12, "forward(inverse(qdd)) = qdd, shoulder (round-off of a 2x2 solve)");
+        check_abs(dy[3], qdd[1], 1e-12, "forward(inverse(qdd)) = qdd, elbow");
+        /* the planned speed is the derivative of the planned angle */
+        double qa[2], qb[2], h = 1e-5;
+        mm_dyn_plan_at(&p, t - h, qa, qd, qdd);
+        mm_dyn_plan_at(&p, t + h, qb, qd, qdd);
+        mm_dyn_plan_at(&p, t, q, qd, qdd);
+        check_abs((qb[0] - qa[0]) / (2 * h), qd[0], 1e-8, "q1' = dq1/dt (central difference, h^2 error)");
+    }
+}
+
+static void dyn_pendulum_closed_form_should_reduce_to_the_small_swing(void **state)
+{
+    (void)state;
+    /* theta0 = 1e-3: theta = theta0 cos(wn t) to theta0^3, T = T0 (1 + theta0^2 / 16) */
+    double th0 = 1e-3;
+    mm_dyn_pend p = mm_dyn_pend_init(2, 9.81, th0, 0);
+    assert_int_equal(p.motion, MM_DYN_SWING);
+    check_rel(p.T, p.T0 * (1 + th0 * th0 / 16), 1e-12, "T = T0 (1 + theta0^2/16 + O(theta0^4))");
+    for (int i = 0; i <= 10; i++) {
+        double w, t = 0.37 * i, th = mm_dyn_pend_exact(&p, t, &w);
+        check_abs(th, th0 * cos(p.wn * t), th0 * th0 * th0, "theta(t) = theta0 cos(wn t) + O(theta0^3)");
+    }
+    check_abs(mm_dyn_sin_top(M_PI), 0, 0, "sin at the top is exactly 0");
+    /* the energy is kept by the exact motion (a large swing) */
+    mm_dyn_pend big = mm_dyn_pend_init(1, 9.81, 2.5, 0.3);
+    double w0, th = mm_dyn_pend_exact(&big, 0, &w0), E0 = mm_dyn_pend_energy(&big, th, w0);
+    check_rel(th, 2.5, 1e-14, "theta(0) = theta0");
+    for (int i = 1; i <= 10; i++) {
+        double w, thi = mm_dyn_pend_exact(&big, 0.41 * i, &w);
+        check_rel(mm_dyn_pend_energy(&big, thi, w), E0, 1e-13, "energy conserved by the closed form");
+    }
+}
+
+static void dyn_slider_crank_energy_bound_should_bound_the_energy_difference(void **state)
+{
+    (void)state;
+    mm_slider_crank s = {.r = 0.1, .l = 0.4, .J_crank = 0.05, .m_rod = 1, .J_rod = 0.015, .m_piston = 1,
+                         .torque = 20};
+    srand(7);
+    for (int k = 0; k < 200; k++) {
+        double phi = 6.3 * rand() / RAND_MAX, w = 100 * rand() / RAND_MAX - 50;
+        double dphi = 1e-2 * (rand() / (double)RAND_MAX - 0.5), dw = 1 * (rand() / (double)RAND_MAX - 0.5);
+        double q[MM_SC_NQ], qd[MM_SC_NQ], qr[MM_SC_NQ], qdr[MM_SC_NQ], bJ;
+        mm_sc_assemble(&s, phi + dphi, w + dw, q, qd);
+        mm_sc_assemble(&s, phi, w, qr, qdr);
+        double b = mm_dyn_sc_energy_bound(&s, q, qd, qr, qdr, 0, &bJ);
+        double dE = fabs(mm_sc_kinetic(&s, q, qd) - s.torque * q[0] - mm_sc_kinetic(&s, qr, qdr) + s.torque * qr[0]);
+        double JA = mm_sc_inertia(&s, q[0], NULL), JB = mm_sc_inertia(&s, qr[0], NULL);
+        double dEJ = fabs(0.5 * JA * qd[0] * qd[0] - s.torque * q[0] - 0.5 * JB * qdr[0] * qdr[0] + s.torque * qr[0]);
+        /* exact bounds; 1e-12: the round-off of the energies (tens of J) */
+        assert_true(dE <= b + 1e-12);
+        assert_true(dEJ <= bJ + 1e-12);
+    }
+}
+
+static void dyn_extreme_error_should_find_the_vertex_of_a_sampled_parabola(void **state)
+{
+    (void)state;
+    /* v = 5 - (x - 0.3)^2 sampled at x = 0, 0.25, ..., 1: the parabola
+     * through three samples is v itself, so the estimate is exact */
+    double v[5];
+    for (int i = 0; i < 5; i++) {
+        double x = 0.25 * i;
+        v[i] = 5 - (x - 0.3) * (x - 0.3);
+    }
+    /* best sample x = 0.25 (i = 1); the vertex 5 is above it by 0.05^2 */
+    check_abs(mm_dyn_extreme_error(v, 5, 1), 0.05 * 0.05, 1e-15, "the parabola's vertex above the best sample");
+    check_abs(mm_dyn_extreme_error(v, 5, 0), 0, 0, "an end point: the run's own value");
+}
+
 /* ---- dyn-slider-crank -------------------------------------------------------------- */
 
 static void slider_crank_should_coast_through_its_dead_centres(void **state)
@@ -299,6 +412,33 @@ static void slider_crank_with_a_torque_should_gain_its_work(void **state)
     cJSON_Delete(a.doc);
 }
 
+/* issue 10: the energy checks' tolerance was 1260 times the error made at
+ * the defaults.  Now it is built from the run's distance to the reference
+ * run and the reference's own tolerance: within 100x of the error at the
+ * defaults (48x measured), and it still holds where both runs take one
+ * identical step (the reference's tolerance is then the whole bound). */
+static void slider_crank_energy_tolerance_should_be_within_100x_of_its_error(void **state)
+{
+    (void)state;
+    static const char *const names[] = {
+        "energy balance: kinetic energy - T0 - torque (phi - phi0), worst point [J]",
+        "J(phi) w^2 / 2 with the closed-form inertia (eq. 5) vs T0 + torque (phi - phi0) [J]"};
+    cJSON *d = solve_ok("dyn-slider-crank", "");
+    for (int k = 0; k < 2; k++) {
+        const cJSON *c = find(d, "checks", names[k]);
+        assert_non_null(c);
+        double e = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
+        double tol = cJSON_GetObjectItem(c, "tolerance")->valuedouble;
+        assert_true(e > 0 && tol <= 100 * e);
+    }
+    cJSON_Delete(d);
+    /* one step covers the whole run in both runs: passed, not failed */
+    d = solve_ok("dyn-slider-crank", "r=0.149639&l=0.743729&J_crank=0.00894655&m_rod=0.0328282&J_rod=85.151&"
+                                     "m_piston=0.157691&torque=236.745&omega0=-4.69888&t_end=0.00639697&"
+                                     "method=partitioning&rtol=1.35641e-07&points=18");
+    cJSON_Delete(d);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -306,12 +446,18 @@ int main(void)
         cmocka_unit_test(pendulum_at_the_separatrix_should_give_no_period_and_stay_up),
         cmocka_unit_test(pendulum_just_below_the_separatrix_should_have_the_logarithmic_period),
         cmocka_unit_test(pendulum_pushed_over_the_top_should_turn),
+        cmocka_unit_test(pendulum_short_run_on_a_fine_grid_should_pass_its_trajectory_check),
         cmocka_unit_test(double_pendulum_energy_over_1000_periods_should_stay_bounded_only_when_symplectic),
         cmocka_unit_test(double_pendulum_defaults_should_be_chaotic),
         cmocka_unit_test(robot_commanded_out_of_reach_should_say_which_joint),
         cmocka_unit_test(robot_defaults_should_start_from_the_static_torques),
+        cmocka_unit_test(dyn_plan_should_start_and_end_at_rest_and_drive_the_planned_acceleration),
+        cmocka_unit_test(dyn_pendulum_closed_form_should_reduce_to_the_small_swing),
+        cmocka_unit_test(dyn_slider_crank_energy_bound_should_bound_the_energy_difference),
+        cmocka_unit_test(dyn_extreme_error_should_find_the_vertex_of_a_sampled_parabola),
         cmocka_unit_test(slider_crank_should_coast_through_its_dead_centres),
         cmocka_unit_test(slider_crank_with_a_torque_should_gain_its_work),
+        cmocka_unit_test(slider_crank_energy_tolerance_should_be_within_100x_of_its_error),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -158,6 +158,21 @@ static void coulomb_should_stop_once_where_static_friction_holds(void **state)
     cJSON_Delete(d);
 }
 
+/* The regression: 1902 arcs of 7.9 m each made the same ~9e-13 relative
+ * error at rtol 1e-10 and 1e-12 alike, so a whole second run at rtol/100
+ * called x_final good to 2.5e-10 m where it was 7.3e-9 m off (the energy
+ * check 17 times over).  Each arc is now checked against itself at rtol
+ * 1e-14 and the errors summed; all checks must pass here. */
+static void coulomb_long_decay_should_bound_its_error_arc_by_arc(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-coulomb", "m=0.0529352356745823&k=0.048100184818084014&mu=0.0042567983946563059"
+                                       "&g=0.44454942295444166&x0=0.079144453195678643&v0=7.5506910382631567"
+                                       "&points=376");
+    assert_int_equal((int)scalar(d, "half_cycles"), 1902);
+    cJSON_Delete(d);
+}
+
 static void coulomb_inside_the_band_should_never_move(void **state)
 {
     (void)state;
@@ -395,6 +410,7 @@ int main(void)
         cmocka_unit_test(critical_damping_should_be_continuous),
         cmocka_unit_test(newmark_should_fall_back_to_dop853_for_critical_damping),
         cmocka_unit_test(coulomb_should_stop_once_where_static_friction_holds),
+        cmocka_unit_test(coulomb_long_decay_should_bound_its_error_arc_by_arc),
         cmocka_unit_test(coulomb_inside_the_band_should_never_move),
         cmocka_unit_test(coulomb_knife_edge_should_count_as_a_stop),
         cmocka_unit_test(average_acceleration_should_be_stable_at_a_large_step),
