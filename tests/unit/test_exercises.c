@@ -378,6 +378,12 @@ static void metadata_should_list_params_and_outputs_for_every_exercise(void **st
         const cJSON *html = cJSON_GetObjectItem(meta, "theory_html");
         if (!cJSON_IsString(html) || strlen(html->valuestring) < 200)
             fail_msg("%s: no theory text (looked for %s)", ex->id, ex->theory);
+        /* no control character but the newline: a TeX "\\approx" or "\\tfrac"
+           written through a string escape becomes BEL or TAB + "frac" */
+        for (const char *c = html->valuestring; *c; c++)
+            if ((unsigned char)*c < 0x20 && *c != '\n')
+                fail_msg("%s: control character 0x%02x in the theory text (%s) near \"%.40s\"", ex->id, *c, ex->theory,
+                         c - html->valuestring > 20 ? c - 20 : html->valuestring);
         cJSON_Delete(meta);
     }
     cJSON_Delete(cat);

@@ -45,6 +45,7 @@ try {
           if (extensions.includes(id)) await page.waitForSelector('.extension > :not(style)');
         }
         const v = await axeSerious(page);
+        for (const f of await page.$$eval('#theory .katex-error', (es) => es.map((x) => x.textContent.slice(0, 60)))) v.push(`a formula of the theory does not parse: ${f}`);
         if (errors.length) v.push(`script errors: ${errors.join('; ')}`);
         if (v.length) throw new Error(v.join('\n'));
         passed++;

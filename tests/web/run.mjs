@@ -725,6 +725,7 @@ try {
         await page.setViewportSize({ width: 1280, height: 800 });
         await openTypeset(page, server.origin, `id=${e.id}`);
         if (await page.$('#answer-error:not([hidden])')) problems.push(`${e.id}: an error at its defaults: ${await page.textContent('#answer-error')}`);
+        for (const f of await page.$$eval('#theory .katex-error', (es) => es.map((x) => x.textContent.slice(0, 60)))) problems.push(`${e.id}: a formula of the theory does not parse: ${f}`);
         for (const p of await layoutProblems(page)) problems.push(`${e.id} desktop: ${p}`);
         step = 'figures redrawn at 390 px';
         await page.setViewportSize({ width: 390, height: 844 });
