@@ -320,6 +320,10 @@ static int parse_inputs(const mm_exercise *ex, mm_input *in, int n, mm_value *va
 }
 
 /* Does the script's line "name = value unit" agree with the answer's scalar? */
+/* The worst agreement seen: |Octave - API| / allowed, and where. */
+static double worst_ratio, worst_rel;
+static char worst_where[256];
+
 static int agrees(const cJSON *scalar, const char *output, const run *r)
 {
     const char *name = cJSON_GetObjectItem(scalar, "name")->valuestring;
@@ -347,6 +351,12 @@ static int agrees(const cJSON *scalar, const char *output, const run *r)
     double tol = cJSON_IsTrue(exact) ? 1e-10 * fabs(want)
                : error ? 2 * error->valuedouble + 1e-10 * fabs(want)
                        : 1e-9 * fabs(want);
+    double ratio = fabs(got - want) / (tol + 1e-300);
+    if (ratio > worst_ratio) {
+        worst_ratio = ratio;
+        worst_rel = want != 0 ? fabs(got - want) / fabs(want) : fabs(got - want);
+        snprintf(worst_where, sizeof worst_where, "%s %s (%.120s)", r->ex->id, name, r->query);
+    }
     if (!(fabs(got - want) <= tol + 1e-300)) {
         print_error("%s (%s): %s = %.17g in Octave, %.17g by the API (difference %.3g > %.3g)\n", r->ex->id,
                     r->query, name, got, want, fabs(got - want), tol);
@@ -475,6 +485,8 @@ static void every_script_should_reproduce_the_answer_in_octave(void **state)
     free(runs);
     print_message("%d scripts run, %d numbers compared, %d exercises without a script\n", nrun, compared,
                   missing);
+    print_message("worst agreement: %.3g of the allowed difference (relative %.3g), %s\n", worst_ratio, worst_rel,
+                  worst_where);
     assert_int_equal(failures, 0);
     assert_int_equal(missing, 0);          /* a new exercise without a script fails the suite */
 }
