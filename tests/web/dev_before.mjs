@@ -49,7 +49,7 @@ try {
   await open(page, server.origin, 'id=num-polyfit');
   await page.screenshot({ path: `${shots}/before-phone-polyfit.png`, fullPage: true });
   await page.setViewportSize({ width: 1280, height: 800 });
-  for (const [id, fig, name] of [['num-newmark', 0, 'newmark-fig1'], ['vib-base-excitation', 1, 'base-excitation-fig2'], ['vib-integrators', 0, 'integrators-fig1'], ['vib-integrators', 1, 'integrators-fig2'], ['num-complex', 0, 'complex-argand'], ['vib-harmonics', 1, 'harmonics-lissajous'], ['num-linear-system', 0, 'linear-system-fig1'], ['num-eigen', 0, 'eigen-fig1']]) {
+  for (const [id, fig, name] of [['num-newmark', 1, 'newmark-response'], ['vib-base-excitation', 1, 'base-excitation-fig2'], ['vib-integrators', 0, 'integrators-fig1'], ['vib-integrators', 1, 'integrators-fig2'], ['num-complex', 0, 'complex-argand'], ['vib-harmonics', 1, 'harmonics-lissajous'], ['num-linear-system', 0, 'linear-system-fig1'], ['num-eigen', 0, 'eigen-fig1']]) {
     await open(page, server.origin, `id=${id}`);
     const figs = await page.$$('figure.plot');
     if (figs[fig]) await figs[fig].screenshot({ path: `${shots}/before-${name}.png` });

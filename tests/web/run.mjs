@@ -322,7 +322,8 @@ try {
 
   await test('labels come from the declared outputs, colours and dashes keep overlaid series apart', async (page) => {
     await openExercise(page, server.origin, 'id=num-newmark');
-    const fig = await page.$eval('svg.mm-plot', (svg) => ({
+    // the response figure (the energy residual may come first)
+    const fig = await page.$eval('figure.plot:has(svg.mm-plot path.mm-series[stroke-dasharray]) svg.mm-plot', (svg) => ({
       text: svg.textContent,
       ylabel: svg.querySelector('.mm-ylabel').textContent,
       series: [...svg.querySelectorAll('.mm-plotarea path.mm-series')].map((p) => `${p.getAttribute('stroke')}|${p.getAttribute('stroke-dasharray') || ''}|${p.getAttribute('stroke-width')}`),
@@ -817,7 +818,7 @@ try {
     await openTypeset(page, server.origin, 'id=num-polyfit');
     await page.screenshot({ path: `${shots}/after-phone-polyfit.png`, fullPage: true });
     await page.setViewportSize({ width: 1280, height: 800 });
-    for (const [id, fig, name] of [['num-newmark', 0, 'newmark-fig1'], ['vib-base-excitation', 1, 'base-excitation-fig2'], ['vib-integrators', 0, 'integrators-fig1'], ['vib-integrators', 1, 'integrators-fig2'], ['num-complex', 0, 'complex-argand'], ['vib-harmonics', 1, 'harmonics-lissajous'], ['num-linear-system', 0, 'linear-system-fig1'], ['num-eigen', 0, 'eigen-fig1']]) {
+    for (const [id, fig, name] of [['num-newmark', 1, 'newmark-response'], ['vib-base-excitation', 1, 'base-excitation-fig2'], ['vib-integrators', 0, 'integrators-fig1'], ['vib-integrators', 1, 'integrators-fig2'], ['num-complex', 0, 'complex-argand'], ['vib-harmonics', 1, 'harmonics-lissajous'], ['num-linear-system', 0, 'linear-system-fig1'], ['num-eigen', 0, 'eigen-fig1']]) {
       await openExercise(page, server.origin, `id=${id}`);
       const figs = await page.$$('figure.plot');
       await figs[fig].screenshot({ path: `${shots}/after-${name}.png` });
