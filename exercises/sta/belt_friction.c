@@ -9,8 +9,8 @@
  * and the torque the belt passes to the drum.
  * Checks: a belt over n sharp pegs, each in equilibrium with Coulomb
  * friction at the limit (eq. 5), converges to (3) at order 2 (observed over
- * n = 8..256) and, with its Richardson error estimate, meets (3); the
- * torque on the drum equals the friction moment integrated along the
+ * six halvings from where its d^4 term is small) and, with its Richardson
+ * error estimate, meets (3); the torque on the drum equals the friction moment integrated along the
  * contact (eq. 6, Gauss-Legendre).
  * Reference: Hibbeler, Statics, 14th ed., section 8.5; Meriam & Kraige,
  * Statics, section 6/9.
@@ -52,11 +52,29 @@ static const mm_output outputs[] = {
 
 /* The belt over n sharp pegs spread evenly over theta: at each, the belt
  * turns by d = theta / n, the peg pushes with N = (T_in + T_out) sin(d/2)
- * and friction mu_e N makes up the difference (eq. 5). */
+ * and friction mu_e N makes up the difference (eq. 5), so each peg
+ * multiplies the tension by (1 + s) / (1 - s) = e^(2 atanh s), s =
+ * mu_e sin(d/2).  Through atanh the product of n factors rounds like one
+ * exponential, (6 mu_e theta + 4) eps relative at most, where pow((1 + s) /
+ * (1 - s), n) rounded at n eps. */
 static double pegs(double T1, double mue, double theta, int n)
 {
     double s = mue * sin(theta / (2.0 * n));
-    return T1 * pow((1 + s) / (1 - s), n);
+    return T1 * exp(2.0 * n * atanh(s));
+}
+
+/* How far the least-squares slope over K halvings of log |e| strays from 2
+ * when e = c d^2 (1 + B d^2) and |B| d0^2 = b < 1 on the coarsest level:
+ * the larger of the two signs of B, which is B < 0 (log(1 - b 4^-k) bends
+ * more). */
+static double order_drift(double b, int K)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (int k = 0; k < K; k++) {
+        double x = -k * M_LN2, y = log1p(-b * ldexp(1.0, -2 * k));
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    return fabs((K * sxy - sx * sy) / (K * sxx - sx * sx));
 }
 
 /* e^50 = 5e21: beyond it the belt holds any load no belt could carry */
@@ -119,10 +137,22 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     for (int i = 0; i < n; i++)
         s->y[i] = T1 * exp(mue * s->x[i]);                                    /* eq. (2) */
 
-    /* check 1: the peg belt converges to (3) at order 2.  Each peg turns the
-     * belt by d = theta / n with mu_e d <= 0.2, so the model is in range */
+    /* check 1: the peg belt converges to (3) at order 2.  With d = theta / n
+     * and s = mu_e sin(d/2), log(T_n / T2) = n 2 atanh(s) - mu_e theta =
+     * c1 d^2 + c2 d^4 + ..., c1 = theta (mu_e^3/12 - mu_e/24) and c2 = theta
+     * (mu_e/1920 - mu_e^3/96 + mu_e^5/80), so T_n - T2 = T2 c1 d^2 (1 + B d^2
+     * + ...) with B = (c2 + c1^2/2) / c1.  The order 2 is seen only while
+     * |B| d^2 is small: mu_e d small is not enough (a small mu_e on a long
+     * wrap gave d = 3 rad a peg, |B| d^2 = 0.5 and an order of 1.90).  The
+     * coarsest level is taken where |B| d0^2 <= 0.02, B bounded without its
+     * cancellations (|c2| summed term by term, |c1| at least its value where
+     * the check is made) */
     enum { K = 6 };
-    int n0 = (int)fmax(8, ceil(5 * mue * theta));
+    double mt = mue * theta;
+    double c1 = fabs(mue * mue * mue / 12 - mue / 24) * theta, c1min = 0.05 * mue * theta / 24;
+    double c2 = (mue / 1920 + mue * mue * mue / 96 + pow(mue, 5) / 80) * theta;
+    double B = (c2 + 0.5 * c1 * c1) / fmax(c1, c1min);
+    int n0 = (int)fmax(fmax(8, ceil(5 * mt)), ceil(theta * sqrt(B / 0.02)));
     double h[K], e[K], Tn[K];
     for (int k = 0; k < K; k++) {
         int np = n0 << k;
@@ -130,20 +160,32 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         h[k] = theta / np;
         e[k] = fabs(Tn[k] - T2);
     }
-    /* leading error T2 theta^3 (mu_e^3/12 - mu_e/24) / n^2: it vanishes at
-     * mu_e^2 = 1/2 (then the order is 4) and with theta or mu_e, leaving
-     * rounding; the order is measured only where it is 2 and visible */
-    double c2 = fabs(mue * mue * mue / 12 - mue / 24) * theta * theta * theta;
-    if (c2 > 0.05 * mue * theta * theta * theta / 24 && e[K - 1] > 1e5 * DBL_EPSILON * T2)
-        mm_check_order(res, "n-peg belt -> T1 e^(mu theta / sin beta): observed order", K, h, e, 2, 0.1);
+    /* rounding of T_n and T2 together: (6.5 mt + 6) eps T2 < 8 (1 + mt) eps T2 */
+    double rnd = 8 * (1 + mt) * DBL_EPSILON * T2;
+    /* the order is measured only where c1 is not near its zero at mu_e^2 =
+     * 1/2 (where the order is 4) and the finest error is 1e4 roundings; the
+     * tolerance is twice the slope's drift from the d^4 term (measured over
+     * 2e5 draws: at most 0.9993 of it) plus what rounding can move the slope */
+    if (c1 > c1min && e[K - 1] > 1e4 * rnd) {
+        double xm = 0, sxx = 0, drift = 0;
+        for (int k = 0; k < K; k++)
+            xm += log(h[k]) / K;
+        for (int k = 0; k < K; k++)
+            sxx += (log(h[k]) - xm) * (log(h[k]) - xm);
+        for (int k = 0; k < K; k++)
+            drift += fabs(log(h[k]) - xm) / sxx * rnd / e[k];
+        double b = B * h[0] * h[0];
+        mm_check_order(res, "n-peg belt -> T1 e^(mu theta / sin beta): observed order (tolerance: 2 x the "
+                            "drift of its d^4 term)", K, h, e, 2, 2 * (order_drift(b, K) + drift));
+    }
     /* check 2: the finest peg belt meets (3) within its Richardson estimate */
     double est = fabs(Tn[K - 1] - Tn[K - 2]) / 3;
     char *name = mm_res_printf(res, "%d-peg belt vs T1 e^(mu theta / sin beta) [N] (tolerance: 1.5 x its "
                                     "Richardson error estimate)", n0 << (K - 1));
     if (!name)
         return MM_ENOMEM;
-    /* plus the rounding of pow over n factors: n eps relative */
-    mm_res_check_abs(res, name, Tn[K - 1], T2, 1.5 * est + 4 * DBL_EPSILON * T2 * (n0 << (K - 1)));
+    /* plus rounding: once in T_n and T2, once more in the estimate */
+    mm_res_check_abs(res, name, Tn[K - 1], T2, 1.5 * est + 2 * rnd);
     /* check 3: the drum's moment balance: (T2 - T1) r against the friction
      * moment integral of mu_e T(phi) r dphi (eq. 6), 5-point Gauss-Legendre
      * on pieces where mu_e phi grows by at most 1/2 (relative error < 1e-15) */
