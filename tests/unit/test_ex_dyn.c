@@ -389,7 +389,7 @@ static void dyn_slider_crank_energy_bound_should_bound_the_energy_difference(voi
                          .torque = 20};
     srand(7);
     for (int k = 0; k < 200; k++) {
-        double phi = 6.3 * rand() / RAND_MAX, w = 100 * rand() / RAND_MAX - 50;
+        double phi = 6.3 * (rand() / (double)RAND_MAX), w = 100 * (rand() / (double)RAND_MAX) - 50;
         double dphi = 1e-2 * (rand() / (double)RAND_MAX - 0.5), dw = 1 * (rand() / (double)RAND_MAX - 0.5);
         double q[MM_SC_NQ], qd[MM_SC_NQ], qr[MM_SC_NQ], qdr[MM_SC_NQ], bJ;
         mm_sc_assemble(&s, phi + dphi, w + dw, q, qd);
