@@ -379,6 +379,8 @@ try {
     await page.keyboard.press('Home');
     assert.match(await page.getAttribute('.plot-svg', 'aria-valuetext'), /^t = 0 s; displacement( \(closed form\))? = 0[.,]01 m$/);
     await page.click('.fig-data summary');
+    // the table is built when the details open: wait for its rows (a busy machine)
+    await page.waitForSelector('.fig-data table tbody tr');
     const rows = await page.$$eval('.fig-data table tbody tr', (r) => r.length);
     const answer = await solveJson('vib-sdof-free/solve');
     assert.ok(rows >= 20 && rows <= 62, `a table of ${rows} rows`);
