@@ -195,25 +195,59 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double big = fabs(s.w) * (m.R + m.b) * (1 + fabs(s.phi));
     mm_res_check_abs(res, "|v_P| by eq. (2) vs |phi'| |PC| (instantaneous centre C) [m/s]", mm_v2_norm(s.v),
                      fabs(s.w) * mm_v2_norm(mm_v2_sub(s.P, C)), 16 * DBL_EPSILON * big);
-    double cr = fabs(mm_v2_cross(s.v, s.a)), sp = mm_v2_norm(s.v);
     if (m.b > 0)
         mm_res_scalar(res, O_RHOTOP, (m.R + m.b) * (m.R + m.b) / m.b);
-    if (cr > 0 && sp > 0) {
-        double rho = sp * sp * sp / cr, R3[3];
+    /* the radius of curvature is the path's, a property of P(phi) alone:
+     *     rho = |g|^3 / |g x g'| = |g|^3 / (b |R cos phi - b|),  g = dP/dphi   (R)
+     * and |v|^3 / |v x a| = |phi'|^3 |g|^3 / |phi'^3 g x g'| is the same
+     * number, but computed from (2)-(3) it subtracts phi' phi'' g x g (zero)
+     * from itself: when phi'^2 is small beside |phi''| the rounding of that
+     * zero swamps phi'^3 g x g' (at phi' = 0 it is 0 / 0), so (R) is the
+     * answer and the kinematic formula is checked against it */
+    double c = cos(s.phi), sn = sin(s.phi), cb = m.R * c - m.b;
+    mm_v2 g = {m.R - m.b * c, m.b * sn};
+    double gn = mm_v2_norm(g);
+    if (m.b > 0 && cb != 0 && gn > 0) {
+        double rho = gn * gn * gn / (m.b * fabs(cb));
         mm_res_scalar(res, O_RHO, rho);
-        /* the circle through three points |v| h apart: O(h) (O(h^2) at constant
-         * speed): the value at h/4 within 2 |R(h/2) - R(h/4)| plus rounding */
-        double h = 0.02 * rho / sp;
+        double cr = fabs(mm_v2_cross(s.v, s.a)), sp = mm_v2_norm(s.v), an = mm_v2_norm(s.a);
+        /* the rounding of v x a: v and a carry eps (R + b) |phi'| and eps (R + b) |a| / |g|
+         * of error (g to eps (R + b)), and g x g' = b (R cos phi - b) to eps (R + b)^2 */
+        if (cr > 0 && sp > 0)
+            mm_res_check_abs(res, "rho = |v|^3 / |v x a| from eqs. (2)-(3) vs |g|^3 / (b |R cos phi - b|), bound: the rounding of the "
+                                  "cross product and of g x g'", sp * sp * sp / cr, rho,
+                             4 * DBL_EPSILON * rho *
+                                 (1 + (m.R + m.b) * fabs(s.w) * an / cr + (m.R + m.b) * (m.R + m.b) / (m.b * fabs(cb))));
+        /* the circle through P(phi - d), P(phi), P(phi + d): O(d), the value at
+         * d/4 within 2 |R(d/2) - R(d/4)| plus rounding.  The asymptotic regime
+         * needs d small beside the scale on which the curvature k changes:
+         * beside rho / |g| (a cusp), the distance |k / k'| to an inflection
+         * (b < R: k = 0 where cos phi = b/R, and there rho -> infinity),
+         * and the period 2 pi.  With k = b (R cos phi - b) / q^(3/2),
+         * q = |g|^2 = R^2 + b^2 - 2 R b cos phi,
+         *     k' = dk/dphi = -R b sin phi (q + 3 b (R cos phi - b)) / q^(5/2)
+         * so k / k' = -(R cos phi - b) q / (R sin phi (q + 3 b (R cos phi - b))).
+         * The points are taken relative to P(phi), by differences that keep
+         * their digits: P(phi + e) - P(phi) = (R e - 2 b cos(phi + e/2) sin(e/2),
+         * 2 b sin(phi + e/2) sin(e/2)) */
+        double q = gn * gn, kd = m.R * sn * (q + 3 * m.b * cb), lk = kd != 0 ? fabs(cb * q / kd) : INFINITY;
+        double d = 0.02 * fmin(fmin(rho / gn, lk), 2), R3[3];
         int ok = 1;
         for (int k = 0; k < 3; k++) {
-            mm_v2 P3[3], cc;
-            for (int j = 0; j < 3; j++)
-                P3[j] = at(&m, t + (j - 1) * h / (1 << k)).P;
+            mm_v2 P3[3] = {{0, 0}, {0, 0}, {0, 0}}, cc;
+            for (int j = 0; j <= 2; j += 2) {
+                double e = (j - 1) * d / (1 << k), s2 = 2 * sin(0.5 * e);
+                P3[j] = (mm_v2){m.R * e - m.b * cos(s.phi + 0.5 * e) * s2, m.b * sin(s.phi + 0.5 * e) * s2};
+            }
             ok &= mm_geom_circumcircle(P3[0], P3[1], P3[2], &cc, &R3[k]);
         }
-        double ds = sp * h / 4, rnd = 64 * DBL_EPSILON * (mm_v2_norm(s.P) + rho) * rho * rho / (ds * ds);
+        /* rounding: the points at e = d/4 to a few eps |e| (R + b (1 + |phi|)) (the
+         * last from the argument phi + e/2), the sagitta ds^2 / (2 rho) of the
+         * chord ds = |g| d/4, so rho to 2 rho^2 / ds^2 times that (and the
+         * circle's own rounding, eps rho^2 / ds, is smaller) */
+        double ds = gn * d / 4, rnd = 8 * DBL_EPSILON * (m.R + m.b * (1 + fabs(s.phi))) * d * rho * rho / (ds * ds);
         if (ok)
-            mm_res_check_abs(res, "rho = |v|^3 / |v x a| vs the circle through three points of the path", R3[2], rho,
+            mm_res_check_abs(res, "rho = |g|^3 / (b |R cos phi - b|) vs the circle through three points of the path", R3[2], rho,
                              2 * fabs(R3[1] - R3[2]) + rnd);
     }
     /* one arch: 4 (R + b) E(k), k^2 = 4 R b / (R + b)^2 (8 R for b = R) */

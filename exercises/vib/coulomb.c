@@ -20,6 +20,7 @@
 #include <float.h>
 #include <math.h>
 
+#include "mm_coulomb.h"
 #include "mm_exhelp.h"
 #include "mm_ode.h"
 
@@ -74,121 +75,17 @@ static const mm_output outputs[] = {
 /* Most sliding arcs (half cycles) one request may integrate. */
 #define MAX_ARCS 2000
 
-/* A rest with |k x| within this relative margin of mu m g counts as a stop
- * (eq. 6 with the knife edge given to sticking), in the closed form and in
- * the numerical solution alike: their positions differ by ~1e-10. */
-#define STICK_MARGIN 1e-9
-
-typedef struct model {
-    double m, k, mu, g, x0, v0;
-    double w;        /* omega_n = sqrt(k/m) [rad/s] */
-    double d;        /* friction band mu m g / k [m]: the centre shift */
-    double d_lo;     /* d = d + d_lo to twice the precision (a long decay
-                        subtracts many d: x0 - 10 d keeps its digits) */
-} model;
+typedef mm_coulomb model;
 
 static model model_of(const mm_value *in)
 {
-    model s = {.m = in[P_M].x, .k = in[P_K].x, .mu = in[P_MU].x, .g = in[P_G].x,
-               .x0 = in[P_X0].x, .v0 = in[P_V0].x};
-    s.w = sqrt(s.k / s.m);
-    /* d = mu m g / k in double-double: exact products by fma, one corrected division */
-    double p = s.mu * s.m, p_lo = fma(s.mu, s.m, -p);
-    double q = p * s.g, q_lo = fma(p, s.g, -q) + p_lo * s.g;
-    s.d = q / s.k;
-    s.d_lo = (fma(-s.d, s.k, q) + q_lo) / s.k;
-    return s;
-}
-
-/* Eq. (6): at rest at x, does static friction hold the mass? */
-static int sticks(const model *s, double x)
-{
-    return fabs(s->k * x) <= s->mu * s->m * s->g * (1 + STICK_MARGIN);
-}
-
-/* The first arc of eq. (3): direction sg of the motion (+1 or -1), duration
- * tau and end position x1.  Returns 0 when the mass never moves. */
-static int first_arc(const model *s, double *sg, double *tau, double *x1)
-{
-    if (s->v0 == 0) {
-        if (sticks(s, s->x0))
-            return 0;                              /* static friction holds, eq. (6) */
-        *sg = s->x0 > 0 ? -1 : 1;                  /* the spring pulls it back */
-        *tau = M_PI / s->w;
-        *x1 = 2 * (-*sg * s->d) - s->x0;           /* eq. (4) */
-        return 1;
-    }
-    *sg = s->v0 > 0 ? 1 : -1;
-    double c = -*sg * s->d, R = hypot(s->x0 - c, s->v0 / s->w);
-    /* x - c = (x0 - c) cos wt + v0/w sin wt stops where tan wt = v0 / (w (x0 - c)),
-     * first in (0, pi): the angle straight from atan2 (th + pi for v0 < 0
-     * would cancel when the arc is short) */
-    *tau = atan2(*sg * s->v0 / s->w, *sg * (s->x0 - c)) / s->w;
-    *x1 = c + *sg * R;
-    return 1;
-}
-
-/* Number of sliding arcs, from eqs. (3)-(5), without stepping through them
- * (for the work bound; may be huge). */
-static double arc_count(const model *s)
-{
-    double sg, tau, x1;
-    if (!first_arc(s, &sg, &tau, &x1))
-        return 0;
-    if (sticks(s, x1))
-        return 1;
-    return 1 + ceil((fabs(x1) - s->d) / (2 * s->d));
-}
-
-/* The whole motion in closed form: rest times t[j] and places x[j] at the
- * end of arc j (j = 0..n-1), arc directions sg[j].  Eq. (4) repeated:
- * after the first rest x_1 every arc loses 2 d, x_j = sign (|x_1| - 2 (j - 1) d)
- * with alternating sign, computed in one rounding from the double-double d
- * (and from x0 itself, |x0| - 2 j d, when the motion starts from rest). */
-static int exact_arcs(const model *s, double *t, double *x, double *sg, int cap)
-{
-    double dir, tau, x1;
-    if (!first_arc(s, &dir, &tau, &x1))
-        return 0;
-    int n = 0, from_rest = s->v0 == 0;
-    double base = from_rest ? fabs(s->x0) : fabs(x1), side = from_rest ? (s->x0 > 0 ? -1 : 1) : (x1 > 0 ? 1 : -1);
-    t[n] = tau;
-    x[n] = x1;
-    sg[n++] = dir;
-    while (!sticks(s, x[n - 1]) && n < cap) {     /* eq. (4): turn and slide back */
-        double j = from_rest ? n + 1 : n;          /* arcs lost since `base` */
-        side = -side;
-        sg[n] = x[n - 1] > 0 ? -1 : 1;
-        t[n] = tau + n * (M_PI / s->w);
-        x[n] = side * (fma(-2 * j, s->d, base) - 2 * j * s->d_lo);
-        n++;
-    }
-    return n;
-}
-
-/* x(t) and x'(t) of the closed form at time tt, given the arcs. */
-static double exact_x(const model *s, const double *t, const double *x, const double *sg,
-                      int n, double tt, double *v)
-{
-    double ts = 0, xs = s->x0, vs = s->v0;
-    for (int j = 0; j < n; j++) {
-        if (tt <= t[j]) {
-            double c = -sg[j] * s->d, wt = s->w * (tt - ts);
-            *v = -(xs - c) * s->w * sin(wt) + vs * cos(wt);
-            return c + (xs - c) * cos(wt) + vs / s->w * sin(wt);
-        }
-        ts = t[j];
-        xs = x[j];
-        vs = 0;
-    }
-    *v = 0;
-    return xs;                                     /* at rest for good */
+    return mm_coulomb_make(in[P_M].x, in[P_K].x, in[P_MU].x, in[P_G].x, in[P_X0].x, in[P_V0].x);
 }
 
 static int check(const mm_value *in, mm_error *err)
 {
     model s = model_of(in);
-    double n = arc_count(&s);
+    double n = mm_coulomb_arc_count(&s);
     if (n > MAX_ARCS)
         return mm_error_set(err, MM_ERANGE, "mu",
                             "the mass would slide %.3g half cycles before it stops (each loses "
@@ -248,7 +145,7 @@ static int simulate(const model *s, double rtol, int np, const double *tg, sim *
         return MM_ENOMEM;
     double t = 0, y[2] = {s->x0, s->v0};
     double sg = s->v0 != 0 ? (s->v0 > 0 ? 1 : -1) : (s->x0 > 0 ? -1 : 1);
-    int g = 0, rc = MM_OK, moving = s->v0 != 0 || !sticks(s, s->x0);   /* eq. (6) */
+    int g = 0, rc = MM_OK, moving = s->v0 != 0 || !mm_coulomb_sticks(s, s->x0);   /* eq. (6) */
     o->n = 0;
     while (moving && rc == MM_OK && o->n <= MAX_ARCS) {
         arc_ctx arc = {.w2 = s->w * s->w, .f = sg * s->mu * s->g, .sg = sg};
@@ -293,7 +190,7 @@ static int simulate(const model *s, double rtol, int np, const double *tg, sim *
         y[0] = yend[0];
         y[1] = 0;                                                    /* the event: at rest */
         o->t[o->n] = t, o->x[o->n++] = y[0];
-        moving = !sticks(s, y[0]);                                   /* eq. (6): stick, or turn back */
+        moving = !mm_coulomb_sticks(s, y[0]);                                   /* eq. (6): stick, or turn back */
         sg = y[0] > 0 ? -1 : 1;
     }
     mm_ode_work_free(w);
@@ -365,7 +262,7 @@ static int animate(const model *s, const double *te, const double *xe, const dou
     for (int f = 0; f < nf; f++) {
         double v;
         t[f] = t_show * f / (nf - 1);
-        x[f] = exact_x(s, te, xe, sge, ne, t[f], &v);
+        x[f] = mm_coulomb_x(s, te, xe, sge, ne, t[f], &v);
         F[f] = v != 0 ? (v > 0 ? -1 : 1) * s->mu * s->m * s->g : s->k * x[f];
     }
     return mm_ex_animate_oscillator(res, nf, t, x, NULL, F, "friction", 0, 1);
@@ -382,7 +279,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
            *sge = xe + MAX_ARCS + 1;
     if (!te)
         return MM_ENOMEM;
-    int ne = exact_arcs(&s, te, xe, sge, MAX_ARCS + 1);
+    int ne = mm_coulomb_arcs(&s, te, xe, sge, MAX_ARCS + 1);
     double stop = ne ? te[ne - 1] : 0, xf = ne ? xe[ne - 1] : s.x0;
     mm_res_scalar(res, O_OMEGA_N, s.w);
     mm_res_scalar(res, O_BAND, s.d);
@@ -418,7 +315,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_ex_time_grid(t_plot, np, sx->x);
     for (int i = 0; i < np; i++) {
         sv->x[i] = se->x[i] = sx->x[i];
-        sx->y[i] = exact_x(&s, te, xe, sge, ne, sx->x[i], &sv->y[i]);
+        sx->y[i] = mm_coulomb_x(&s, te, xe, sge, ne, sx->x[i], &sv->y[i]);
     }
     amp->x[0] = 0, amp->y[0] = fabs(s.x0);
     for (int j = 0; j < ne; j++) {

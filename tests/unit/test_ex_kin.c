@@ -285,6 +285,30 @@ static void the_rolling_wheel_contact_point_should_be_exactly_at_rest(void **sta
     cJSON_Delete(d);
 }
 
+/* MM_DRAWS=200 found "rho vs the circle through three points" failing at
+ * this draw (240.6 vs 707.9): P is near an inflection of its curtate
+ * trochoid (cos phi = 0.4764, b/R = 0.4625), where rho is large but the
+ * curvature changes within |k / k'| = 0.015 rad, and the three points were
+ * spaced 0.02 rho of arc (2.4 rad of turn) apart, far outside the regime
+ * where 2 |R(h/2) - R(h/4)| bounds the error.  rho here is 707.876957267166
+ * (50 digits, from rho = q^(3/2) / (b |R cos phi - b|)); phi = 621 rad
+ * leaves it about 1e-11 relative. */
+static void the_rolling_wheel_should_pass_its_checks_near_an_inflection(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("kin-rolling-wheel", "R=6.7004451634038373&b=3.0991284735230185&omega=-25.223749718332428"
+                                             "&alpha=64.631483392731155&t=4.7911508575171959&t_end=7.13337779769173");
+    check_rel(scalar(d, "rho"), 707.876957267165594727, 1e-10, "rho near the inflection");
+    assert_non_null(find(d, "checks", "rho = |g|^3 / (b |R cos phi - b|) vs the circle through three points of the path"));
+    cJSON_Delete(d);
+    /* phi' = -5e-9 (the wheel about to turn back): |v|^3 / |v x a| is 0 / 0
+     * up to the rounding of phi' phi'' g x g; the path's rho by eq. (4) is
+     * 8.38009980449162 (50 digits) regardless */
+    d = solve_ok("kin-rolling-wheel", "R=0.5&b=0.3&omega=1&alpha=-0.5&t=2.00000001");
+    check_rel(scalar(d, "rho"), 8.380099804491620659, 1e-14, "rho with the wheel at rest");
+    cJSON_Delete(d);
+}
+
 static void mobility_should_catch_the_overconstrained_linkages(void **state)
 {
     (void)state;
@@ -402,6 +426,7 @@ int main(void)
         cmocka_unit_test(a_rhombus_should_take_both_its_assemblies),
         cmocka_unit_test(a_cam_with_a_roller_too_large_should_warn_of_undercutting),
         cmocka_unit_test(the_rolling_wheel_contact_point_should_be_exactly_at_rest),
+        cmocka_unit_test(the_rolling_wheel_should_pass_its_checks_near_an_inflection),
         cmocka_unit_test(mobility_should_catch_the_overconstrained_linkages),
         cmocka_unit_test(space_motion_should_find_gimbal_lock),
         cmocka_unit_test(the_other_exercises_should_give_their_textbook_values),
