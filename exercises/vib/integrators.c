@@ -312,17 +312,21 @@ static int sweeps(problem *pb, double zeta, long *total_evals, mm_table *tab, mm
         }
         /* theory: 2, 2, 4, and Verlet 2 without damping (with damping its first-order damping error
          * competes with the second-order rest: reported, not checked); the slope is known to the spread
-         * of the local slopes plus the next term of the error, ~ wmax h of the finest step fitted */
+         * of the local slopes plus the next term of the error, ~ |lambda| h of the finest step fitted,
+         * lambda the fastest rate of the motion: omega (if forced) or the fastest root of (1),
+         * omega_n (zeta + sqrt(zeta^2 - 1)) when overdamped, up to 2 zeta omega_n (not omega_n) */
         tab->cell[10 * m + 8] = order, tab->cell[10 * m + 9] = spread;
         if (m == M_VERLET && zeta > 0)
             continue;
         double hf = 0;
         for (int i = n - 1; i >= 0 && hf == 0; i--)
             hf = es[i] >= 1e-11 * pb->scale && es[i] <= 1e-2 * pb->scale ? hs[i] : 0;
+        double lam = fmax(pb->p.omega_n * (zeta > 1 ? zeta + sqrt(zeta * zeta - 1) : 1),
+                          pb->s.F0 != 0 ? pb->s.omega : 0);
         char name[200];
         snprintf(name, sizeof name, "%s: observed order vs %d, within 10 times the spread of its local slopes plus "
-                 "omega h of the finest step fitted", mname[m], morder[m]);
-        mm_res_check_abs(res, name, order, morder[m], 10 * spread + wmax * hf + 1e-4);
+                 "|lambda| h of the finest step fitted, lambda the fastest rate", mname[m], morder[m]);
+        mm_res_check_abs(res, name, order, morder[m], 10 * spread + lam * hf + 1e-4);
     }
     return MM_OK;
 }

@@ -225,6 +225,28 @@ static void a_slowly_bending_slope_should_not_fail_the_order_check(void **state)
     cJSON_Delete(d);
 }
 
+/* Overdamped (zeta 1.86) so the fast root is omega_n (zeta + sqrt(zeta^2 - 1))
+ * = 2449/s, 3.4 times omega_n: RK4's fitted steps have |lambda| h = 1.7 to
+ * 0.43 (errors 1.1e-8 to 3.5e-11 of the motion), its local slopes 4.165 and
+ * 4.176, slope 4.176.  omega_n h = 0.125 of the finest step made a tolerance
+ * of 0.130 (MM_SEED=7, 200 draws) and the check failed; the fastest rate,
+ * |lambda| h = 0.43, bounds the 0.176 with a tolerance of 0.43. */
+static void an_overdamped_fast_root_should_bound_the_slope_bend(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-integrators", "omega_n=713.0438316458524&zeta=1.8633526921759722&F=749.306375151792"
+                                           "&omega=189.1713419000669&x0=-7.681447245454871&v0=797.6962781382733"
+                                           "&t_end=3.076293175944163&h=0.0025409663507308046"
+                                           "&rtol=2.154763575945949e-06&periods=7892");
+    const cJSON *c = check_named(d, "rk4: observed order");
+    assert_non_null(c);
+    double dev = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
+    double tol = cJSON_GetObjectItem(c, "tolerance")->valuedouble;
+    assert_true(dev > 0.15);                  /* the bend is real, not round-off */
+    assert_true(tol > dev && tol < 5 * dev);  /* above the deviation made, within 5 times of it */
+    cJSON_Delete(d);
+}
+
 /* ---- #12: the order of damped Verlet ------------------------------------------------- */
 
 static void verlet_order_should_be_one_with_damping_and_two_without(void **state)
@@ -364,6 +386,7 @@ int main(void)
         cmocka_unit_test(coulomb_should_print_the_exact_stop_with_the_events_beside_it),
         cmocka_unit_test(near_resonance_numbers_should_keep_their_digits),
         cmocka_unit_test(a_slowly_bending_slope_should_not_fail_the_order_check),
+        cmocka_unit_test(an_overdamped_fast_root_should_bound_the_slope_bend),
         cmocka_unit_test(verlet_order_should_be_one_with_damping_and_two_without),
         cmocka_unit_test(the_radian_cap_should_allow_twice_the_old_span),
         cmocka_unit_test(oscillators_should_animate_their_motion),

@@ -350,6 +350,12 @@ static void error_estimates_should_cover_the_rounding(void **state)
         /* two large terms that cancel: 1/(x-1) - 1/x at 1e8 = 1.00000001e-16 */
         {"1/(x-1)-1/x", 1e8, 1.0000000100000001e-16},
     };
+    /* valgrind runs glibc's FMA code paths with an unfused multiply-add, so
+     * exp and sin are no longer within the half ulp the estimate assumes */
+    if (getenv("MM_VALGRIND")) {
+        print_message("skipped under valgrind: its multiply-add is not fused\n");
+        return;
+    }
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         mm_expr *e;
         assert_int_equal(mm_expr_compile(cases[i].f, X, 1, &e, NULL), MM_OK);
