@@ -1,6 +1,7 @@
 /* mm_sdof.c — closed-form 1-DOF response (see mm_sdof.h for the formulas). */
 #include "mm_sdof.h"
 
+#include <complex.h>
 #include <math.h>
 
 const char *mm_sdof_regime_name(int regime)
@@ -183,4 +184,22 @@ double mm_sdof_fastest_rate(const mm_sdof *s, const mm_sdof_props *p)
     if (p->zeta > 1)                                  /* fast overdamped mode */
         rate = fmax(rate, p->omega_n * (p->zeta + sqrt((p->zeta - 1) * (p->zeta + 1))));
     return rate;
+}
+
+double mm_sdof_rk4_gain(double wh, double zeta)
+{
+    double gain = 0;
+    for (int sgn = -1; sgn <= 1; sgn += 2) {
+        double complex z = wh * (-zeta + sgn * csqrt(zeta * zeta - 1));
+        gain = fmax(gain, cabs(1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24));
+    }
+    return gain;
+}
+
+double mm_sdof_verlet_gain(double wh, double zeta)
+{
+    double T = 2 - 2 * zeta * wh - wh * wh, D = 1 - 2 * zeta * wh, gain = 0;
+    for (int sgn = -1; sgn <= 1; sgn += 2)
+        gain = fmax(gain, cabs((T + sgn * csqrt(T * T - 4 * D)) / 2));
+    return gain;
 }

@@ -88,4 +88,12 @@ double mm_sdof_energy(const mm_sdof *s, double x, double v);
  * The time scale of the work of a time integration.  Cannot fail. */
 double mm_sdof_fastest_rate(const mm_sdof *s, const mm_sdof_props *p);
 
+/* Spectral radius of one fixed step h of x'' + 2 zeta omega_n x' + omega_n^2 x = 0,
+ * wh = omega_n h: RK4's |R(lambda h)| for both roots lambda, and Stormer-Verlet's
+ * (damping at the half-step velocity) map of (x, v half), [[1, h], [-h k,
+ * 1 - h c - h^2 k]] (per unit mass): trace 2 - 2 zeta wh - wh^2, determinant
+ * 1 - 2 zeta wh.  Above 1: the step amplifies, the method is past its limit. */
+double mm_sdof_rk4_gain(double wh, double zeta);
+double mm_sdof_verlet_gain(double wh, double zeta);
+
 #endif

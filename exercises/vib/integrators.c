@@ -204,13 +204,7 @@ static int past_limit(int m, double wn, double zeta, double h, char *why, size_t
         snprintf(why, len, "omega_n h = %.3g >= 2", wh);
         return wh >= 2;
     }
-    for (int sgn = -1; sgn <= 1; sgn += 2) {
-        double complex z = m == M_RK4 ? wh * (-zeta + sgn * csqrt(zeta * zeta - 1)) : 0;
-        double T = 2 - 2 * zeta * wh - wh * wh, D = 1 - 2 * zeta * wh;
-        double complex l = m == M_RK4 ? 1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24
-                                      : (T + sgn * csqrt(T * T - 4 * D)) / 2;
-        gain = fmax(gain, cabs(l));
-    }
+    gain = m == M_RK4 ? mm_sdof_rk4_gain(wh, zeta) : mm_sdof_verlet_gain(wh, zeta);
     if (m == M_RK4)
         snprintf(why, len, "|R(lambda h)| = %.4g > 1 at omega_n h = %.3g", gain, wh);
     else

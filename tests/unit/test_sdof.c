@@ -201,6 +201,22 @@ static void a_strongly_overdamped_block_should_keep_its_digits(void **state)
     }
 }
 
+/* The classic limits: undamped RK4 is stable to omega h = 2 sqrt(2), Verlet
+ * to 2; on the limit both have gain 1, beyond it more, and damping keeps
+ * RK4 inside (|R| < 1 for small steps). */
+static void the_step_gains_should_meet_the_classic_stability_limits(void **state)
+{
+    (void)state;
+    double y = 2 * sqrt(2.0);
+    check_rel(mm_sdof_rk4_gain(y, 0), 1, 1e-14, "RK4 on its limit 2 sqrt 2");
+    double re = 1 - 0.25 * 0.25 / 2 + pow(0.25, 4) / 24, im = 0.25 - pow(0.25, 3) / 6;
+    check_rel(mm_sdof_rk4_gain(0.25, 0), hypot(re, im), 1e-15, "|R(i y)| written out");
+    assert_true(mm_sdof_rk4_gain(y * 1.01, 0) > 1 && mm_sdof_rk4_gain(1, 0.1) < 1);
+    check_rel(mm_sdof_verlet_gain(1.9, 0), 1, 1e-14, "Verlet inside its limit: a rotation");
+    assert_true(mm_sdof_verlet_gain(2.01, 0) > 1);
+    check_rel(mm_sdof_verlet_gain(0.5, 0.1), sqrt(1 - 2 * 0.1 * 0.5), 1e-14, "damped: sqrt of the determinant");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -212,6 +228,7 @@ int main(void)
         cmocka_unit_test(a_sine_force_should_be_followed_in_every_regime),
         cmocka_unit_test(the_dynamic_stiffness_should_keep_its_digits_near_resonance),
         cmocka_unit_test(a_strongly_overdamped_block_should_keep_its_digits),
+        cmocka_unit_test(the_step_gains_should_meet_the_classic_stability_limits),
     };
     return cmocka_run_group_tests_name("sdof", tests, NULL, NULL);
 }
