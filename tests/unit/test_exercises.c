@@ -92,6 +92,22 @@ static int all_checks_pass(const mm_exercise *ex, const cJSON *doc, const char *
     return ok;
 }
 
+/* The largest error / tolerance of the checks of an answer (and which). */
+static void worst_check(const cJSON *doc, double *worst, char *name, size_t size)
+{
+    const cJSON *c;
+    cJSON_ArrayForEach(c, cJSON_GetObjectItem(doc, "checks")) {
+        const cJSON *e = cJSON_GetObjectItem(c, "abs_error"), *t = cJSON_GetObjectItem(c, "tolerance");
+        if (!cJSON_IsNumber(e) || !cJSON_IsNumber(t) || !(t->valuedouble > 0))
+            continue;
+        double r = e->valuedouble / t->valuedouble;
+        if (r > *worst) {
+            *worst = r;
+            snprintf(name, size, "%.60s", cJSON_GetObjectItem(c, "name")->valuestring);
+        }
+    }
+}
+
 /* Is `name` a declared output of kind `kind`, member of a family included? */
 static int declared(const mm_exercise *ex, mm_output_kind kind, const char *name)
 {
@@ -206,6 +222,8 @@ static void every_exercise_should_pass_its_checks_at_random_parameters(void **st
         mm_rng_seed(&rng, seed ? strtoull(seed, NULL, 10) : 0x9E3779B97F4A7C15ULL ^ (unsigned long long)(i + 1));
         int accepted = 0, refused = 0, attempts = 0, keep[MM_MAX_PARAMS] = {0}, streak[MM_MAX_PARAMS] = {0};
         long long worst_us = 0;
+        double worst = 0;
+        char worst_name[64] = "";
         while (accepted < want && attempts < 20 * want) {
             attempts++;
             mm_result arena;
@@ -243,11 +261,13 @@ static void every_exercise_should_pass_its_checks_at_random_parameters(void **st
                 long long us = (long long)cJSON_GetObjectItem(doc, "elapsed_us")->valuedouble;
                 if (us > worst_us)
                     worst_us = us;
+                worst_check(doc, &worst, worst_name, sizeof worst_name);
             }
             cJSON_Delete(doc);
         }
-        print_message("%-26s %3d draws solved, %3d refused by joint limits, slowest %lld us\n",
-                      ex->id, accepted, refused, worst_us);
+        print_message("%-26s %3d draws solved, %3d refused by joint limits, slowest %lld us, "
+                      "worst check %.2f of its tolerance (%s)\n", ex->id, accepted, refused, worst_us, worst,
+                      worst_name);
         if (accepted < want)
             fail_msg("%s: only %d of %d attempts were inside its joint limits", ex->id, accepted, attempts);
     }
