@@ -97,7 +97,9 @@ static void worst_check(const cJSON *doc, double *worst, char *name, size_t size
 {
     const cJSON *c;
     cJSON_ArrayForEach(c, cJSON_GetObjectItem(doc, "checks")) {
-        const cJSON *e = cJSON_GetObjectItem(c, "abs_error"), *t = cJSON_GetObjectItem(c, "tolerance");
+        const cJSON *k = cJSON_GetObjectItem(c, "tolerance_kind");
+        int rel = cJSON_IsString(k) && strcmp(k->valuestring, "relative") == 0;
+        const cJSON *e = cJSON_GetObjectItem(c, rel ? "rel_error" : "abs_error"), *t = cJSON_GetObjectItem(c, "tolerance");
         if (!cJSON_IsNumber(e) || !cJSON_IsNumber(t) || !(t->valuedouble > 0))
             continue;
         double r = e->valuedouble / t->valuedouble;
