@@ -835,16 +835,23 @@ static enum MHD_Result send_answer(req *r, const char *method, const char *url, 
 
 static void free_text(void *p) { free(p); }
 
-static enum MHD_Result send_error(req *r, const char *method, const char *url, int code, const char *param,
-                                  const char *msg, const char *allow)
+/* An error document (malloc'd, NULL without memory) and its HTTP status. */
+static char *error_doc(int code, const char *param, const char *msg, int *status, size_t *len)
 {
     mm_buf b;
     mm_error err;
     mm_buf_init(&b, 4096);
     mm_error_set(&err, code, param, "%s", msg);
-    int status = mm_api_error(&b, &err);
+    *status = mm_api_error(&b, &err);
+    return mm_buf_take(&b, len);
+}
+
+static enum MHD_Result send_error(req *r, const char *method, const char *url, int code, const char *param,
+                                  const char *msg, const char *allow)
+{
     size_t len;
-    char *text = mm_buf_take(&b, &len);
+    int status;
+    char *text = error_doc(code, param, msg, &status, &len);
     if (!text)
         return MHD_NO;
     if (code == MM_EBUSY)
@@ -1500,13 +1507,9 @@ static enum MHD_Result start_task(ctx *x, int task, const mm_assignment *a, char
             free(j);
         }
         free(text);
-        mm_buf b;
-        mm_error err;
-        mm_buf_init(&b, 4096);
-        mm_error_set(&err, MM_EBUSY, "", "busy");
-        int status = mm_api_error(&b, &err);
+        int status;
         size_t bl = 0;
-        char *body = mm_buf_take(&b, &bl);
+        char *body = error_doc(MM_EBUSY, "", "busy", &status, &bl);
         mm_cache_fill(s->cache, e, status, body, body ? bl : 0, NULL, 0, 0, 0, wake);
     }
     return MHD_YES;
