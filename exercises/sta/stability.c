@@ -165,7 +165,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (c < 1 && acos(c) > 0)
         cf[ncf++] = acos(c), cf[ncf++] = -acos(c);
     double worst = 0, wtol = 0;
-    int matched = 0;
     for (int j = 0; j < ncf; j++) {
         int best = -1;
         for (int i = 0; i < n; i++) {
@@ -175,7 +174,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
         double d = best >= 0 ? fabs(remainder(th[best] - cf[j], 2 * M_PI)) : INFINITY;
         double tol = best >= 0 ? w[best] + 8 * DBL_EPSILON * M_PI : 0;   /* and the rounding of the closed form */
-        matched += d <= tol;
         if (d / (tol + 1e-300) >= worst / (wtol + 1e-300))
             worst = d, wtol = tol;
     }
