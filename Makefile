@@ -12,6 +12,7 @@
 #                 browser packages and deploy files (README "Hosting it for a class")
 #   make failover nginx in front of two instances, one killed under load
 #   make fuzz-long every libFuzzer target for FUZZ_CPU_SECONDS (3600) of CPU
+#   make ref      chapter 1's printed numbers against 60-digit references (tests/ref)
 
 # ---- settings ---------------------------------------------------------------
 BUILD    ?= build
@@ -78,7 +79,7 @@ FUZZ_SECONDS ?= 60
 ALL_OBJ := $(call obj,$(SOLVER_SRC) $(EX_SRC) $(SERVER_SRC) $(SERVER_CXX) server/main.c)
 
 .PHONY: all run test asan bench deps flags clean tests loadtest fuzz fuzz-bins valgrind tsan install \
-        failover fuzz-long a11y
+        failover fuzz-long a11y ref
 .DEFAULT_GOAL := all
 
 all: $(SERVER_BIN)
@@ -147,6 +148,11 @@ $(BUILD)/obj/tests/unit/test_readme.o: CPPFLAGS += -I$(BUILD)/readme
 $(BUILD)/load/loadtool: $(BUILD)/obj/tests/load/loadtool.o $(LIBS)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS) $(TEST_LIBS)
+
+# the reference harness's draws (tests/ref/num_ref.py; make ref)
+$(BUILD)/ref/num_draws: $(BUILD)/obj/tests/ref/num_draws.o $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS)
 
 $(BUILD)/obj/tests/%.o: tests/%.c
 	@mkdir -p $(dir $@)
@@ -219,6 +225,14 @@ tsan:
 	    grep -A12 'WARNING: ThreadSanitizer' test-output/tsan-$$t.log | head -40; fail=1; fi; \
 	done; \
 	if [ $$fail = 0 ]; then echo "tsan: clean"; else echo "tsan: FAILED"; exit 1; fi
+
+# every printed number of the chapter-1 exercises against its exact value
+# (mpmath, exact rationals) over the defaults and 200 draws; minutes, not in
+# `make test`.  REF_ARGS="--only num-eigen --draws 20" for a part.
+ref:
+	@scripts/deps.sh --ref
+	@$(MAKE) --no-print-directory all $(BUILD)/ref/num_draws
+	@BUILD=$(BUILD) tests/ref/run.sh
 
 # make install: everything the server needs at run time, nothing else.
 install: all

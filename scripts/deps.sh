@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Install what mechmat needs and is missing; quick when everything is there.
-# scripts/deps.sh --test adds what only the tests need (Octave, nginx).
+# scripts/deps.sh --test adds what only the tests need (Octave, nginx);
+# scripts/deps.sh --ref what only `make ref` needs (python3-mpmath).
 # Debian packages through apt-get (as root, or with sudo), browser-side
 # packages through npm from the committed package-lock.json.
 set -euo pipefail
@@ -18,6 +19,12 @@ debs=(
 # only for `make test`: the Octave scripts' test, nginx in front of two instances
 if [[ "${1:-}" == "--test" ]]; then
   debs+=(octave nginx)
+fi
+# only for `make ref`: the reference harness's 60-digit arithmetic (tests/ref)
+# (an mpmath python3 already imports, from pip or elsewhere, is as good)
+if [[ "${1:-}" == "--ref" ]]; then
+  debs+=(python3)
+  python3 -c 'import mpmath' 2>/dev/null || debs+=(python3-mpmath)
 fi
 
 missing=()

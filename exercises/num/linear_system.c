@@ -107,10 +107,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         sc->error_kind = MM_ERR_BOUND;
     }
 
-    /* cond = s_1 / s_n within [(s_1 - e_1) / (s_n + e_n), (s_1 + e_1) / s_n_lo] */
+    /* cond = s_1 / s_n: the exact one is within (s_1 / s_n) (e_1 / s_1 + e_n / s_n_lo)
+     * of s_1 / s_n, and the division rounds by U more.  Written relative, not
+     * as the ends of an interval in double: s_1 + e_1 rounds back to s_1 when
+     * e_1 is under half an ulp, and the bound came out as U cond alone (the
+     * defaults were 1.4 U off, reference harness tests/ref/num_ref.py) */
     double cond = s[0] / s[n - 1];
-    double cond_err = fmax((s[0] + se[0]) / smin_lo - cond, cond - (s[0] - se[0]) / (s[n - 1] + se[n - 1]));
-    mm_res_scalar_err(res, O_COND, cond, cond_err + U * cond, MM_ERR_BOUND);
+    double cond_err = (1 + 8 * U) * cond * ((1 + U) * (se[0] / s[0] + se[n - 1] / smin_lo) + U);
+    mm_res_scalar_err(res, O_COND, cond, cond_err, MM_ERR_BOUND);
 
     /* the residual of the printed x, in double-double (eq. 3-4).  Its value
      * is rounding-level: the exact solution has residual 0, and rounding it

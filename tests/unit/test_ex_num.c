@@ -684,6 +684,23 @@ static void linear_system_hilbert_12_cond_should_be_right(void **state)
     done(&a);
 }
 
+/* The printed cond's error bounds the double as printed, not only to half an
+ * ulp more (within_its_error's slack): at the defaults cond = 88.44827992069861
+ * is 1.4 U off the exact 88.448279920698623522 (mpmath svd at 50 digits),
+ * and the bound was U cond alone, because s_1 + e_1 rounded back to s_1
+ * (found by tests/ref/num_ref.py). */
+static void linear_system_cond_error_should_bound_the_printed_double(void **state)
+{
+    (void)state;
+    answer a = solve("num-linear-system", NULL);
+    double c = scalar(&a, "cond"), e = scalar_err(&a, "cond"), exact = 88.448279920698623522;
+    if (!(fabs(c - exact) <= e))
+        fail_msg("cond = %.17g, exact %.20g: off by %.3g, printed error %.3g", c, exact, fabs(c - exact), e);
+    /* and still a rounding-level bound: a few U of cond */
+    assert_true(e < 4 * EPS * exact);
+    done(&a);
+}
+
 static const char *hilbert12(void)
 {
     static char M[4096];
@@ -916,6 +933,7 @@ int main(void)
         cmocka_unit_test(complex_root_of_minus_one_should_have_an_exact_zero_real_part),
         cmocka_unit_test(linear_system_cond_should_be_right_for_a_nearly_singular_matrix),
         cmocka_unit_test(linear_system_hilbert_12_cond_should_be_right),
+        cmocka_unit_test(linear_system_cond_error_should_bound_the_printed_double),
         cmocka_unit_test(eigen_small_eigenvalues_should_not_print_zero),
         cmocka_unit_test(eigen_ill_conditioned_mass_should_give_true_eigenvalues_and_warn),
         cmocka_unit_test(eigen_graded_chain_should_give_lambda_min_to_its_last_digit),
