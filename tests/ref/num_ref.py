@@ -359,6 +359,22 @@ def mp_function(text):
     return lambda x: eval(code, dict(env), {"x": x})
 
 
+def bisect(f, lo, hi, flo):
+    """The root of f in [lo, hi] where f changes sign, to the working precision."""
+    for _ in range(mp.mp.prec + 100):
+        mid = (lo + hi) / 2
+        if mid == lo or mid == hi:
+            break
+        fm = f(mid)
+        if fm == 0:
+            return mid
+        if (fm < 0) == (flo < 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+    return (lo + hi) / 2
+
+
 def ex_nonlinear_roots(p, ans, T):
     S = scalars(ans)
     f = mp_function(p["f"])
@@ -372,7 +388,7 @@ def ex_nonlinear_roots(p, ans, T):
         if fs[i] == 0:
             exact.append(xs[i])
         elif fs[i] * fs[i + 1] < 0:
-            exact.append(mp.findroot(f, (xs[i], xs[i + 1]), solver="anderson"))
+            exact.append(bisect(f, xs[i], xs[i + 1], fs[i]))
     if fs[g] == 0:
         exact.append(xs[g])
     sc(T, S, "count", len(exact), 1)
@@ -400,8 +416,10 @@ def _ex_plot(p, ans, T):
     a, b, np_ = mp.mpf(p["a"]), mp.mpf(p["b"]), int(p["points"])
     sc(T, S, "points", np_, 1)
     s = series(ans, "f")
-    # extremes: a grid 4x the plot, the best local extremes refined by a root of f' in 34 digits
-    g = max(4 * np_, 1000)
+    # extremes: a grid 4x the plot and at most 0.05 apart (the default f's features are ~1 wide),
+    # the best local extremes refined by a root of f' in 34 digits; the printed x_max / x_min
+    # are one more start (a start can only raise the reference's maximum, never fake it)
+    g = max(4 * np_, int(mp.ceil((b - a) / mp.mpf("0.05"))), 1000)
     xs = [a + (b - a) * i / g for i in range(g + 1)]
     fs = [f(x) for x in xs]
     height = max(fs) - min(fs)
@@ -410,9 +428,13 @@ def _ex_plot(p, ans, T):
     for sign, nv, nx in ((1, "max", "x_max"), (-1, "min", "x_min")):
         cand = [(sign * fs[0], xs[0]), (sign * fs[g], xs[g])]
         loc = [i for i in range(1, g) if sign * fs[i] >= sign * fs[i - 1] and sign * fs[i] >= sign * fs[i + 1]]
-        for i in sorted(loc, key=lambda i: -sign * fs[i])[:4]:
+        starts = [(xs[i - 1], xs[i + 1]) for i in sorted(loc, key=lambda i: -sign * fs[i])[:6]]
+        if nx in S:
+            xp, dx = mp.mpf(S[nx]["value"]), (b - a) / g
+            starts.append((max(a, xp - dx), min(b, xp + dx)))
+        for lo, hi in starts:
             try:
-                x = mp.findroot(lambda t: mp.diff(f, t), (xs[i - 1], xs[i + 1]), solver="anderson")
+                x = mp.findroot(lambda t: mp.diff(f, t), (lo, hi), solver="anderson")
                 if a <= x <= b:
                     cand.append((sign * f(x), x))
             except (ValueError, ZeroDivisionError):
