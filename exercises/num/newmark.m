@@ -73,7 +73,8 @@ for pass = 1:2
       dd = max(dd, norm(y(1:n) - Q(:, idx(j)), inf));
     end
     out.discrete_difference = dd;
-    err_ref = 8*eps*numel(idx)*max(max(abs([Q(:, idx), Qx(:, idx)])));
+    % rounding of the powers at each plotted step, and eps per radian of omega t (force, modes)
+    err_ref = eps*(8*numel(idx) + 2*(omega + out.omega_max)*N*h)*max(max(abs([Q(:, idx), Qx(:, idx)])));
   else
     % the reference: ode45 at a tight tolerance (the C code uses DOP853 at 1e-11)
     opts = odeset('RelTol', 1e-10, 'AbsTol', 1e-10*max(max(abs(Q(:, idx)))));
