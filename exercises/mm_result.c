@@ -8,7 +8,7 @@
 #include <string.h>
 
 enum { BLOCK_MIN = 16 * 1024, ALIGN = 16 };
-#define SPARE_MAX ((size_t)4 << 20)     /* a thread keeps one block up to this size */
+#define SPARE_MAX ((size_t)1 << 20)     /* a thread keeps one block up to this size */
 
 /* The block a thread keeps between results (mm_result_keep_blocks): the
  * server's workers solve one request after another, and a block of 64 KiB

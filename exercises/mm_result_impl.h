@@ -95,7 +95,7 @@ void mm_result_bind(mm_result *r, const mm_exercise *ex);
 void mm_result_release(mm_result *r);
 
 /* on: the calling thread keeps the largest block of each released arena
- * (up to 4 MiB) for its next result, which then needs no new memory;
+ * (up to 1 MiB) for its next result, which then needs no new memory;
  * off: that block is freed (call it before the thread ends).  Off by
  * default; the server's solve workers turn it on. */
 void mm_result_keep_blocks(int on);

@@ -38,7 +38,7 @@
 #define GZ_DOC        9             /* documents: once, at start and reload */
 #define STATIC_MEMO_MAX (64u << 20) /* bytes of static files kept in memory */
 #define STATIC_FILE_MAX (16u << 20) /* larger files are sent from disk each time */
-#define OUT_KEEP_GZ   ((size_t)1 << 20) /* a thread keeps its compression buffer up to this size */
+#define OUT_KEEP_GZ   ((size_t)256 << 10) /* a thread keeps its compression buffer up to this size */
 #define ASSET_TOKEN   "__MM_ASSET_VERSION__"
 #define YEAR_CACHE    "public, max-age=31536000, immutable"
 
@@ -1058,7 +1058,7 @@ static void run_task(mm_server *s, job *j)
     free(j);
 }
 
-#define OUT_KEEP ((size_t)4 << 20)   /* a worker keeps its answer buffer up to this size */
+#define OUT_KEEP ((size_t)1 << 20)   /* a worker keeps its answer buffer up to this size */
 
 /* A copy of the n bytes at p in a block of its own size, NUL-terminated. */
 static char *dup_exact(const char *p, size_t n)
