@@ -75,4 +75,18 @@ int mm_sta_couple(mm_result *res, const char *name, double x, double y, double r
  * viewer and left, y right, z up, into the drawing's (u, v). */
 void mm_sta_project(double x, double y, double z, double *u, double *v);
 
+/* 3-D diagrams in that projection: a straight line from a to b, and a
+ * force or moment v [unit] at p drawn at `scale` per unit, its tail on p
+ * (head = 0) or its head on p (head = 1, a load pushing on the body);
+ * value |v|.  style as mm_sta_line. */
+int mm_sta_line3(mm_result *res, const char *name, const double *a, const double *b, const char *style);
+int mm_sta_arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale, int head,
+                  const char *unit, const char *style);
+
+/* Vectors in space as three doubles: c = a x b (c must not alias a or b),
+ * a . b and |a|. */
+void mm_sta_cross(const double *a, const double *b, double *c);
+double mm_sta_dot(const double *a, const double *b);
+double mm_sta_norm(const double *a);
+
 #endif
