@@ -200,6 +200,26 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
     return MM_OK;
 }
 
+int mm_ex_sdof_plot(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_series *sx, mm_series *se,
+                    mm_result *res, mm_error *err)
+{
+    int n = sx ? sx->n : 0;
+    double *xi = sx && se ? mm_res_alloc(res, (size_t)n * sizeof *xi) : NULL;
+    if (!xi)
+        return MM_ENOMEM;
+    mm_linspace(0, t_end, n, sx->x);
+    double worst;
+    int rc = mm_ex_sdof_response(s, p, t_end, n, sx->x, sx->y, xi, &worst, res, err);
+    if (rc != MM_OK)
+        return rc;
+    for (int i = 0; i < n; i++) {
+        se->x[i] = sx->x[i];
+        se->y[i] = xi[i] - sx->y[i];
+    }
+    mm_ex_round_sig(se->y, n, 3);
+    return MM_OK;
+}
+
 /* One measurement of the steady state at rtol (see mm_ex_sdof_steady_measure). */
 static int steady_once(const mm_sdof *s, const mm_sdof_props *p, int periods, double rtol,
                        double *X, double *lag, mm_result *res, mm_error *err)

@@ -116,20 +116,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     mm_res_scalar(res, O_CCRIT, 2 * sqrt(s.k * s.m));
 
-    mm_series *sx = mm_res_series(res, O_X, n), *se = mm_res_series(res, O_ERR, n);
-    double *xi = mm_res_alloc(res, (size_t)n * sizeof *xi);
-    if (!sx || !se || !xi)
-        return MM_ENOMEM;
-    mm_linspace(0, t_end, n, sx->x);
-    double worst;
-    int rc = mm_ex_sdof_response(&s, &p, t_end, n, sx->x, sx->y, xi, &worst, res, err);
+    mm_series *sx = mm_res_series(res, O_X, n);
+    int rc = mm_ex_sdof_plot(&s, &p, t_end, sx, mm_res_series(res, O_ERR, n), res, err);
     if (rc != MM_OK)
         return rc;
-    for (int i = 0; i < n; i++) {
-        se->x[i] = sx->x[i];
-        se->y[i] = xi[i] - sx->y[i];
-    }
-    mm_ex_round_sig(se->y, n, 3);                             /* an error needs no more digits */
 
     /* eq. (5): what the block has lost, by the closed form; its rounding
      * grows with the phase w t_end carried by the cosines */
