@@ -46,11 +46,7 @@ int mm_ex_ode_grid(size_t n, mm_ode_rhs f, void *ctx, const double *y0, double t
     r->t_out = t;
     r->nout = (size_t)nt;
     r->y_out = y;
-    int rc = mm_ode_check(&prob, &opt, r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(n) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, r, err);
     if (rc != MM_OK)
         return rc;
     for (int i = 0; i < nt; i++) {
@@ -554,11 +550,7 @@ int mm_ex_sdof_method(const mm_sdof *s, int m, double h, double rtol, double ato
         } else {
             r.t_steps = t, r.y_steps = ys, r.steps_cap = (size_t)cap;
         }
-        rc = mm_ode_check(&prob, &opt, &r, err);
-        mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
-        if (rc == MM_OK)
-            rc = w ? mm_ode_solve(&prob, &opt, w, &r, err) : MM_ENOMEM;
-        mm_ode_work_free(w);
+        rc = mm_ode_run(&prob, &opt, &r, err);
         o->steps = r.n_accepted;
         o->evals = r.n_eval;
         o->rejected = r.n_rejected;

@@ -233,4 +233,9 @@ int mm_ode_check(const mm_ode_problem *prob, const mm_ode_options *opt,
 int mm_ode_solve(const mm_ode_problem *prob, const mm_ode_options *opt,
                  mm_ode_work *w, mm_ode_result *res, mm_error *err);
 
+/* mm_ode_check, then mm_ode_solve with a workspace of prob->n allocated and
+ * freed here (none when the check refuses): the whole ritual of a single
+ * run.  Returns as mm_ode_solve. */
+int mm_ode_run(const mm_ode_problem *prob, const mm_ode_options *opt, mm_ode_result *res, mm_error *err);
+
 #endif

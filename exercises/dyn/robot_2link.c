@@ -133,11 +133,7 @@ static int amplification(const mm_dyn_plan *p, mm_result *res, double *A, mm_err
     opt.atol = 1e-6;
     opt.max_steps = 100000;
     mm_ode_result r = {.t_out = t, .nout = NA, .y_out = y};
-    int rc = mm_ode_check(&prob, &opt, &r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(16) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)
         return rc;
     *A = 1;
@@ -339,11 +335,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     opt.atol = RTOL;
     opt.max_steps = 200000;
     mm_ode_result r = {.t_out = sq1->x, .nout = (size_t)n, .y_out = y};
-    int rc = mm_ode_check(&prob, &opt, &r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(4) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK && p.t_left < 0)
         return rc;
     int done = (int)r.nout_done;

@@ -153,11 +153,7 @@ static int animate(const mm_slider_crank *s, int partition, int ny, double t_end
     opt.atol = rtol;
     opt.max_steps = 1000000;
     mm_ode_result r = {.t_out = a->t, .nout = (size_t)nf, .y_out = yf};
-    int rc = mm_ode_check(&prob, &opt, &r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc((size_t)ny) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)
         return rc;
     double R = s->r, L = s->l, q = mm_dyn_quantum(10 * (R + L));
@@ -240,11 +236,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     opt.atol = RTOL;
     opt.max_steps = 1000000;
     mm_ode_result r = {.t_out = so->x, .nout = (size_t)n, .y_out = y};
-    int rc = mm_ode_check(&prob, &opt, &r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc((size_t)ny) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)
         return rc;
     if (partition)
@@ -313,11 +305,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_ode_options orf = opt;
     orf.rtol = orf.atol = fmax(1e-13, fmin(1e-12, 1e-3 * RTOL));   /* DOP853 struggles below 1e-13 */
     mm_ode_result rref = {.t_out = so->x, .nout = (size_t)n, .y_out = yref};
-    rc = mm_ode_check(&pr, &orf, &rref, err);
-    mm_ode_work *wr = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&pr, &orf, wr, &rref, err);
-    mm_ode_work_free(wr);
+    rc = mm_ode_run(&pr, &orf, &rref, err);
     if (rc != MM_OK)
         return rc;
     double rlo = INFINITY, rhi = -INFINITY, rsum = 0;

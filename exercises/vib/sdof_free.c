@@ -91,9 +91,7 @@ static int damper_work(const mm_sdof *s, const mm_sdof_props *p, double t_end, d
     opt.h_max = 1 / mm_sdof_fastest_rate(s, p);
     opt.max_steps = 1000000;
     mm_ode_result r = {.y_end = y};
-    mm_ode_work *w = mm_ode_work_alloc(3);
-    int rc = w ? mm_ode_solve(&prob, &opt, w, &r, err) : MM_ENOMEM;
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     *D = y[2];
     return rc;
 }
