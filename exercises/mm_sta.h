@@ -12,8 +12,10 @@
  *   - couples are an arc (kind "line", value in N m) with an arrow head.
  *
  * Every function adds shapes to res's animation, which the caller started
- * with mm_sta_fbd(); each returns MM_OK or MM_ENOMEM (sticky in res).
- * Texts are copied into the arena.
+ * with mm_sta_fbd(); each returns MM_OK or MM_ENOMEM.  A failure is
+ * recorded in res (sticky: mm_result_status, and the server refuses the
+ * answer), and every later call is safe, so a drawing is a plain list of
+ * calls whose returns need no checking.  Texts are copied into the arena.
  */
 #ifndef MM_STA_H
 #define MM_STA_H

@@ -178,32 +178,30 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method(res, "closed form (sums of forces and cross products)", 0);
 
     /* the drawing */
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double fmx = 0;
     for (int i = 0; i < Fs->rows; i++)
         fmx = fmax(fmx, mm_sta_norm(Fs->data + 6 * i + 3));
     double L = fmax(size, 1e-3), fs = mm_sta_scale(fmax(fmx, Rn), L, 0.5);
-    for (int i = 0; i < Fs->rows && !rc; i++)
-        rc = mm_sta_arrow3(res, "force", Fs->data + 6 * i, Fs->data + 6 * i + 3, fs, 0, "N", NULL);
-    if (!rc && Rn > tolR) {
-        rc = mm_sta_arrow3(res, "R on the central axis", P, R, fs, 0, "N", "highlight");
+    for (int i = 0; i < Fs->rows; i++)
+        mm_sta_arrow3(res, "force", Fs->data + 6 * i, Fs->data + 6 * i + 3, fs, 0, "N", NULL);
+    if (Rn > tolR) {
+        mm_sta_arrow3(res, "R on the central axis", P, R, fs, 0, "N", "highlight");
         double a[3], b[3];
         for (int k = 0; k < 3; k++)
             a[k] = P[k] - L * R[k] / Rn, b[k] = P[k] + L * R[k] / Rn;
-        if (!rc)
-            rc = mm_sta_line3(res, "central axis", a, b, "ground");
-        if (!rc && kind == 3) {
+        mm_sta_line3(res, "central axis", a, b, "ground");
+        if (kind == 3) {
             double mw[3] = {pitch * R[0], pitch * R[1], pitch * R[2]};
-            rc = mm_sta_arrow3(res, "couple of the wrench", P, mw, 0.5 * L / fabs(pitch * Rn), 0, "N m", "highlight");
+            mm_sta_arrow3(res, "couple of the wrench", P, mw, 0.5 * L / fabs(pitch * Rn), 0, "N m", "highlight");
         }
-    } else if (!rc && kind == 1) {
-        rc = mm_sta_arrow3(res, "couple", O, M, 0.5 * L / Mn, 0, "N m", "highlight");
+    } else if (kind == 1) {
+        mm_sta_arrow3(res, "couple", O, M, 0.5 * L / Mn, 0, "N m", "highlight");
     }
     double u, v;
     mm_sta_project(O[0], O[1], O[2], &u, &v);
-    if (!rc)
-        rc = mm_sta_label(res, u, v, "O: %s", kinds[kind]);
-    return rc;
+    mm_sta_label(res, u, v, "O: %s", kinds[kind]);
+    return MM_OK;
 }
 
 static const char *const references[] = {

@@ -112,38 +112,30 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method(res, "closed form (cross product)", 0);
 
     /* the drawing: axes at O, r - O, F at r, M at O, the axis */
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double size = fmax(wn, 1e-3), fs = Fn > 0 ? 0.6 * size / Fn : 0, ms = Mn > 0 ? 0.6 * size / Mn : 0;
     static const char *const axis_names[3] = {"x", "y", "z"};
-    for (int k = 0; k < 3 && !rc; k++) {
+    for (int k = 0; k < 3; k++) {
         double tip[3] = {O[0], O[1], O[2]};
         tip[k] += 0.5 * size;
-        rc = mm_sta_line3(res, axis_names[k], O, tip, "ground");
-        if (!rc) {
-            double uu, vv;
-            mm_sta_project(tip[0], tip[1], tip[2], &uu, &vv);
-            rc = mm_sta_label(res, uu, vv, "%s", axis_names[k]);
-        }
+        mm_sta_line3(res, axis_names[k], O, tip, "ground");
+        double uu, vv;
+        mm_sta_project(tip[0], tip[1], tip[2], &uu, &vv);
+        mm_sta_label(res, uu, vv, "%s", axis_names[k]);
     }
     double a0[3], a1[3];
     for (int k = 0; k < 3; k++)
         a0[k] = O[k] - 0.7 * size * e[k], a1[k] = O[k] + 0.7 * size * e[k];
-    if (!rc)
-        rc = mm_sta_line3(res, "axis u", a0, a1, "highlight");
-    if (!rc)
-        rc = mm_sta_line3(res, "r - O", O, r, NULL);
-    if (!rc)
-        rc = mm_sta_arrow3(res, "F", r, F, fs, 0, "N", NULL);
-    if (!rc)
-        rc = mm_sta_arrow3(res, "M_O", O, M, ms, 0, "N m", "highlight");
+    mm_sta_line3(res, "axis u", a0, a1, "highlight");
+    mm_sta_line3(res, "r - O", O, r, NULL);
+    mm_sta_arrow3(res, "F", r, F, fs, 0, "N", NULL);
+    mm_sta_arrow3(res, "M_O", O, M, ms, 0, "N m", "highlight");
     double uu, vv;
     mm_sta_project(O[0], O[1], O[2], &uu, &vv);
-    if (!rc)
-        rc = mm_sta_label(res, uu, vv, "O");
+    mm_sta_label(res, uu, vv, "O");
     mm_sta_project(r[0], r[1], r[2], &uu, &vv);
-    if (!rc)
-        rc = mm_sta_label(res, uu, vv, "F = %.4g N", Fn);
-    return rc;
+    mm_sta_label(res, uu, vv, "F = %.4g N", Fn);
+    return MM_OK;
 }
 
 static const char *const references[] = {

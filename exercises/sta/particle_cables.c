@@ -167,35 +167,31 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                          "change the tensions a lot", 1 / er.rcond);
 
     /* the drawing */
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double size = 0;
     for (int i = 0; i < n; i++)
         size = fmax(size, L[i]);
     double fs = mm_sta_scale(fmax(Pn, Tmax), size, 0.4), ru, rv;
     mm_sta_project(ring[0], ring[1], ring[2], &ru, &rv);
-    for (int i = 0; i < n && !rc; i++) {
+    for (int i = 0; i < n; i++) {
         const double *a = in[P_ANCHORS].data + 3 * i;
         double xy[4], au, av;
         mm_sta_project(a[0], a[1], a[2], &au, &av);
         xy[0] = ru, xy[1] = rv, xy[2] = au, xy[3] = av;
         char nm[24];
         snprintf(nm, sizeof nm, "cable %d", i + 1);
-        rc = mm_sta_member(res, nm, ru, rv, au, av, T[i], 1e-9 * Pn);
+        mm_sta_member(res, nm, ru, rv, au, av, T[i], 1e-9 * Pn);
         double box[8] = {au - 0.04 * size, av, au + 0.04 * size, av, au + 0.04 * size, av + 0.04 * size,
                          au - 0.04 * size, av + 0.04 * size};
-        if (!rc)
-            rc = mm_sta_polygon(res, "anchor", 4, box, "ground");
+        mm_sta_polygon(res, "anchor", 4, box, "ground");
         double t[3] = {T[i] * u[i][0], T[i] * u[i][1], T[i] * u[i][2]};
-        if (!rc && T[i] > 0)
-            rc = mm_sta_arrow3(res, "tension", ring, t, fs, 0, "N", "tension");
-        if (!rc)
-            rc = mm_sta_label(res, 0.5 * (ru + au), 0.5 * (rv + av), "T%d = %.4g N", i + 1, T[i]);
+        if (T[i] > 0)
+            mm_sta_arrow3(res, "tension", ring, t, fs, 0, "N", "tension");
+        mm_sta_label(res, 0.5 * (ru + au), 0.5 * (rv + av), "T%d = %.4g N", i + 1, T[i]);
         (void)xy;
     }
-    if (!rc)
-        rc = mm_sta_circle(res, "ring", ru, rv, 0.03 * size, NULL);
-    if (!rc)
-        rc = mm_sta_arrow3(res, "load", ring, P, fs, 0, "N", NULL);
+    mm_sta_circle(res, "ring", ru, rv, 0.03 * size, NULL);
+    mm_sta_arrow3(res, "load", ring, P, fs, 0, "N", NULL);
     return rc;
 }
 

@@ -181,26 +181,24 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method(res, "three equilibrium equations, LU with the rank test", 0);
 
     /* the drawing */
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double sc = mm_sta_scale(fmax(Rmax, Fs), size, 0.25);
-    if (!rc)
-        rc = mm_sta_polygon(res, "body", in[P_BODY].rows, in[P_BODY].data, NULL);
-    for (int k = 0; k < n && !rc; k++) {
+    mm_sta_polygon(res, "body", in[P_BODY].rows, in[P_BODY].data, NULL);
+    for (int k = 0; k < n; k++) {
         const double *l = Lk->data + 4 * k;
         /* the link itself, on the side the reaction pushes from */
-        rc = mm_sta_line(res, "link", l[0], l[1], l[0] - 0.12 * size * e[k][0], l[1] - 0.12 * size * e[k][1],
+        mm_sta_line(res, "link", l[0], l[1], l[0] - 0.12 * size * e[k][0], l[1] - 0.12 * size * e[k][1],
                          "ground", 0, 0);
-        if (!rc && R[k] != 0)
-            rc = mm_sta_force(res, "reaction", l[0], l[1], R[k] * e[k][0], R[k] * e[k][1], sc, 1);
-        if (!rc)
-            rc = mm_sta_label(res, l[0] - 0.15 * size * e[k][0], l[1] - 0.15 * size * e[k][1], "R%d", k + 1);
+        if (R[k] != 0)
+            mm_sta_force(res, "reaction", l[0], l[1], R[k] * e[k][0], R[k] * e[k][1], sc, 1);
+        mm_sta_label(res, l[0] - 0.15 * size * e[k][0], l[1] - 0.15 * size * e[k][1], "R%d", k + 1);
     }
-    for (int i = 0; i < Ld->rows && !rc; i++) {
+    for (int i = 0; i < Ld->rows; i++) {
         const double *p = Ld->data + 4 * i;
-        rc = mm_sta_force(res, "load", p[0], p[1], p[2], p[3], sc, 1);
+        mm_sta_force(res, "load", p[0], p[1], p[2], p[3], sc, 1);
     }
-    if (!rc && in[P_C].x != 0)
-        rc = mm_sta_couple(res, "couple", 0.5 * size, 0, 0.08 * size, in[P_C].x);
+    if (in[P_C].x != 0)
+        mm_sta_couple(res, "couple", 0.5 * size, 0, 0.08 * size, in[P_C].x);
     return rc;
 }
 

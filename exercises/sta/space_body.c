@@ -172,28 +172,26 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method(res, "six equilibrium equations, LU with the rank test", 0);
 
     /* the drawing */
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double sc = mm_sta_scale(fmax(Rmax, Fs), size, 0.3), xy[2 * 50];
     for (int i = 0; i < in[P_BODY].rows; i++)
         mm_sta_project(in[P_BODY].data[3 * i], in[P_BODY].data[3 * i + 1], in[P_BODY].data[3 * i + 2], &xy[2 * i],
                        &xy[2 * i + 1]);
-    if (!rc)
-        rc = mm_sta_polygon(res, "body", in[P_BODY].rows, xy, NULL);
-    for (int k = 0; k < n && !rc; k++) {
+    mm_sta_polygon(res, "body", in[P_BODY].rows, xy, NULL);
+    for (int k = 0; k < n; k++) {
         const double *l = Lk->data + 6 * k;
         double len = mm_sta_norm(l + 3), e[3] = {l[3] / len, l[4] / len, l[5] / len}, t[4], f[3];
         mm_sta_project(l[0], l[1], l[2], &t[0], &t[1]);
         mm_sta_project(l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], l[2] - 0.15 * size * e[2], &t[2], &t[3]);
-        rc = mm_sta_path(res, "link", 2, t, "ground");
+        mm_sta_path(res, "link", 2, t, "ground");
         for (int c = 0; c < 3; c++)
             f[c] = R[k] * e[c];
-        if (!rc && R[k] != 0)
-            rc = mm_sta_arrow3(res, "reaction", l, f, sc, 1, "N", NULL);
-        if (!rc)
-            rc = mm_sta_label(res, t[2], t[3], "R%d", k + 1);
+        if (R[k] != 0)
+            mm_sta_arrow3(res, "reaction", l, f, sc, 1, "N", NULL);
+        mm_sta_label(res, t[2], t[3], "R%d", k + 1);
     }
-    for (int i = 0; i < Ld->rows && !rc; i++)
-        rc = mm_sta_arrow3(res, "load", Ld->data + 6 * i, Ld->data + 6 * i + 3, sc, 1, "N", NULL);
+    for (int i = 0; i < Ld->rows; i++)
+        mm_sta_arrow3(res, "load", Ld->data + 6 * i, Ld->data + 6 * i + 3, sc, 1, "N", NULL);
     return rc;
 }
 
