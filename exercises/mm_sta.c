@@ -243,3 +243,19 @@ double mm_sta_norm(const double *a)
 {
     return sqrt(mm_sta_dot(a, a));
 }
+
+double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr)
+{
+    double Rmax = 0;
+    mm_series *rp = mm_res_series(res, out_plot, n);
+    for (int k = 0; k < n; k++) {
+        double shown = fabs(R[k]) <= rerr ? 0 : R[k];
+        mm_scalar *s = mm_res_scalar_i(res, out, k + 1, shown);
+        if (s)
+            s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;
+        if (rp)
+            rp->x[k] = k + 1, rp->y[k] = shown;
+        Rmax = fmax(Rmax, fabs(R[k]));
+    }
+    return Rmax;
+}

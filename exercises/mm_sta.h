@@ -85,6 +85,13 @@ int mm_sta_line3(mm_result *res, const char *name, const double *a, const double
 int mm_sta_arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale, int head,
                   const char *unit, const char *style);
 
+/* Support reactions or member forces R[0..n-1] with the error estimate
+ * rerr (cond x eps of the loads): the scalars out_1..out_n, a value within
+ * rerr of zero printed as 0, and the series out_plot (x = 1..n) of the
+ * same.  R itself is left as it is.  Returns the largest |R[k]| (the series
+ * lost to memory is recorded in res). */
+double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr);
+
 /* Vectors in space as three doubles: c = a x b (c must not alias a or b),
  * a . b and |a|. */
 void mm_sta_cross(const double *a, const double *b, double *c);

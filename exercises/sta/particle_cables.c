@@ -126,21 +126,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             return mm_error_set(err, MM_ESINGULAR, "anchors",
                                 "cable %d would have to push (T = %.4g N): a cable can only pull; the load must "
                                 "point away from the anchors, inside the cone of the cables", i + 1, T[i]);
-    double Tmax = 0;
-    for (int i = 0; i < n; i++) {
-        if (fabs(T[i]) <= 4 * DBL_EPSILON * Pn / er.rcond)
-            T[i] = 0;                                   /* a slack cable: 0, not rounding */
-        mm_scalar *sc = mm_res_scalar_i(res, O_T, i + 1, T[i]);
-        sc->error = 4 * DBL_EPSILON * Pn / er.rcond;    /* cond * eps of the load */
-        sc->error_kind = MM_ERR_ESTIMATE;
-        Tmax = fmax(Tmax, T[i]);
-    }
-    mm_res_scalar_err(res, O_TMAX, Tmax, 4 * DBL_EPSILON * Pn / er.rcond, MM_ERR_ESTIMATE);
-    mm_series *tp = mm_res_series(res, O_TPLOT, n);
-    if (!tp)
-        return MM_ENOMEM;
+    double rerr = 4 * DBL_EPSILON * Pn / er.rcond;      /* cond * eps of the load */
     for (int i = 0; i < n; i++)
-        tp->x[i] = i + 1, tp->y[i] = T[i];
+        if (fabs(T[i]) <= rerr)
+            T[i] = 0;                                   /* a slack cable: 0, not rounding */
+    double Tmax = mm_sta_reactions(res, O_T, O_TPLOT, n, T, rerr);   /* no cable pushes: largest |T| = largest T */
+    mm_res_scalar_err(res, O_TMAX, Tmax, rerr, MM_ERR_ESTIMATE);
 
     /* check 1: the ring in equilibrium, eq. (1) */
     double sum[3] = {P[0], P[1], P[2]}, scale = Pn;

@@ -122,17 +122,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         *err = e2;
         return rc;
     }
-    double rerr = 4 * DBL_EPSILON * Fs / er.rcond, Rmax = 0;
-    for (int k = 0; k < n; k++) {
-        mm_scalar *s = mm_res_scalar_i(res, O_R, k + 1, fabs(R[k]) <= rerr ? 0 : R[k]);
-        s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;
-        Rmax = fmax(Rmax, fabs(R[k]));
-    }
-    mm_series *rp = mm_res_series(res, O_RPLOT, n);
-    if (!rp)
-        return MM_ENOMEM;
-    for (int k = 0; k < n; k++)
-        rp->x[k] = k + 1, rp->y[k] = fabs(R[k]) <= rerr ? 0 : R[k];
+    double Rmax = mm_sta_reactions(res, O_R, O_RPLOT, n, R, 4 * DBL_EPSILON * Fs / er.rcond);
     /* check 1: eq. (1) put back */
     double worst = 0, scale = 0;
     for (int c = 0; c < 6; c++) {
