@@ -35,13 +35,8 @@ int mm_ex_ode_grid(size_t n, mm_ode_rhs f, void *ctx, const double *y0, double t
     if (!y)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_ode_problem prob = {.n = n, .f = f, .params = ctx, .t0 = 0, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = rtol;
-    opt.atol = atol > 0 ? atol : rtol;
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, atol > 0 ? atol : rtol, 1000000);
     opt.h_max = h_max;
-    opt.max_steps = 1000000;
     *r = (mm_ode_result){0};
     r->t_out = t;
     r->nout = (size_t)nt;

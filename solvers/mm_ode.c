@@ -1258,3 +1258,14 @@ int mm_ode_run(const mm_ode_problem *prob, const mm_ode_options *opt, mm_ode_res
     mm_ode_work_free(w);
     return rc;
 }
+
+mm_ode_options mm_ode_options_adaptive(mm_ode_method m, double rtol, double atol, long max_steps)
+{
+    mm_ode_options o;
+    mm_ode_options_init(&o);
+    o.method = m;
+    o.rtol = rtol;
+    o.atol = atol;
+    o.max_steps = max_steps;
+    return o;
+}

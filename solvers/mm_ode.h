@@ -124,6 +124,11 @@ typedef struct mm_ode_options {
                          (default); 0 = the elementary controller */
 } mm_ode_options;
 
+/* The defaults of mm_ode_options_init with an adaptive method m, its
+ * tolerances and its budget of step attempts: the options of most runs in
+ * one expression. */
+mm_ode_options mm_ode_options_adaptive(mm_ode_method m, double rtol, double atol, long max_steps);
+
 /* Opaque scratch space for systems up to a size n (28 n doubles). */
 typedef struct mm_ode_work mm_ode_work;
 

@@ -146,12 +146,7 @@ static int animate(const mm_slider_crank *s, int partition, int ny, double t_end
     mm_dyn_frame_times(a, t_show);
     mm_ode_problem prob = {.n = (size_t)ny, .f = partition ? mm_sc_rhs_reduced : mm_sc_rhs_baumgarte,
                            .params = sys, .t0 = 0, .t_end = t_show > 0 ? t_show : t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = rtol;
-    opt.atol = rtol;
-    opt.max_steps = 1000000;
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol, 1000000);
     mm_ode_result r = {.t_out = a->t, .nout = (size_t)nf, .y_out = yf};
     int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)
@@ -229,12 +224,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     mm_ode_problem prob = {.n = (size_t)ny, .f = partition ? mm_sc_rhs_reduced : mm_sc_rhs_baumgarte,
                            .params = &sys, .t0 = 0, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = RTOL;
-    opt.atol = RTOL;
-    opt.max_steps = 1000000;
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, RTOL, RTOL, 1000000);
     mm_ode_result r = {.t_out = so->x, .nout = (size_t)n, .y_out = y};
     int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)

@@ -83,13 +83,9 @@ static int damper_work(const mm_sdof *s, const mm_sdof_props *p, double t_end, d
     double E0 = mm_sdof_energy(s, s->x0, s->v0), size = sqrt(2 * E0 / s->k);
     double y0[3] = {s->x0, s->v0, 0}, y[3];
     mm_ode_problem prob = {.n = 3, .f = rhs_energy, .params = (void *)s, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = rtol;
-    opt.atol = rtol * fmin(fmin(size, size * p->omega_n), E0);
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol * fmin(fmin(size, size * p->omega_n), E0),
+                                                 1000000);
     opt.h_max = 1 / mm_sdof_fastest_rate(s, p);
-    opt.max_steps = 1000000;
     mm_ode_result r = {.y_end = y};
     int rc = mm_ode_run(&prob, &opt, &r, err);
     *D = y[2];

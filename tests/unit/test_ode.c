@@ -1328,6 +1328,23 @@ static void run_should_give_what_check_and_solve_give_and_refuse_what_check_refu
     assert_int_equal(c3.calls, 0);
 }
 
+/* mm_ode_options_adaptive is mm_ode_options_init with the method, the two
+ * tolerances and the step budget set, and nothing else changed. */
+static void options_adaptive_should_be_the_defaults_with_four_fields_set(void **state)
+{
+    (void)state;
+    mm_ode_options want, got = mm_ode_options_adaptive(MM_ODE_DOP853, 1e-8, 1e-11, 12345);
+    mm_ode_options_init(&want);
+    want.method = MM_ODE_DOP853;
+    want.rtol = 1e-8;
+    want.atol = 1e-11;
+    want.max_steps = 12345;
+    assert_int_equal(got.method, want.method);
+    assert_true(got.rtol == want.rtol && got.atol == want.atol && got.max_steps == want.max_steps);
+    assert_true(got.h == want.h && got.h_init == want.h_init && got.h_max == want.h_max);
+    assert_int_equal(got.pi_control, want.pi_control);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1355,6 +1372,7 @@ int main(void)
         cmocka_unit_test(run_should_give_what_check_and_solve_give_and_refuse_what_check_refuses),
         cmocka_unit_test(work_alloc_should_refuse_bad_sizes_and_free_null),
         cmocka_unit_test(options_init_should_fill_the_documented_defaults),
+        cmocka_unit_test(options_adaptive_should_be_the_defaults_with_four_fields_set),
         cmocka_unit_test(solve_should_stop_when_the_callback_returns_nonzero),
         cmocka_unit_test(adaptive_run_should_report_nonfinite_when_f_gives_nan),
         cmocka_unit_test(fixed_step_beyond_the_stability_limit_should_report_nonfinite),
