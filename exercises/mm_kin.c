@@ -360,3 +360,25 @@ void mm_kin_rank_checks(mm_result *res, const double *sv, int k, int rank, int m
         mm_res_check_abs(res, "smallest singular value counted as non-zero: well clear of rounding (>= 1e-6 sigma_1)",
                          fmin(sv[rank - 1], 1e-6 * sv[0]), 1e-6 * sv[0], 0);
 }
+
+int mm_kin_curve_solve(const mm_value *in, int px, int py,
+                       int (*run)(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *err),
+                       mm_result *res, mm_error *err)
+{
+    mm_kin_curve c;
+    int rc = mm_kin_curve_compile(&c, in[px].text, in[py].text, "x", "y", err);
+    if (rc != MM_OK)
+        return rc;
+    rc = run(&c, in, res, err);
+    mm_kin_curve_free(&c);
+    return rc;
+}
+
+int mm_kin_check_window(double t0, double t1, double t, mm_error *err)
+{
+    if (!(t1 > t0))
+        return mm_error_set(err, MM_ERANGE, "t1", "t1 must be later than t0 = %g s; got %g s", t0, t1);
+    if (t < t0 || t > t1)
+        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion shown, %g to %g s; got %g s", t0, t1, t);
+    return MM_OK;
+}

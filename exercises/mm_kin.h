@@ -135,6 +135,17 @@ int mm_kin_curve_compile(mm_kin_curve *c, const char *x, const char *y, const ch
                          mm_error *err);
 void mm_kin_curve_free(mm_kin_curve *c);
 
+/* The solve of an exercise on a typed curve: compile the expressions of
+ * the parameters px and py (named x and y), run, free.  Returns
+ * mm_kin_curve_compile's code or run's. */
+int mm_kin_curve_solve(const mm_value *in, int px, int py,
+                       int (*run)(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *err),
+                       mm_result *res, mm_error *err);
+
+/* The joint limits of a motion shown from t0 to t1 and asked at t:
+ * t1 > t0 (else MM_ERANGE naming "t1"), t within [t0, t1] (naming "t"). */
+int mm_kin_check_window(double t0, double t1, double t, mm_error *err);
+
 /* (x(t), y(t)) into out; MM_ENONFINITE when either is not finite (an
  * mm_geom_curve_fn, ctx is the curve).  Does not fill an mm_error. */
 int mm_kin_curve_eval(double t, double *out, void *ctx);
