@@ -381,18 +381,9 @@ int mm_dyn_dpend_run(const mm_dpend *s, const double *y0, double t_end, int n, c
 {
     mm_ode_problem prob = {.n = 4, .f = mm_dpend_rhs_lagrange, .params = (void *)s, .t0 = 0, .t_end = t_end,
                            .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = m;
-    opt.rtol = rtol;
-    opt.atol = rtol;
-    opt.max_steps = 2000000;
+    mm_ode_options opt = mm_ode_options_adaptive(m, rtol, rtol, 2000000);
     *r = (mm_ode_result){.t_out = t, .nout = (size_t)n, .y_out = y};
-    int rc = mm_ode_check(&prob, &opt, r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(4) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, r, err);
     return rc;
 }
 

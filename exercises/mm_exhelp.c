@@ -35,22 +35,13 @@ int mm_ex_ode_grid(size_t n, mm_ode_rhs f, void *ctx, const double *y0, double t
     if (!y)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_ode_problem prob = {.n = n, .f = f, .params = ctx, .t0 = 0, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = rtol;
-    opt.atol = atol > 0 ? atol : rtol;
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, atol > 0 ? atol : rtol, 1000000);
     opt.h_max = h_max;
-    opt.max_steps = 1000000;
     *r = (mm_ode_result){0};
     r->t_out = t;
     r->nout = (size_t)nt;
     r->y_out = y;
-    int rc = mm_ode_check(&prob, &opt, r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(n) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, r, err);
     if (rc != MM_OK)
         return rc;
     for (int i = 0; i < nt; i++) {
@@ -197,6 +188,26 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
                             "its error estimated by a run at rtol/100", n, xi, x,
                             peak > 0 ? tol / peak : 0);
     mm_res_method_stat(res, "max_error", *worst);
+    return MM_OK;
+}
+
+int mm_ex_sdof_plot(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_series *sx, mm_series *se,
+                    mm_result *res, mm_error *err)
+{
+    int n = sx ? sx->n : 0;
+    double *xi = sx && se ? mm_res_alloc(res, (size_t)n * sizeof *xi) : NULL;
+    if (!xi)
+        return MM_ENOMEM;
+    mm_linspace(0, t_end, n, sx->x);
+    double worst;
+    int rc = mm_ex_sdof_response(s, p, t_end, n, sx->x, sx->y, xi, &worst, res, err);
+    if (rc != MM_OK)
+        return rc;
+    for (int i = 0; i < n; i++) {
+        se->x[i] = sx->x[i];
+        se->y[i] = xi[i] - sx->y[i];
+    }
+    mm_ex_round_sig(se->y, n, 3);
     return MM_OK;
 }
 
@@ -534,11 +545,7 @@ int mm_ex_sdof_method(const mm_sdof *s, int m, double h, double rtol, double ato
         } else {
             r.t_steps = t, r.y_steps = ys, r.steps_cap = (size_t)cap;
         }
-        rc = mm_ode_check(&prob, &opt, &r, err);
-        mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
-        if (rc == MM_OK)
-            rc = w ? mm_ode_solve(&prob, &opt, w, &r, err) : MM_ENOMEM;
-        mm_ode_work_free(w);
+        rc = mm_ode_run(&prob, &opt, &r, err);
         o->steps = r.n_accepted;
         o->evals = r.n_eval;
         o->rejected = r.n_rejected;

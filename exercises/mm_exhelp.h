@@ -78,6 +78,15 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
                         const double *t, double *x, double *xi, double *worst, mm_result *res,
                         mm_error *err);
 
+/* The plotted response of s from 0 to t_end on sx->n equally spaced times
+ * (mm_linspace): the closed form into sx and DOP853 beside it, checked
+ * (mm_ex_sdof_response), and DOP853's difference from the closed form into
+ * se, rounded to 3 significant digits (an error needs no more).  sx and se
+ * come from mm_res_series (NULL: MM_ENOMEM, already recorded in res).
+ * Returns MM_OK or the solver's code with err filled. */
+int mm_ex_sdof_plot(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_series *sx, mm_series *se,
+                    mm_result *res, mm_error *err);
+
 /* Round-off in a time response over `radians` of the fastest motion of
  * largest size peak: 16 eps (1 + radians) peak (the closed form's cosines
  * carry eps of their argument; an integrator adds eps a step). */

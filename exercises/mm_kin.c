@@ -216,6 +216,26 @@ int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos
     return MM_OK;
 }
 
+int mm_kin_fd_va(mm_result *res, int out_v, int out_a, const char *what_v, const char *what_a, mm_kin_pos_fn pos,
+                 void *ctx, int k, const double *w, int n, const double *d1, const double *d2, double h0,
+                 double d1_err, double d2_err, mm_error *err)
+{
+    if (n <= 0)
+        return MM_OK;
+    mm_kin_fd fd;
+    int rc = mm_kin_fd_study(res, out_v, what_v, pos, ctx, k, w, n, d1, 1, h0, 24, d1_err, &fd, err);
+    if (rc == MM_OK)
+        rc = mm_kin_fd_study(res, out_a, what_a, pos, ctx, k, w, n, d2, 2, h0, 18, d2_err, &fd, err);
+    return rc;
+}
+
+int mm_kin_check_t(double t, double t_end, mm_error *err)
+{
+    if (t > t_end)
+        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion, 0 to t_end = %g s; got %g s", t_end, t);
+    return MM_OK;
+}
+
 /* ---- a plane curve typed as two expressions of t ------------------------------------ */
 
 int mm_kin_curve_compile(mm_kin_curve *c, const char *x, const char *y, const char *px, const char *py,
@@ -339,4 +359,26 @@ void mm_kin_rank_checks(mm_result *res, const double *sv, int k, int rank, int m
     if (rank > 0)
         mm_res_check_abs(res, "smallest singular value counted as non-zero: well clear of rounding (>= 1e-6 sigma_1)",
                          fmin(sv[rank - 1], 1e-6 * sv[0]), 1e-6 * sv[0], 0);
+}
+
+int mm_kin_curve_solve(const mm_value *in, int px, int py,
+                       int (*run)(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *err),
+                       mm_result *res, mm_error *err)
+{
+    mm_kin_curve c;
+    int rc = mm_kin_curve_compile(&c, in[px].text, in[py].text, "x", "y", err);
+    if (rc != MM_OK)
+        return rc;
+    rc = run(&c, in, res, err);
+    mm_kin_curve_free(&c);
+    return rc;
+}
+
+int mm_kin_check_window(double t0, double t1, double t, mm_error *err)
+{
+    if (!(t1 > t0))
+        return mm_error_set(err, MM_ERANGE, "t1", "t1 must be later than t0 = %g s; got %g s", t0, t1);
+    if (t < t0 || t > t1)
+        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion shown, %g to %g s; got %g s", t0, t1, t);
+    return MM_OK;
 }

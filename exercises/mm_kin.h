@@ -106,6 +106,20 @@ int mm_kin_fd_study(mm_result *res, int out, const char *what, mm_kin_pos_fn pos
                     const double *w, int n, const double *d, int deriv, double h0, int nh, double d_err,
                     mm_kin_fd *fd, mm_error *err);
 
+/* The study every kinematic answer makes of its velocity and acceleration:
+ * mm_kin_fd_study of order 1 over 24 steps from h0 (series out_v, checks
+ * named what_v) and then, when that went well, of order 2 over 18 steps
+ * (out_a, what_a); d1 and d2 are the analytic derivatives (n x k), d1_err
+ * and d2_err bound their own error (0 for a closed form).  n = 0: nothing
+ * to study, MM_OK.  Returns MM_OK or pos's code. */
+int mm_kin_fd_va(mm_result *res, int out_v, int out_a, const char *what_v, const char *what_a, mm_kin_pos_fn pos,
+                 void *ctx, int k, const double *w, int n, const double *d1, const double *d2, double h0,
+                 double d1_err, double d2_err, mm_error *err);
+
+/* The joint limit of a motion shown from 0 to t_end and asked at t:
+ * t <= t_end, else MM_ERANGE naming "t". */
+int mm_kin_check_t(double t, double t_end, mm_error *err);
+
 /* ---- a plane curve typed as two expressions of t ------------------------------------ */
 
 typedef struct mm_expr mm_expr;
@@ -120,6 +134,17 @@ typedef struct mm_kin_curve {
 int mm_kin_curve_compile(mm_kin_curve *c, const char *x, const char *y, const char *px, const char *py,
                          mm_error *err);
 void mm_kin_curve_free(mm_kin_curve *c);
+
+/* The solve of an exercise on a typed curve: compile the expressions of
+ * the parameters px and py (named x and y), run, free.  Returns
+ * mm_kin_curve_compile's code or run's. */
+int mm_kin_curve_solve(const mm_value *in, int px, int py,
+                       int (*run)(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *err),
+                       mm_result *res, mm_error *err);
+
+/* The joint limits of a motion shown from t0 to t1 and asked at t:
+ * t1 > t0 (else MM_ERANGE naming "t1"), t within [t0, t1] (naming "t"). */
+int mm_kin_check_window(double t0, double t1, double t, mm_error *err);
 
 /* (x(t), y(t)) into out; MM_ENONFINITE when either is not finite (an
  * mm_geom_curve_fn, ctx is the curve).  Does not fill an mm_error. */

@@ -197,3 +197,65 @@ void mm_sta_project(double x, double y, double z, double *u, double *v)
     *u = y - 0.5 * x * cos(M_PI / 6);
     *v = z - 0.5 * x * sin(M_PI / 6);
 }
+
+int mm_sta_line3(mm_result *res, const char *name, const double *a, const double *b, const char *style)
+{
+    double xy[4];
+    mm_sta_project(a[0], a[1], a[2], &xy[0], &xy[1]);
+    mm_sta_project(b[0], b[1], b[2], &xy[2], &xy[3]);
+    return mm_sta_path(res, name, 2, xy, style);
+}
+
+int mm_sta_arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale, int head,
+                  const char *unit, const char *style)
+{
+    double u0, v0, u1, v1;
+    if (head) {
+        mm_sta_project(p[0] - scale * v[0], p[1] - scale * v[1], p[2] - scale * v[2], &u0, &v0);
+        mm_sta_project(p[0], p[1], p[2], &u1, &v1);
+    } else {
+        mm_sta_project(p[0], p[1], p[2], &u0, &v0);
+        mm_sta_project(p[0] + scale * v[0], p[1] + scale * v[1], p[2] + scale * v[2], &u1, &v1);
+    }
+    mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_ARROW, 1, 2);
+    double *val = s ? mm_shape_values(res, s) : NULL;
+    if (!val)
+        return MM_ENOMEM;
+    s->x[0] = u0, s->y[0] = v0, s->x[1] = u1, s->y[1] = v1;
+    s->unit = unit, s->scale = scale, s->style = style;
+    val[0] = mm_sta_norm(v);
+    return MM_OK;
+}
+
+void mm_sta_cross(const double *a, const double *b, double *c)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+double mm_sta_dot(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+double mm_sta_norm(const double *a)
+{
+    return sqrt(mm_sta_dot(a, a));
+}
+
+double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr)
+{
+    double Rmax = 0;
+    mm_series *rp = mm_res_series(res, out_plot, n);
+    for (int k = 0; k < n; k++) {
+        double shown = fabs(R[k]) <= rerr ? 0 : R[k];
+        mm_scalar *s = mm_res_scalar_i(res, out, k + 1, shown);
+        if (s)
+            s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;
+        if (rp)
+            rp->x[k] = k + 1, rp->y[k] = shown;
+        Rmax = fmax(Rmax, fabs(R[k]));
+    }
+    return Rmax;
+}

@@ -12,8 +12,10 @@
  *   - couples are an arc (kind "line", value in N m) with an arrow head.
  *
  * Every function adds shapes to res's animation, which the caller started
- * with mm_sta_fbd(); each returns MM_OK or MM_ENOMEM (sticky in res).
- * Texts are copied into the arena.
+ * with mm_sta_fbd(); each returns MM_OK or MM_ENOMEM.  A failure is
+ * recorded in res (sticky: mm_result_status, and the server refuses the
+ * answer), and every later call is safe, so a drawing is a plain list of
+ * calls whose returns need no checking.  Texts are copied into the arena.
  */
 #ifndef MM_STA_H
 #define MM_STA_H
@@ -74,5 +76,26 @@ int mm_sta_couple(mm_result *res, const char *name, double x, double y, double r
 /* Oblique projection of a point in space for 3-D diagrams: x toward the
  * viewer and left, y right, z up, into the drawing's (u, v). */
 void mm_sta_project(double x, double y, double z, double *u, double *v);
+
+/* 3-D diagrams in that projection: a straight line from a to b, and a
+ * force or moment v [unit] at p drawn at `scale` per unit, its tail on p
+ * (head = 0) or its head on p (head = 1, a load pushing on the body);
+ * value |v|.  style as mm_sta_line. */
+int mm_sta_line3(mm_result *res, const char *name, const double *a, const double *b, const char *style);
+int mm_sta_arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale, int head,
+                  const char *unit, const char *style);
+
+/* Support reactions or member forces R[0..n-1] with the error estimate
+ * rerr (cond x eps of the loads): the scalars out_1..out_n, a value within
+ * rerr of zero printed as 0, and the series out_plot (x = 1..n) of the
+ * same.  R itself is left as it is.  Returns the largest |R[k]| (the series
+ * lost to memory is recorded in res). */
+double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr);
+
+/* Vectors in space as three doubles: c = a x b (c must not alias a or b),
+ * a . b and |a|. */
+void mm_sta_cross(const double *a, const double *b, double *c);
+double mm_sta_dot(const double *a, const double *b);
+double mm_sta_norm(const double *a);
 
 #endif

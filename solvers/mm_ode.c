@@ -1247,3 +1247,25 @@ out:
         memcpy(res->y_end, w->y, n * sizeof(double));
     return rc;
 }
+
+int mm_ode_run(const mm_ode_problem *prob, const mm_ode_options *opt, mm_ode_result *res, mm_error *err)
+{
+    int rc = mm_ode_check(prob, opt, res, err);
+    if (rc != MM_OK)
+        return rc;
+    mm_ode_work *w = mm_ode_work_alloc(prob->n);
+    rc = mm_ode_solve(prob, opt, w, res, err);
+    mm_ode_work_free(w);
+    return rc;
+}
+
+mm_ode_options mm_ode_options_adaptive(mm_ode_method m, double rtol, double atol, long max_steps)
+{
+    mm_ode_options o;
+    mm_ode_options_init(&o);
+    o.method = m;
+    o.rtol = rtol;
+    o.atol = atol;
+    o.max_steps = max_steps;
+    return o;
+}

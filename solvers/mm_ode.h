@@ -124,6 +124,11 @@ typedef struct mm_ode_options {
                          (default); 0 = the elementary controller */
 } mm_ode_options;
 
+/* The defaults of mm_ode_options_init with an adaptive method m, its
+ * tolerances and its budget of step attempts: the options of most runs in
+ * one expression. */
+mm_ode_options mm_ode_options_adaptive(mm_ode_method m, double rtol, double atol, long max_steps);
+
 /* Opaque scratch space for systems up to a size n (28 n doubles). */
 typedef struct mm_ode_work mm_ode_work;
 
@@ -232,5 +237,10 @@ int mm_ode_check(const mm_ode_problem *prob, const mm_ode_options *opt,
  * steps are valid. */
 int mm_ode_solve(const mm_ode_problem *prob, const mm_ode_options *opt,
                  mm_ode_work *w, mm_ode_result *res, mm_error *err);
+
+/* mm_ode_check, then mm_ode_solve with a workspace of prob->n allocated and
+ * freed here (none when the check refuses): the whole ritual of a single
+ * run.  Returns as mm_ode_solve. */
+int mm_ode_run(const mm_ode_problem *prob, const mm_ode_options *opt, mm_ode_result *res, mm_error *err);
 
 #endif

@@ -126,18 +126,9 @@ static int amplification(const mm_dyn_plan *p, mm_result *res, double *A, mm_err
     mm_dyn_plan pp = *p;
     pp.t_left = 1;                                        /* no divergence test here */
     mm_ode_problem prob = {.n = 16, .f = mm_dyn_plan_variational_rhs, .params = &pp, .t0 = 0, .t_end = p->T, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = 1e-6;
-    opt.atol = 1e-6;
-    opt.max_steps = 100000;
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, 1e-6, 1e-6, 100000);
     mm_ode_result r = {.t_out = t, .nout = NA, .y_out = y};
-    int rc = mm_ode_check(&prob, &opt, &r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(16) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)
         return rc;
     *A = 1;
@@ -332,18 +323,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     double y0[4] = {p.q0[0], p.q0[1], 0, 0};
     mm_ode_problem prob = {.n = 4, .f = mm_dyn_plan_forward_rhs, .params = &p, .t0 = 0, .t_end = p.T, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = RTOL;
-    opt.atol = RTOL;
-    opt.max_steps = 200000;
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, RTOL, RTOL, 200000);
     mm_ode_result r = {.t_out = sq1->x, .nout = (size_t)n, .y_out = y};
-    int rc = mm_ode_check(&prob, &opt, &r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc(4) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK && p.t_left < 0)
         return rc;
     int done = (int)r.nout_done;

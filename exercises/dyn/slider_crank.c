@@ -146,18 +146,9 @@ static int animate(const mm_slider_crank *s, int partition, int ny, double t_end
     mm_dyn_frame_times(a, t_show);
     mm_ode_problem prob = {.n = (size_t)ny, .f = partition ? mm_sc_rhs_reduced : mm_sc_rhs_baumgarte,
                            .params = sys, .t0 = 0, .t_end = t_show > 0 ? t_show : t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = rtol;
-    opt.atol = rtol;
-    opt.max_steps = 1000000;
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol, 1000000);
     mm_ode_result r = {.t_out = a->t, .nout = (size_t)nf, .y_out = yf};
-    int rc = mm_ode_check(&prob, &opt, &r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc((size_t)ny) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)
         return rc;
     double R = s->r, L = s->l, q = mm_dyn_quantum(10 * (R + L));
@@ -233,18 +224,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     mm_ode_problem prob = {.n = (size_t)ny, .f = partition ? mm_sc_rhs_reduced : mm_sc_rhs_baumgarte,
                            .params = &sys, .t0 = 0, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = RTOL;
-    opt.atol = RTOL;
-    opt.max_steps = 1000000;
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, RTOL, RTOL, 1000000);
     mm_ode_result r = {.t_out = so->x, .nout = (size_t)n, .y_out = y};
-    int rc = mm_ode_check(&prob, &opt, &r, err);
-    mm_ode_work *w = rc == MM_OK ? mm_ode_work_alloc((size_t)ny) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)
         return rc;
     if (partition)
@@ -313,11 +295,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_ode_options orf = opt;
     orf.rtol = orf.atol = fmax(1e-13, fmin(1e-12, 1e-3 * RTOL));   /* DOP853 struggles below 1e-13 */
     mm_ode_result rref = {.t_out = so->x, .nout = (size_t)n, .y_out = yref};
-    rc = mm_ode_check(&pr, &orf, &rref, err);
-    mm_ode_work *wr = rc == MM_OK ? mm_ode_work_alloc(2) : NULL;
-    if (rc == MM_OK)
-        rc = mm_ode_solve(&pr, &orf, wr, &rref, err);
-    mm_ode_work_free(wr);
+    rc = mm_ode_run(&pr, &orf, &rref, err);
     if (rc != MM_OK)
         return rc;
     double rlo = INFINITY, rhi = -INFINITY, rsum = 0;

@@ -316,13 +316,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_warn(res, "the pressure angle reaches %.1f degrees (above 30): the follower is pushed sideways in its "
                          "guide more than it is lifted", phimax * 180 / M_PI);
     fd_ctx fc = {&m, th};
-    mm_kin_fd fd;
-    int rc = MM_OK;
-    if (ns > 0) {
-        rc = mm_kin_fd_study(res, O_FDV, "ds/dtheta", fd_pos, &fc, 1, NULL, ns, d1, 1, h0, 24, 0, &fd, err);
-        if (rc == MM_OK)
-            rc = mm_kin_fd_study(res, O_FDA, "d2s/dtheta2", fd_pos, &fc, 1, NULL, ns, d2, 2, h0, 18, 0, &fd, err);
-    }
+    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "ds/dtheta", "d2s/dtheta2", fd_pos, &fc, 1, NULL, ns, d1, d2, h0, 0, 0,
+                          err);
     if (rc != MM_OK)
         return rc;
 

@@ -301,11 +301,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             ns++;
         }
         mm_kin_link_fd fc = {&prob, &opt, w, th, qs, d1, d2};
-        mm_kin_fd fd;
-        if (ns > 0 && ((rc = mm_kin_fd_study(res, O_FDV, "dtheta/dtheta2", mm_kin_link_fd_pos, &fc, 2, NULL, ns, d1, 1, h0, 24,
-                                             derr1, &fd, err)) != MM_OK ||
-                       (rc = mm_kin_fd_study(res, O_FDA, "d2theta/dtheta2^2", mm_kin_link_fd_pos, &fc, 2, NULL, ns, d2, 2, h0, 18,
-                                             derr2, &fd, err)) != MM_OK))
+        if ((rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dtheta/dtheta2", "d2theta/dtheta2^2", mm_kin_link_fd_pos, &fc, 2, NULL,
+                               ns, d1, d2, h0, derr1, derr2, err)) != MM_OK)
             goto out;
     }
 

@@ -74,13 +74,7 @@ static int check(const mm_value *in, mm_error *err)
                             "points must be at most %.0f with these expressions of %.0f characters (each point "
                             "costs 21 evaluations of x and y, and a long expression costs more to evaluate); got %.0f",
                             floor(MAX_WORK / len - 460), len, in[P_POINTS].x);
-    double t0 = in[P_T0].x, t1 = in[P_T1].x;
-    if (!(t1 > t0))
-        return mm_error_set(err, MM_ERANGE, "t1", "t1 must be later than t0 = %g s; got %g s", t0, t1);
-    if (in[P_T].x < t0 || in[P_T].x > t1)
-        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion shown, %g to %g s; got %g s", t0, t1,
-                            in[P_T].x);
-    return MM_OK;
+    return mm_kin_check_window(in[P_T0].x, in[P_T1].x, in[P_T].x, err);
 }
 
 /* eq. (2) and its first-order error from Ridders' estimates e1, e2 */
@@ -268,13 +262,7 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
-    mm_kin_curve c;
-    int rc = mm_kin_curve_compile(&c, in[P_X].text, in[P_Y].text, "x", "y", err);
-    if (rc != MM_OK)
-        return rc;
-    rc = run(&c, in, res, err);
-    mm_kin_curve_free(&c);
-    return rc;
+    return mm_kin_curve_solve(in, P_X, P_Y, run, res, err);
 }
 
 static const char *const references[] = {

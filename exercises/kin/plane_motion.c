@@ -190,12 +190,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     if (m.vA != 0) {
         fd_ctx fc = {&m, ts};
-        mm_kin_fd fd;
         /* a step that moves A by at most 2 % of L: stays within 10..80 degrees +- 2 */
         double h0 = 0.02 * m.L / fabs(m.vA);
-        int rc = mm_kin_fd_study(res, O_FDV, "dP/dt", fd_pos, &fc, 2, NULL, ns, d1, 1, h0, 24, 0, &fd, err);
-        if (rc == MM_OK)
-            rc = mm_kin_fd_study(res, O_FDA, "d2P/dt2", fd_pos, &fc, 2, NULL, ns, d2, 2, h0, 18, 0, &fd, err);
+        int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dP/dt", "d2P/dt2", fd_pos, &fc, 2, NULL, ns, d1, d2, h0, 0, 0, err);
         if (rc != MM_OK)
             return rc;
     }

@@ -292,11 +292,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         /* theta4's Taylor series about theta2 = pi converges within (d - r)/r
          * (the block passes closest to O there): steps well inside it */
         double h0 = fmin(0.05, 0.1 * (m.d - m.r) / m.r);
-        mm_kin_fd fd;
-        if ((rc = mm_kin_fd_study(res, O_FDV, "d(theta4, X)/dtheta2", fd_pos, &fc, 2, wt2, ns, d1, 1, h0, 24, 0, &fd,
-                                  err)) != MM_OK ||
-            (rc = mm_kin_fd_study(res, O_FDA, "d2(theta4, X)/dtheta2^2", fd_pos, &fc, 2, wt2, ns, d2, 2, h0, 18, 0, &fd,
-                                  err)) != MM_OK)
+        if ((rc = mm_kin_fd_va(res, O_FDV, O_FDA, "d(theta4, X)/dtheta2", "d2(theta4, X)/dtheta2^2", fd_pos, &fc, 2,
+                               wt2, ns, d1, d2, h0, 0, 0, err)) != MM_OK)
             goto out;
     }
 

@@ -105,10 +105,7 @@ static terms at(const table *p, double t)
 
 static int check(const mm_value *in, mm_error *err)
 {
-    if (in[P_T].x > in[P_TEND].x)
-        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion, 0 to t_end = %g s; got %g s",
-                            in[P_TEND].x, in[P_T].x);
-    return MM_OK;
+    return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
 }
 
 typedef struct fd_ctx {
@@ -197,12 +194,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* the Coriolis theorem against differences of the absolute position */
     fd_ctx fc = {&p, ts};
-    mm_kin_fd fd;
     double wm = fmax(fabs(p.w), fabs(p.w + p.al * t_end)), h0 = 0.05 / fmax(1, wm);
-    int rc = mm_kin_fd_study(res, O_FDV, "dr/dt = v_rel + w x r", fd_pos, &fc, 2, NULL, ns, d1, 1, h0, 24, 0, &fd, err);
-    if (rc == MM_OK)
-        rc = mm_kin_fd_study(res, O_FDA, "d2r/dt2 = a_rel + transport + Coriolis", fd_pos, &fc, 2, NULL, ns, d2, 2, h0,
-                             18, 0, &fd, err);
+    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dr/dt = v_rel + w x r", "d2r/dt2 = a_rel + transport + Coriolis", fd_pos,
+                          &fc, 2, NULL, ns, d1, d2, h0, 0, 0, err);
     if (rc != MM_OK)
         return rc;
 

@@ -84,10 +84,7 @@ static int check(const mm_value *in, mm_error *err)
     const double *u = in[P_AXIS].data;
     if (!(u[0] * u[0] + u[1] * u[1] + u[2] * u[2] > 0))
         return mm_error_set(err, MM_ERANGE, "axis", "the axis needs a direction: a non-zero vector");
-    if (in[P_T].x > in[P_TEND].x)
-        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion, 0 to t_end = %g s; got %g s",
-                            in[P_TEND].x, in[P_T].x);
-    return MM_OK;
+    return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
 }
 
 /* P at t, eq. (1), and v, a of eqs. (2)-(3) */
@@ -183,11 +180,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
     }
     fd_ctx fc = {&b, ts};
-    mm_kin_fd fd;
     double wm = fmax(fabs(b.w0), fabs(b.w0 + b.al * t_end)), h0 = 0.05 / fmax(1, wm);
-    int rc = mm_kin_fd_study(res, O_FDV, "dP/dt", fd_pos, &fc, 3, NULL, ns, d1, 1, h0, 24, 0, &fd, err);
-    if (rc == MM_OK)
-        rc = mm_kin_fd_study(res, O_FDA, "d2P/dt2", fd_pos, &fc, 3, NULL, ns, d2, 2, h0, 18, 0, &fd, err);
+    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dP/dt", "d2P/dt2", fd_pos, &fc, 3, NULL, ns, d1, d2, h0, 0, 0, err);
     if (rc != MM_OK)
         return rc;
 

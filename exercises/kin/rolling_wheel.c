@@ -99,10 +99,7 @@ static wstate at(const wheel *m, double t)
 
 static int check(const mm_value *in, mm_error *err)
 {
-    if (in[P_T].x > in[P_TEND].x)
-        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion, 0 to t_end = %g s; got %g s",
-                            in[P_TEND].x, in[P_T].x);
-    return MM_OK;
+    return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
 }
 
 /* the complete elliptic integral of the second kind E(k), by the
@@ -285,11 +282,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
     }
     fd_ctx fc = {&m, ts};
-    mm_kin_fd fd;
     double wm = fmax(fabs(m.w), fabs(m.w + m.al * t_end)), h0 = 0.05 / fmax(1, wm);
-    int rc = mm_kin_fd_study(res, O_FDV, "dP/dt", fd_pos, &fc, 2, NULL, ns, d1, 1, h0, 24, 0, &fd, err);
-    if (rc == MM_OK)
-        rc = mm_kin_fd_study(res, O_FDA, "d2P/dt2", fd_pos, &fc, 2, NULL, ns, d2, 2, h0, 18, 0, &fd, err);
+    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dP/dt", "d2P/dt2", fd_pos, &fc, 2, NULL, ns, d1, d2, h0, 0, 0, err);
     if (rc != MM_OK)
         return rc;
 

@@ -108,10 +108,7 @@ static void cartesian(const state *s, mm_v2 *v, mm_v2 *a)
 
 static int check(const mm_value *in, mm_error *err)
 {
-    if (in[P_T].x > in[P_TEND].x)
-        return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion, 0 to t_end = %g s; got %g s",
-                            in[P_TEND].x, in[P_T].x);
-    return MM_OK;
+    return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
 }
 
 typedef struct fd_ctx {
@@ -225,11 +222,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         e1[2 * j] = d1[2 * i], e1[2 * j + 1] = d1[2 * i + 1], e2[2 * j] = d2[2 * i], e2[2 * j + 1] = d2[2 * i + 1];
     }
     fd_ctx fc = {&p, ts};
-    mm_kin_fd fd;
     double h0 = 0.05 / fmax(1, fmax(fabs(p.w0), fabs(p.w0) + fabs(p.al) * t_end));
-    int rc = mm_kin_fd_study(res, O_FDV, "d(x,y)/dt", fd_pos, &fc, 2, NULL, ns, e1, 1, h0, 24, 0, &fd, err);
-    if (rc == MM_OK)
-        rc = mm_kin_fd_study(res, O_FDA, "d2(x,y)/dt2", fd_pos, &fc, 2, NULL, ns, e2, 2, h0, 18, 0, &fd, err);
+    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "d(x,y)/dt", "d2(x,y)/dt2", fd_pos, &fc, 2, NULL, ns, e1, e2, h0,
+                          0, 0, err);
     if (rc != MM_OK)
         return rc;
 

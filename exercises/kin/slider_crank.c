@@ -315,10 +315,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
         mm_kin_link_fd fc = {&prob, &opt, w, ph, qs, d1, d2};
         const double wt[2] = {1, 1 / m.l};
-        mm_kin_fd fd;
-        if ((rc = mm_kin_fd_study(res, O_FDV, "dq/dphi", mm_kin_link_fd_pos, &fc, 2, wt, ns, d1, 1, h0, 24, 0, &fd, err)) !=
-                MM_OK ||
-            (rc = mm_kin_fd_study(res, O_FDA, "d2q/dphi2", mm_kin_link_fd_pos, &fc, 2, wt, ns, d2, 2, h0, 18, 0, &fd, err)) != MM_OK)
+        if ((rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dq/dphi", "d2q/dphi2", mm_kin_link_fd_pos, &fc, 2, wt, ns, d1, d2, h0, 0,
+                               0, err)) != MM_OK)
             goto out;
     }
 

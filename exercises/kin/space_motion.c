@@ -285,11 +285,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
     }
     fd_ctx fc = {&m, ts};
-    mm_kin_fd fd;
     double h0 = 0.05 / fmax(1, wmax);
-    int rc = mm_kin_fd_study(res, O_FDV, "dR/dt = [w]x R", fd_pos, &fc, 9, NULL, ns, d1, 1, h0, 24, 0, &fd, err);
-    if (rc == MM_OK)
-        rc = mm_kin_fd_study(res, O_FDA, "d2R/dt2 = ([w']x + [w]x^2) R", fd_pos, &fc, 9, NULL, ns, d2, 2, h0, 18, 0, &fd, err);
+    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dR/dt = [w]x R", "d2R/dt2 = ([w']x + [w]x^2) R", fd_pos, &fc, 9, NULL, ns, d1, d2, h0,
+                          0, 0, err);
     if (rc != MM_OK)
         return rc;
 

@@ -135,7 +135,7 @@ static int sample(const mm_beam *b, double L, int n, mm_result *res, int with_y)
 
 static int draw(const mm_beam_problem *p, const mm_beam *b, double Mext, double xM, mm_result *res)
 {
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double L = p->L, h = 0.03 * L, beam[8] = {0, -h / 2, L, -h / 2, L, h / 2, 0, h / 2};
     double rx[2], ry[2], rcpl[2], Fbig = 0, qmax = 0;
     int nr = mm_beam_reactions(b, rx, ry, rcpl);
@@ -146,46 +146,40 @@ static int draw(const mm_beam_problem *p, const mm_beam *b, double Mext, double 
     for (int i = 0; i < p->n_dist; i++)
         qmax = fmax(qmax, fmax(fabs(p->dist[4 * i + 2]), fabs(p->dist[4 * i + 3])));
     double sc = mm_sta_scale(Fbig, L, 0.25), qs = qmax > 0 ? 0.12 * L / qmax : 0;
-    if (!rc)
-        rc = mm_sta_polygon(res, "beam", 4, beam, NULL);
+    mm_sta_polygon(res, "beam", 4, beam, NULL);
     if (p->kind == MM_BEAM_CANTILEVER) {
-        if (!rc)
-            rc = mm_sta_clamp(res, "clamp", 0, 0, 3 * h);
-        if (!rc && rcpl[0] != 0)
-            rc = mm_sta_couple(res, "clamp couple", 0, 0, 2.5 * h, rcpl[0]);
+        mm_sta_clamp(res, "clamp", 0, 0, 3 * h);
+        if (rcpl[0] != 0)
+            mm_sta_couple(res, "clamp couple", 0, 0, 2.5 * h, rcpl[0]);
     } else {
-        if (!rc)
-            rc = mm_sta_pin(res, "pin", p->a, -h / 2, 2 * h, 0);
-        if (!rc)
-            rc = mm_sta_roller(res, "roller", p->b, -h / 2, 2 * h, 0);
+        mm_sta_pin(res, "pin", p->a, -h / 2, 2 * h, 0);
+        mm_sta_roller(res, "roller", p->b, -h / 2, 2 * h, 0);
     }
-    for (int k = 0; k < nr && !rc; k++)
+    for (int k = 0; k < nr; k++)
         if (ry[k] != 0)
-            rc = mm_sta_force(res, "reaction", rx[k], ry[k] > 0 ? -h / 2 : h / 2, 0, ry[k], sc, 1);
-    for (int i = 0; i < p->n_point && !rc; i++) {
+            mm_sta_force(res, "reaction", rx[k], ry[k] > 0 ? -h / 2 : h / 2, 0, ry[k], sc, 1);
+    for (int i = 0; i < p->n_point; i++) {
         double x = p->point[2 * i], F = p->point[2 * i + 1];
         if (F != 0)
-            rc = mm_sta_force(res, "load", x, F < 0 ? h / 2 : -h / 2, 0, F, sc, 1);
+            mm_sta_force(res, "load", x, F < 0 ? h / 2 : -h / 2, 0, F, sc, 1);
     }
-    for (int i = 0; i < p->n_dist && !rc; i++) {
+    for (int i = 0; i < p->n_dist; i++) {
         const double *d = p->dist + 4 * i;
         /* the load's shape above (down loads) or below (up loads) the beam */
         double y1 = h / 2 - qs * d[2], y2 = h / 2 - qs * d[3];
         double outline[8] = {d[0], h / 2, d[1], h / 2, d[1], y2, d[0], y1};
-        rc = mm_sta_polygon(res, "distributed load", 4, outline, "highlight");
-        for (int k = 0; k <= 4 && !rc; k++) {
+        mm_sta_polygon(res, "distributed load", 4, outline, "highlight");
+        for (int k = 0; k <= 4; k++) {
             double x = d[0] + (d[1] - d[0]) * k / 4, q = d[2] + (d[3] - d[2]) * k / 4;
             if (q != 0)
-                rc = mm_sta_force(res, "q", x, q < 0 ? h / 2 : -h / 2, 0, q * qs / sc, sc, 1);
+                mm_sta_force(res, "q", x, q < 0 ? h / 2 : -h / 2, 0, q * qs / sc, sc, 1);
         }
     }
-    for (int i = 0; i < p->n_moment && !rc; i++)
-        rc = mm_sta_couple(res, "couple", p->moment[2 * i], 0, 2 * h, p->moment[2 * i + 1]);
-    if (!rc)
-        rc = mm_sta_label(res, xM, -0.2 * L, "M = %.4g N m at x = %.4g m", Mext, xM);
-    if (!rc)
-        rc = mm_sta_label(res, 0, 0.3 * L, "V: sum of forces left of x, up +;  M: sagging +");
-    return rc;
+    for (int i = 0; i < p->n_moment; i++)
+        mm_sta_couple(res, "couple", p->moment[2 * i], 0, 2 * h, p->moment[2 * i + 1]);
+    mm_sta_label(res, xM, -0.2 * L, "M = %.4g N m at x = %.4g m", Mext, xM);
+    mm_sta_label(res, 0, 0.3 * L, "V: sum of forces left of x, up +;  M: sagging +");
+    return MM_OK;
 }
 
 /* ---- solve ----------------------------------------------------------------------------- */

@@ -90,7 +90,7 @@ static int check(const mm_value *in, mm_error *err)
 
 static int draw(double T1, double T2, double theta, double r, double torque, mm_result *res)
 {
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double shown = fmin(theta, 2 * M_PI - 0.2), a0 = M_PI / 2 + shown / 2, a1 = a0 - shown;
     enum { N = 73 };
     double arc[2 * N];
@@ -101,21 +101,14 @@ static int draw(double T1, double T2, double theta, double r, double torque, mm_
     double sc = mm_sta_scale(T2, r, 1.6);
     /* the belt leaves at a0 (slack) and a1 (tight), along the tangents */
     double t1x = -sin(a0), t1y = cos(a0), t2x = sin(a1), t2y = -cos(a1);
-    if (!rc)
-        rc = mm_sta_circle(res, "drum", 0, 0, r, NULL);
-    if (!rc)
-        rc = mm_sta_path(res, "belt", N, arc, "tension");
-    if (!rc)
-        rc = mm_sta_force(res, "T1", r * cos(a0), r * sin(a0), T1 * t1x, T1 * t1y, sc, 0);
-    if (!rc)
-        rc = mm_sta_force(res, "T2", r * cos(a1), r * sin(a1), T2 * t2x, T2 * t2y, sc, 0);
-    if (!rc)
-        rc = mm_sta_couple(res, "torque on the drum", 0, 0, 0.4 * r, torque);
-    if (!rc)
-        rc = mm_sta_label(res, 1.1 * r * cos(a0), 1.1 * r * sin(a0), "T1 = %.4g N", T1);
-    if (!rc)
-        rc = mm_sta_label(res, 1.1 * r * cos(a1), 1.1 * r * sin(a1), "T2 = %.4g N", T2);
-    return rc;
+    mm_sta_circle(res, "drum", 0, 0, r, NULL);
+    mm_sta_path(res, "belt", N, arc, "tension");
+    mm_sta_force(res, "T1", r * cos(a0), r * sin(a0), T1 * t1x, T1 * t1y, sc, 0);
+    mm_sta_force(res, "T2", r * cos(a1), r * sin(a1), T2 * t2x, T2 * t2y, sc, 0);
+    mm_sta_couple(res, "torque on the drum", 0, 0, 0.4 * r, torque);
+    mm_sta_label(res, 1.1 * r * cos(a0), 1.1 * r * sin(a0), "T1 = %.4g N", T1);
+    mm_sta_label(res, 1.1 * r * cos(a1), 1.1 * r * sin(a1), "T2 = %.4g N", T2);
+    return MM_OK;
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)

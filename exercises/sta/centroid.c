@@ -137,27 +137,23 @@ static double moment_at(const mm_section_props *p, double t)
 
 static int draw(const mm_value *P, const mm_value *C, const mm_section_props *p, mm_result *res)
 {
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (int k = 0; k < P->rows; k++)
         for (int d = 0; d < 2; d++)
             lo[d] = fmin(lo[d], P->data[2 * k + d]), hi[d] = fmax(hi[d], P->data[2 * k + d]);
     double size = fmax(hi[0] - lo[0], hi[1] - lo[1]), half = 0.6 * size;
-    if (!rc)
-        rc = mm_sta_polygon(res, "area", P->rows, P->data, NULL);
-    for (int k = 0; k < C->rows && !rc; k++) {
+    mm_sta_polygon(res, "area", P->rows, P->data, NULL);
+    for (int k = 0; k < C->rows; k++) {
         const double *d = C->data + 3 * k;
-        rc = mm_sta_circle(res, d[2] > 0 ? "disc" : "hole", d[0], d[1], fabs(d[2]), d[2] > 0 ? NULL : "ground");
+        mm_sta_circle(res, d[2] > 0 ? "disc" : "hole", d[0], d[1], fabs(d[2]), d[2] > 0 ? NULL : "ground");
     }
     double c = cos(p->alpha), s = sin(p->alpha);
-    if (!rc)
-        rc = mm_sta_line(res, "axis 1 (I1)", p->xc - half * c, p->yc - half * s, p->xc + half * c,
+    mm_sta_line(res, "axis 1 (I1)", p->xc - half * c, p->yc - half * s, p->xc + half * c,
                          p->yc + half * s, "highlight", 0, 0);
-    if (!rc)
-        rc = mm_sta_line(res, "axis 2 (I2)", p->xc + half * s, p->yc - half * c, p->xc - half * s,
+    mm_sta_line(res, "axis 2 (I2)", p->xc + half * s, p->yc - half * c, p->xc - half * s,
                          p->yc + half * c, "highlight", 0, 0);
-    if (!rc)
-        rc = mm_sta_circle(res, "centroid", p->xc, p->yc, 0.015 * size, "highlight");
+    mm_sta_circle(res, "centroid", p->xc, p->yc, 0.015 * size, "highlight");
     /* a uniform plate of this shape balances on a pin at C: its weight acts
      * there (drawn per unit areal weight: the arrow's value is the area) */
     mm_shape *w = mm_anim_shape(res, "weight of a uniform plate (per N/m^2)", MM_SHAPE_ARROW, 1, 2);
@@ -166,13 +162,10 @@ static int draw(const mm_value *P, const mm_value *C, const mm_section_props *p,
         return MM_ENOMEM;
     w->unit = "m^2", w->scale = 0.3 * size / p->A, wv[0] = p->A;
     w->x[0] = w->x[1] = p->xc, w->y[0] = p->yc, w->y[1] = p->yc - 0.3 * size;
-    if (!rc)
-        rc = mm_sta_label(res, p->xc + 0.03 * size, p->yc + 0.03 * size, "C (%.4g, %.4g)", p->xc, p->yc);
-    if (!rc)
-        rc = mm_sta_label(res, p->xc + half * c, p->yc + half * s, "1");
-    if (!rc)
-        rc = mm_sta_label(res, p->xc - half * s, p->yc + half * c, "2");
-    return rc;
+    mm_sta_label(res, p->xc + 0.03 * size, p->yc + 0.03 * size, "C (%.4g, %.4g)", p->xc, p->yc);
+    mm_sta_label(res, p->xc + half * c, p->yc + half * s, "1");
+    mm_sta_label(res, p->xc - half * s, p->yc + half * c, "2");
+    return MM_OK;
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)

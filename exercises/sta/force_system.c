@@ -57,23 +57,6 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the forces, and the wrench on its central axis"),
 };
 
-static void cross(const double *a, const double *b, double *c)
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static double norm(const double *a)
-{
-    return sqrt(dot(a, a));
-}
-
 static int check(const mm_value *in, mm_error *err)
 {
     if (in[P_FORCES].cols != 6)
@@ -96,32 +79,16 @@ static void moment_about(const mm_value *in, const double *B, double *M, double 
     for (int i = 0; i < Fs->rows; i++) {
         const double *f = Fs->data + 6 * i;
         double w[3] = {f[0] - B[0], f[1] - B[1], f[2] - B[2]}, m[3];
-        cross(w, f + 3, m);
+        mm_sta_cross(w, f + 3, m);
         for (int k = 0; k < 3; k++)
             M[k] += m[k];
-        *scale += norm(w) * norm(f + 3);
+        *scale += mm_sta_norm(w) * mm_sta_norm(f + 3);
     }
     for (int j = 0; j < Cs->rows; j++) {
         for (int k = 0; k < 3; k++)
             M[k] += Cs->data[3 * j + k];
-        *scale += norm(Cs->data + 3 * j);
+        *scale += mm_sta_norm(Cs->data + 3 * j);
     }
-}
-
-static int arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale,
-                  const char *unit, const char *style)
-{
-    double u0, v0, u1, v1;
-    mm_sta_project(p[0], p[1], p[2], &u0, &v0);
-    mm_sta_project(p[0] + scale * v[0], p[1] + scale * v[1], p[2] + scale * v[2], &u1, &v1);
-    mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_ARROW, 1, 2);
-    double *val = s ? mm_shape_values(res, s) : NULL;
-    if (!val)
-        return MM_ENOMEM;
-    s->x[0] = u0, s->y[0] = v0, s->x[1] = u1, s->y[1] = v1;
-    s->unit = unit, s->scale = scale, s->style = style;
-    val[0] = norm(v);
-    return MM_OK;
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -133,12 +100,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     for (int i = 0; i < Fs->rows; i++) {
         for (int k = 0; k < 3; k++)
             R[k] += Fs->data[6 * i + 3 + k];
-        Rs += norm(Fs->data + 6 * i + 3);
+        Rs += mm_sta_norm(Fs->data + 6 * i + 3);
         double w[3] = {Fs->data[6 * i] - O[0], Fs->data[6 * i + 1] - O[1], Fs->data[6 * i + 2] - O[2]};
-        size = fmax(size, norm(w));
+        size = fmax(size, mm_sta_norm(w));
     }
     moment_about(in, O, M, &Ms);
-    double Rn = norm(R), Mn = norm(M);
+    double Rn = mm_sta_norm(R), Mn = mm_sta_norm(M);
     mm_res_scalar(res, O_RX, R[0]);
     mm_res_scalar(res, O_RY, R[1]);
     mm_res_scalar(res, O_RZ, R[2]);
@@ -155,11 +122,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         kind = Mn <= tolM ? 0 : 1;
     else {
         double RxM[3];
-        cross(R, M, RxM);
+        mm_sta_cross(R, M, RxM);
         for (int k = 0; k < 3; k++)
             P[k] = O[k] + RxM[k] / (Rn * Rn);              /* eq. (4) */
-        pitch = dot(R, M) / (Rn * Rn);
-        kind = fabs(dot(R, M)) <= 64 * DBL_EPSILON * Rs * Ms ? 2 : 3;
+        pitch = mm_sta_dot(R, M) / (Rn * Rn);
+        kind = fabs(mm_sta_dot(R, M)) <= 64 * DBL_EPSILON * Rs * Ms ? 2 : 3;
         if (kind == 2)
             pitch = 0;
     }
@@ -174,16 +141,16 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         /* check 1: summed directly at P, the moment lies along R: |M_P x R| */
         double MP[3], MPs, c[3];
         moment_about(in, P, MP, &MPs);
-        cross(MP, R, c);
+        mm_sta_cross(MP, R, c);
         mm_check_residual(res, "moment summed at the central axis point P, across R: |M_P x R| / |R| [N m]",
-                          norm(c) / Rn, MPs + Ms, 64);
+                          mm_sta_norm(c) / Rn, MPs + Ms, 64);
         /* check 2: the invariant R . M */
-        mm_check_residual(res, "R . M at P vs at O [N^2 m]", dot(R, MP) - dot(R, M), Rs * (MPs + Ms), 64);
+        mm_check_residual(res, "R . M at P vs at O [N^2 m]", mm_sta_dot(R, MP) - mm_sta_dot(R, M), Rs * (MPs + Ms), 64);
         /* check 3: it is the wrench's couple p R */
         double d[3];
         for (int k = 0; k < 3; k++)
             d[k] = MP[k] - pitch * R[k];
-        mm_check_residual(res, "M_P - p R [N m]", norm(d), MPs + Ms, 64);
+        mm_check_residual(res, "M_P - p R [N m]", mm_sta_norm(d), MPs + Ms, 64);
     } else {
         mm_res_warn(res, "R = 0: the system is %s; its moment is the same about every point", kinds[kind]);
     }
@@ -191,54 +158,50 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     const double *B = Fs->data;
     double MB[3], MBs, OB[3] = {O[0] - B[0], O[1] - B[1], O[2] - B[2]}, t[3];
     moment_about(in, B, MB, &MBs);
-    cross(OB, R, t);
+    mm_sta_cross(OB, R, t);
     for (int k = 0; k < 3; k++)
         t[k] += M[k] - MB[k];
-    mm_check_residual(res, "M_B = M_O + (O - B) x R at B, the first force's point [N m]", norm(t),
-                      Ms + MBs + norm(OB) * Rs, 64);
+    mm_check_residual(res, "M_B = M_O + (O - B) x R at B, the first force's point [N m]", mm_sta_norm(t),
+                      Ms + MBs + mm_sta_norm(OB) * Rs, 64);
     /* the couple's size at points B from O toward P: smallest on the central axis */
     mm_series *ml = mm_res_series(res, O_MLINE, 61);
     if (!ml)
         return MM_ENOMEM;
     double dir[3] = {P[0] - O[0], P[1] - O[1], P[2] - O[2]};
-    if (norm(dir) == 0)
+    if (mm_sta_norm(dir) == 0)
         dir[0] = 1;                                  /* P = O (or R = 0): along x */
     for (int i = 0; i < 61; i++) {
         double tt = -1 + 3.0 * i / 60, Bt[3] = {O[0] + tt * dir[0], O[1] + tt * dir[1], O[2] + tt * dir[2]}, Mt[3], st;
         moment_about(in, Bt, Mt, &st);
-        ml->x[i] = tt, ml->y[i] = norm(Mt);
+        ml->x[i] = tt, ml->y[i] = mm_sta_norm(Mt);
     }
     mm_res_method(res, "closed form (sums of forces and cross products)", 0);
 
     /* the drawing */
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double fmx = 0;
     for (int i = 0; i < Fs->rows; i++)
-        fmx = fmax(fmx, norm(Fs->data + 6 * i + 3));
+        fmx = fmax(fmx, mm_sta_norm(Fs->data + 6 * i + 3));
     double L = fmax(size, 1e-3), fs = mm_sta_scale(fmax(fmx, Rn), L, 0.5);
-    for (int i = 0; i < Fs->rows && !rc; i++)
-        rc = arrow3(res, "force", Fs->data + 6 * i, Fs->data + 6 * i + 3, fs, "N", NULL);
-    if (!rc && Rn > tolR) {
-        rc = arrow3(res, "R on the central axis", P, R, fs, "N", "highlight");
-        double a[3], b[3], xy[4];
+    for (int i = 0; i < Fs->rows; i++)
+        mm_sta_arrow3(res, "force", Fs->data + 6 * i, Fs->data + 6 * i + 3, fs, 0, "N", NULL);
+    if (Rn > tolR) {
+        mm_sta_arrow3(res, "R on the central axis", P, R, fs, 0, "N", "highlight");
+        double a[3], b[3];
         for (int k = 0; k < 3; k++)
             a[k] = P[k] - L * R[k] / Rn, b[k] = P[k] + L * R[k] / Rn;
-        mm_sta_project(a[0], a[1], a[2], &xy[0], &xy[1]);
-        mm_sta_project(b[0], b[1], b[2], &xy[2], &xy[3]);
-        if (!rc)
-            rc = mm_sta_path(res, "central axis", 2, xy, "ground");
-        if (!rc && kind == 3) {
+        mm_sta_line3(res, "central axis", a, b, "ground");
+        if (kind == 3) {
             double mw[3] = {pitch * R[0], pitch * R[1], pitch * R[2]};
-            rc = arrow3(res, "couple of the wrench", P, mw, 0.5 * L / fabs(pitch * Rn), "N m", "highlight");
+            mm_sta_arrow3(res, "couple of the wrench", P, mw, 0.5 * L / fabs(pitch * Rn), 0, "N m", "highlight");
         }
-    } else if (!rc && kind == 1) {
-        rc = arrow3(res, "couple", O, M, 0.5 * L / Mn, "N m", "highlight");
+    } else if (kind == 1) {
+        mm_sta_arrow3(res, "couple", O, M, 0.5 * L / Mn, 0, "N m", "highlight");
     }
     double u, v;
     mm_sta_project(O[0], O[1], O[2], &u, &v);
-    if (!rc)
-        rc = mm_sta_label(res, u, v, "O: %s", kinds[kind]);
-    return rc;
+    mm_sta_label(res, u, v, "O: %s", kinds[kind]);
+    return MM_OK;
 }
 
 static const char *const references[] = {

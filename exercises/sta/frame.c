@@ -148,34 +148,23 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method(res, "six equilibrium equations of the two bodies, LU with the rank test", 0);
 
     /* the drawing: the bodies taken apart at C (the right one moved right) */
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double gap = 0.08 * size, sc = mm_sta_scale(fmax(Fs, Xmax), size, 0.2), s = 0.04 * size;
-    if (!rc)
-        rc = mm_sta_line(res, "left body", A[0], A[1], C[0], C[1], NULL, 0, 0);
-    if (!rc)
-        rc = mm_sta_line(res, "right body", C[0] + gap, C[1], B[0] + gap, B[1], NULL, 0, 0);
-    if (!rc)
-        rc = mm_sta_pin(res, "pin A", A[0], A[1], s, 0);
-    if (!rc)
-        rc = mm_sta_pin(res, "pin B", B[0] + gap, B[1], s, 0);
-    if (!rc)
-        rc = mm_sta_force(res, "reaction A", A[0], A[1], x[0], x[1], sc, 1);
-    if (!rc)
-        rc = mm_sta_force(res, "reaction B", B[0] + gap, B[1], x[2], x[3], sc, 1);
-    if (!rc)
-        rc = mm_sta_force(res, "pin force on the left body", C[0], C[1], x[4], x[5], sc, 1);
-    if (!rc)
-        rc = mm_sta_force(res, "pin force on the right body", C[0] + gap, C[1], -x[4], -x[5], sc, 1);
-    for (int i = 0; i < Ld->rows && !rc; i++) {
+    mm_sta_line(res, "left body", A[0], A[1], C[0], C[1], NULL, 0, 0);
+    mm_sta_line(res, "right body", C[0] + gap, C[1], B[0] + gap, B[1], NULL, 0, 0);
+    mm_sta_pin(res, "pin A", A[0], A[1], s, 0);
+    mm_sta_pin(res, "pin B", B[0] + gap, B[1], s, 0);
+    mm_sta_force(res, "reaction A", A[0], A[1], x[0], x[1], sc, 1);
+    mm_sta_force(res, "reaction B", B[0] + gap, B[1], x[2], x[3], sc, 1);
+    mm_sta_force(res, "pin force on the left body", C[0], C[1], x[4], x[5], sc, 1);
+    mm_sta_force(res, "pin force on the right body", C[0] + gap, C[1], -x[4], -x[5], sc, 1);
+    for (int i = 0; i < Ld->rows; i++) {
         const double *p = Ld->data + 4 * i;
-        rc = mm_sta_force(res, "load", p[0] + (p[0] > C[0] ? gap : 0), p[1], p[2], p[3], sc, 1);
+        mm_sta_force(res, "load", p[0] + (p[0] > C[0] ? gap : 0), p[1], p[2], p[3], sc, 1);
     }
-    if (!rc)
-        rc = mm_sta_label(res, A[0], A[1] - 2 * s, "A");
-    if (!rc)
-        rc = mm_sta_label(res, B[0] + gap, B[1] - 2 * s, "B");
-    if (!rc)
-        rc = mm_sta_label(res, C[0] + 0.5 * gap, C[1] + s, "C");
+    mm_sta_label(res, A[0], A[1] - 2 * s, "A");
+    mm_sta_label(res, B[0] + gap, B[1] - 2 * s, "B");
+    mm_sta_label(res, C[0] + 0.5 * gap, C[1] + s, "C");
     return rc;
 }
 

@@ -127,30 +127,21 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                          "approximation fails here", mu * r, rf, 100 * (mu * r / rf - 1));
 
     /* the drawing */
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double sc = mm_sta_scale(Tr + W, R, 0.6), rope = 1.6 * R;
     double ropeL[4] = {-R, 0, -R, -rope}, ropeR[4] = {R, 0, R, -rope};
-    if (!rc)
-        rc = mm_sta_circle(res, "pulley", 0, 0, R, NULL);
-    if (!rc)
-        rc = mm_sta_circle(res, "axle", 0, 0, r, "ground");
-    if (!rc && rf > 0)
-        rc = mm_sta_circle(res, "friction circle", 0, 0, rf, "highlight");
-    if (!rc)
-        rc = mm_sta_path(res, "rope to the load", 2, ropeL, "tension");
-    if (!rc)
-        rc = mm_sta_path(res, "rope pulled", 2, ropeR, "tension");
-    if (!rc)
-        rc = mm_sta_force(res, "W", -R, -rope, 0, -W, sc, 0);
-    if (!rc)
-        rc = mm_sta_force(res, "T", R, -rope, 0, -Tr, sc, 0);
-    if (!rc)
-        rc = mm_sta_force(res, "bearing reaction", r * sin(phi), -r * cos(phi), 0, Tr + W, sc, 0);
-    if (!rc)
-        rc = mm_sta_label(res, R, -rope - sc * Tr, "T = %.4g N", Tr);
-    if (!rc)
-        rc = mm_sta_label(res, -R, -rope - sc * W, "W = %.4g N", W);
-    return rc;
+    mm_sta_circle(res, "pulley", 0, 0, R, NULL);
+    mm_sta_circle(res, "axle", 0, 0, r, "ground");
+    if (rf > 0)
+        mm_sta_circle(res, "friction circle", 0, 0, rf, "highlight");
+    mm_sta_path(res, "rope to the load", 2, ropeL, "tension");
+    mm_sta_path(res, "rope pulled", 2, ropeR, "tension");
+    mm_sta_force(res, "W", -R, -rope, 0, -W, sc, 0);
+    mm_sta_force(res, "T", R, -rope, 0, -Tr, sc, 0);
+    mm_sta_force(res, "bearing reaction", r * sin(phi), -r * cos(phi), 0, Tr + W, sc, 0);
+    mm_sta_label(res, R, -rope - sc * Tr, "T = %.4g N", Tr);
+    mm_sta_label(res, -R, -rope - sc * W, "W = %.4g N", W);
+    return MM_OK;
 }
 
 static const char *const references[] = {

@@ -46,23 +46,6 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the force, its point, the moment about O and the axis"),
 };
 
-static void cross(const double *a, const double *b, double *c)
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static double norm(const double *a)
-{
-    return sqrt(dot(a, a));
-}
-
 static int check(const mm_value *in, mm_error *err)
 {
     static const char *const names[] = {"F", "r", "O", "u"};
@@ -70,34 +53,9 @@ static int check(const mm_value *in, mm_error *err)
         if (in[k].cols != 3)
             return mm_error_set(err, MM_ERANGE, names[k], "%s needs 3 components (x, y, z); got %d", names[k],
                                 in[k].cols);
-    if (norm(in[P_U].data) == 0)
+    if (mm_sta_norm(in[P_U].data) == 0)
         return mm_error_set(err, MM_ERANGE, "u", "the axis direction u must not be zero");
     return MM_OK;
-}
-
-/* a 3-D arrow in the oblique view: from p along v times scale */
-static int arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale,
-                  const char *unit, const char *style)
-{
-    double u0, v0, u1, v1;
-    mm_sta_project(p[0], p[1], p[2], &u0, &v0);
-    mm_sta_project(p[0] + scale * v[0], p[1] + scale * v[1], p[2] + scale * v[2], &u1, &v1);
-    mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_ARROW, 1, 2);
-    double *val = s ? mm_shape_values(res, s) : NULL;
-    if (!val)
-        return MM_ENOMEM;
-    s->x[0] = u0, s->y[0] = v0, s->x[1] = u1, s->y[1] = v1;
-    s->unit = unit, s->scale = scale, s->style = style;
-    val[0] = norm(v);
-    return MM_OK;
-}
-
-static int line3(mm_result *res, const char *name, const double *a, const double *b, const char *style)
-{
-    double xy[4];
-    mm_sta_project(a[0], a[1], a[2], &xy[0], &xy[1]);
-    mm_sta_project(b[0], b[1], b[2], &xy[2], &xy[3]);
-    return mm_sta_path(res, name, 2, xy, style);
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -105,16 +63,16 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     (void)err;
     const double *F = in[P_F].data, *r = in[P_R].data, *O = in[P_O].data, *u = in[P_U].data;
     double w[3] = {r[0] - O[0], r[1] - O[1], r[2] - O[2]}, M[3], e[3];
-    cross(w, F, M);                                        /* eq. (1) */
-    double Fn = norm(F), Mn = norm(M), un = norm(u);
+    mm_sta_cross(w, F, M);                                        /* eq. (1) */
+    double Fn = mm_sta_norm(F), Mn = mm_sta_norm(M), un = mm_sta_norm(u);
     for (int k = 0; k < 3; k++)
         e[k] = u[k] / un;
-    double Ma = dot(e, M);                                 /* eq. (3) */
+    double Ma = mm_sta_dot(e, M);                                 /* eq. (3) */
     /* the lever arm: from O to the foot of the perpendicular on the line */
-    double t = Fn > 0 ? dot(w, F) / (Fn * Fn) : 0, foot[3], d;
+    double t = Fn > 0 ? mm_sta_dot(w, F) / (Fn * Fn) : 0, foot[3], d;
     for (int k = 0; k < 3; k++)
         foot[k] = w[k] - t * F[k];
-    d = norm(foot);
+    d = mm_sta_norm(foot);
     mm_res_scalar(res, O_MX, M[0]);
     mm_res_scalar(res, O_MY, M[1]);
     mm_res_scalar(res, O_MZ, M[2]);
@@ -122,24 +80,24 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_D, Fn > 0 ? d : 0);
     mm_res_scalar(res, O_MAXIS, Ma);
 
-    double wn = norm(w), big = wn * Fn;
+    double wn = mm_sta_norm(w), big = wn * Fn;
     /* check 1: the moment is perpendicular to the force */
-    mm_check_residual(res, "M . F [N^2 m] (the moment is perpendicular to the force)", dot(M, F), big * Fn, 16);
+    mm_check_residual(res, "M . F [N^2 m] (the moment is perpendicular to the force)", mm_sta_dot(M, F), big * Fn, 16);
     /* check 2: |M| = |F| d, eq. (2) */
     mm_check_residual(res, "|M| - |F| d, d the distance to the line of action [N m]", Mn - Fn * d, big, 16);
     /* check 3: slid along its line by 3 of its own length units, eq. (1) again */
     double w2[3], M2[3];
     for (int k = 0; k < 3; k++)
         w2[k] = w[k] + (Fn > 0 ? 3 * F[k] / Fn * fmax(wn, 1) : 0);
-    cross(w2, F, M2);
+    mm_sta_cross(w2, F, M2);
     mm_check_residual(res, "transmissibility: |M(r + s F/|F|) - M(r)| [N m]",
-                      hypot(hypot(M2[0] - M[0], M2[1] - M[1]), M2[2] - M[2]), (norm(w2) + wn) * Fn, 16);
+                      hypot(hypot(M2[0] - M[0], M2[1] - M[1]), M2[2] - M[2]), (mm_sta_norm(w2) + wn) * Fn, 16);
     /* check 4: the moment about the axis from the parts across it, eq. (4) */
-    double wp[3], Fp[3], Mp[3], we = dot(w, e), Fe = dot(F, e);
+    double wp[3], Fp[3], Mp[3], we = mm_sta_dot(w, e), Fe = mm_sta_dot(F, e);
     for (int k = 0; k < 3; k++)
         wp[k] = w[k] - we * e[k], Fp[k] = F[k] - Fe * e[k];
-    cross(wp, Fp, Mp);
-    mm_check_residual(res, "M_axis by the parts across the axis vs e . M [N m]", dot(e, Mp) - Ma, 4 * big, 16);
+    mm_sta_cross(wp, Fp, Mp);
+    mm_check_residual(res, "M_axis by the parts across the axis vs e . M [N m]", mm_sta_dot(e, Mp) - Ma, 4 * big, 16);
     /* the moment as the force slides along its own line: it stays (transmissibility) */
     mm_series *sl = mm_res_series(res, O_SLIDE, 41);
     if (!sl)
@@ -148,44 +106,36 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double sd = (i - 20) * 0.1 * fmax(wn, 1), p[3], q[3];
         for (int k = 0; k < 3; k++)
             p[k] = w[k] + (Fn > 0 ? sd * F[k] / Fn : 0);
-        cross(p, F, q);
-        sl->x[i] = sd, sl->y[i] = norm(q);
+        mm_sta_cross(p, F, q);
+        sl->x[i] = sd, sl->y[i] = mm_sta_norm(q);
     }
     mm_res_method(res, "closed form (cross product)", 0);
 
     /* the drawing: axes at O, r - O, F at r, M at O, the axis */
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double size = fmax(wn, 1e-3), fs = Fn > 0 ? 0.6 * size / Fn : 0, ms = Mn > 0 ? 0.6 * size / Mn : 0;
     static const char *const axis_names[3] = {"x", "y", "z"};
-    for (int k = 0; k < 3 && !rc; k++) {
+    for (int k = 0; k < 3; k++) {
         double tip[3] = {O[0], O[1], O[2]};
         tip[k] += 0.5 * size;
-        rc = line3(res, axis_names[k], O, tip, "ground");
-        if (!rc) {
-            double uu, vv;
-            mm_sta_project(tip[0], tip[1], tip[2], &uu, &vv);
-            rc = mm_sta_label(res, uu, vv, "%s", axis_names[k]);
-        }
+        mm_sta_line3(res, axis_names[k], O, tip, "ground");
+        double uu, vv;
+        mm_sta_project(tip[0], tip[1], tip[2], &uu, &vv);
+        mm_sta_label(res, uu, vv, "%s", axis_names[k]);
     }
     double a0[3], a1[3];
     for (int k = 0; k < 3; k++)
         a0[k] = O[k] - 0.7 * size * e[k], a1[k] = O[k] + 0.7 * size * e[k];
-    if (!rc)
-        rc = line3(res, "axis u", a0, a1, "highlight");
-    if (!rc)
-        rc = line3(res, "r - O", O, r, NULL);
-    if (!rc)
-        rc = arrow3(res, "F", r, F, fs, "N", NULL);
-    if (!rc)
-        rc = arrow3(res, "M_O", O, M, ms, "N m", "highlight");
+    mm_sta_line3(res, "axis u", a0, a1, "highlight");
+    mm_sta_line3(res, "r - O", O, r, NULL);
+    mm_sta_arrow3(res, "F", r, F, fs, 0, "N", NULL);
+    mm_sta_arrow3(res, "M_O", O, M, ms, 0, "N m", "highlight");
     double uu, vv;
     mm_sta_project(O[0], O[1], O[2], &uu, &vv);
-    if (!rc)
-        rc = mm_sta_label(res, uu, vv, "O");
+    mm_sta_label(res, uu, vv, "O");
     mm_sta_project(r[0], r[1], r[2], &uu, &vv);
-    if (!rc)
-        rc = mm_sta_label(res, uu, vv, "F = %.4g N", Fn);
-    return rc;
+    mm_sta_label(res, uu, vv, "F = %.4g N", Fn);
+    return MM_OK;
 }
 
 static const char *const references[] = {

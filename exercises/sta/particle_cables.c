@@ -41,23 +41,6 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the ring, its cables and the load"),
 };
 
-static void cross(const double *a, const double *b, double *c)
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static double norm(const double *a)
-{
-    return sqrt(dot(a, a));
-}
-
 static int check(const mm_value *in, mm_error *err)
 {
     if (in[P_ANCHORS].cols != 3 || in[P_ANCHORS].rows < 2)
@@ -78,36 +61,19 @@ static int check(const mm_value *in, mm_error *err)
 static double angle(const double *a, const double *b)
 {
     double c[3];
-    cross(a, b, c);
-    return atan2(norm(c), dot(a, b));
-}
-
-static int arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale, int head,
-                  const char *style)
-{
-    double q[3] = {p[0] - (head ? scale * v[0] : 0), p[1] - (head ? scale * v[1] : 0), p[2] - (head ? scale * v[2] : 0)};
-    double u0, v0, u1, v1;
-    mm_sta_project(q[0], q[1], q[2], &u0, &v0);
-    mm_sta_project(q[0] + scale * v[0], q[1] + scale * v[1], q[2] + scale * v[2], &u1, &v1);
-    mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_ARROW, 1, 2);
-    double *val = s ? mm_shape_values(res, s) : NULL;
-    if (!val)
-        return MM_ENOMEM;
-    s->x[0] = u0, s->y[0] = v0, s->x[1] = u1, s->y[1] = v1;
-    s->unit = "N", s->scale = scale, s->style = style;
-    val[0] = norm(v);
-    return MM_OK;
+    mm_sta_cross(a, b, c);
+    return atan2(mm_sta_norm(c), mm_sta_dot(a, b));
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     int n = in[P_ANCHORS].rows;
     const double *ring = in[P_RING].data, *P = in[P_LOAD].data;
-    double u[3][3], L[3], T[3] = {0, 0, 0}, Pn = norm(P);
+    double u[3][3], L[3], T[3] = {0, 0, 0}, Pn = mm_sta_norm(P);
     for (int i = 0; i < n; i++) {
         for (int k = 0; k < 3; k++)
             u[i][k] = in[P_ANCHORS].data[3 * i + k] - ring[k];
-        L[i] = norm(u[i]);
+        L[i] = mm_sta_norm(u[i]);
         for (int k = 0; k < 3; k++)
             u[i][k] /= L[i];
     }
@@ -129,24 +95,24 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             return rc;
         for (int i = 0; i < 3; i++) {                   /* eq. (3), Cramer */
             double c[3];
-            cross(u[(i + 1) % 3], u[(i + 2) % 3], c);
-            Tc[i] = -dot(P, c) / dot(u[i], c);
+            mm_sta_cross(u[(i + 1) % 3], u[(i + 2) % 3], c);
+            Tc[i] = -mm_sta_dot(P, c) / mm_sta_dot(u[i], c);
         }
     } else {
         double nrm[3], e2[3];
-        cross(u[0], u[1], nrm);
-        double nn = norm(nrm);
+        mm_sta_cross(u[0], u[1], nrm);
+        double nn = mm_sta_norm(nrm);
         if (nn < 1e-9)
             return mm_error_set(err, MM_ESINGULAR, "anchors",
                                 "the two cables lie on one line: they cannot hold a load across it");
         for (int k = 0; k < 3; k++)
             nrm[k] /= nn;
-        if (fabs(dot(P, nrm)) > 1e-9 * Pn)
+        if (fabs(mm_sta_dot(P, nrm)) > 1e-9 * Pn)
             return mm_error_set(err, MM_ESINGULAR, "load",
                                 "the load has %.4g N across the plane of the two cables: the ring would swing "
-                                "out of it; add a third cable", dot(P, nrm));
-        cross(nrm, u[0], e2);
-        double A[4] = {1, dot(u[1], u[0]), 0, dot(u[1], e2)}, b[2] = {-dot(P, u[0]), -dot(P, e2)};
+                                "out of it; add a third cable", mm_sta_dot(P, nrm));
+        mm_sta_cross(nrm, u[0], e2);
+        double A[4] = {1, mm_sta_dot(u[1], u[0]), 0, mm_sta_dot(u[1], e2)}, b[2] = {-mm_sta_dot(P, u[0]), -mm_sta_dot(P, e2)};
         rc = mm_equil_solve(2, 2, A, b, T, NULL, NULL, &er, err);
         if (rc != MM_OK)
             return rc;
@@ -160,21 +126,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             return mm_error_set(err, MM_ESINGULAR, "anchors",
                                 "cable %d would have to push (T = %.4g N): a cable can only pull; the load must "
                                 "point away from the anchors, inside the cone of the cables", i + 1, T[i]);
-    double Tmax = 0;
-    for (int i = 0; i < n; i++) {
-        if (fabs(T[i]) <= 4 * DBL_EPSILON * Pn / er.rcond)
-            T[i] = 0;                                   /* a slack cable: 0, not rounding */
-        mm_scalar *sc = mm_res_scalar_i(res, O_T, i + 1, T[i]);
-        sc->error = 4 * DBL_EPSILON * Pn / er.rcond;    /* cond * eps of the load */
-        sc->error_kind = MM_ERR_ESTIMATE;
-        Tmax = fmax(Tmax, T[i]);
-    }
-    mm_res_scalar_err(res, O_TMAX, Tmax, 4 * DBL_EPSILON * Pn / er.rcond, MM_ERR_ESTIMATE);
-    mm_series *tp = mm_res_series(res, O_TPLOT, n);
-    if (!tp)
-        return MM_ENOMEM;
+    double rerr = 4 * DBL_EPSILON * Pn / er.rcond;      /* cond * eps of the load */
     for (int i = 0; i < n; i++)
-        tp->x[i] = i + 1, tp->y[i] = T[i];
+        if (fabs(T[i]) <= rerr)
+            T[i] = 0;                                   /* a slack cable: 0, not rounding */
+    double Tmax = mm_sta_reactions(res, O_T, O_TPLOT, n, T, rerr);   /* no cable pushes: largest |T| = largest T */
+    mm_res_scalar_err(res, O_TMAX, Tmax, rerr, MM_ERR_ESTIMATE);
 
     /* check 1: the ring in equilibrium, eq. (1) */
     double sum[3] = {P[0], P[1], P[2]}, scale = Pn;
@@ -183,7 +140,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             sum[k] += T[i] * u[i][k];
         scale += fabs(T[i]);
     }
-    mm_check_residual(res, "ring: |sum of forces| [N]", norm(sum), scale, 16);
+    mm_check_residual(res, "ring: |sum of forces| [N]", mm_sta_norm(sum), scale, 16);
     /* check 2: the tensions by the closed form */
     double worst = 0;
     int wi = 0;
@@ -201,35 +158,31 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                          "change the tensions a lot", 1 / er.rcond);
 
     /* the drawing */
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double size = 0;
     for (int i = 0; i < n; i++)
         size = fmax(size, L[i]);
     double fs = mm_sta_scale(fmax(Pn, Tmax), size, 0.4), ru, rv;
     mm_sta_project(ring[0], ring[1], ring[2], &ru, &rv);
-    for (int i = 0; i < n && !rc; i++) {
+    for (int i = 0; i < n; i++) {
         const double *a = in[P_ANCHORS].data + 3 * i;
         double xy[4], au, av;
         mm_sta_project(a[0], a[1], a[2], &au, &av);
         xy[0] = ru, xy[1] = rv, xy[2] = au, xy[3] = av;
         char nm[24];
         snprintf(nm, sizeof nm, "cable %d", i + 1);
-        rc = mm_sta_member(res, nm, ru, rv, au, av, T[i], 1e-9 * Pn);
+        mm_sta_member(res, nm, ru, rv, au, av, T[i], 1e-9 * Pn);
         double box[8] = {au - 0.04 * size, av, au + 0.04 * size, av, au + 0.04 * size, av + 0.04 * size,
                          au - 0.04 * size, av + 0.04 * size};
-        if (!rc)
-            rc = mm_sta_polygon(res, "anchor", 4, box, "ground");
+        mm_sta_polygon(res, "anchor", 4, box, "ground");
         double t[3] = {T[i] * u[i][0], T[i] * u[i][1], T[i] * u[i][2]};
-        if (!rc && T[i] > 0)
-            rc = arrow3(res, "tension", ring, t, fs, 0, "tension");
-        if (!rc)
-            rc = mm_sta_label(res, 0.5 * (ru + au), 0.5 * (rv + av), "T%d = %.4g N", i + 1, T[i]);
+        if (T[i] > 0)
+            mm_sta_arrow3(res, "tension", ring, t, fs, 0, "N", "tension");
+        mm_sta_label(res, 0.5 * (ru + au), 0.5 * (rv + av), "T%d = %.4g N", i + 1, T[i]);
         (void)xy;
     }
-    if (!rc)
-        rc = mm_sta_circle(res, "ring", ru, rv, 0.03 * size, NULL);
-    if (!rc)
-        rc = arrow3(res, "load", ring, P, fs, 0, NULL);
+    mm_sta_circle(res, "ring", ru, rv, 0.03 * size, NULL);
+    mm_sta_arrow3(res, "load", ring, P, fs, 0, "N", NULL);
     return rc;
 }
 

@@ -124,17 +124,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         *err = e2;
         return rc;
     }
-    double rerr = 4 * DBL_EPSILON * Fs / er.rcond, Rmax = 0;
-    for (int k = 0; k < n; k++) {
-        mm_scalar *s = mm_res_scalar_i(res, O_R, k + 1, fabs(R[k]) <= rerr ? 0 : R[k]);
-        s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;
-        Rmax = fmax(Rmax, fabs(R[k]));
-    }
-    mm_series *rp = mm_res_series(res, O_RPLOT, n);
-    if (!rp)
-        return MM_ENOMEM;
-    for (int k = 0; k < n; k++)
-        rp->x[k] = k + 1, rp->y[k] = fabs(R[k]) <= rerr ? 0 : R[k];
+    double Rmax = mm_sta_reactions(res, O_R, O_RPLOT, n, R, 4 * DBL_EPSILON * Fs / er.rcond);
 
     /* check 1: eq. (1) put back, forces and moment about the origin */
     double fx = -b[0], fy = -b[1], mz = -b[2], sf = Fs, sm = Fs * size;
@@ -181,26 +171,24 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method(res, "three equilibrium equations, LU with the rank test", 0);
 
     /* the drawing */
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double sc = mm_sta_scale(fmax(Rmax, Fs), size, 0.25);
-    if (!rc)
-        rc = mm_sta_polygon(res, "body", in[P_BODY].rows, in[P_BODY].data, NULL);
-    for (int k = 0; k < n && !rc; k++) {
+    mm_sta_polygon(res, "body", in[P_BODY].rows, in[P_BODY].data, NULL);
+    for (int k = 0; k < n; k++) {
         const double *l = Lk->data + 4 * k;
         /* the link itself, on the side the reaction pushes from */
-        rc = mm_sta_line(res, "link", l[0], l[1], l[0] - 0.12 * size * e[k][0], l[1] - 0.12 * size * e[k][1],
+        mm_sta_line(res, "link", l[0], l[1], l[0] - 0.12 * size * e[k][0], l[1] - 0.12 * size * e[k][1],
                          "ground", 0, 0);
-        if (!rc && R[k] != 0)
-            rc = mm_sta_force(res, "reaction", l[0], l[1], R[k] * e[k][0], R[k] * e[k][1], sc, 1);
-        if (!rc)
-            rc = mm_sta_label(res, l[0] - 0.15 * size * e[k][0], l[1] - 0.15 * size * e[k][1], "R%d", k + 1);
+        if (R[k] != 0)
+            mm_sta_force(res, "reaction", l[0], l[1], R[k] * e[k][0], R[k] * e[k][1], sc, 1);
+        mm_sta_label(res, l[0] - 0.15 * size * e[k][0], l[1] - 0.15 * size * e[k][1], "R%d", k + 1);
     }
-    for (int i = 0; i < Ld->rows && !rc; i++) {
+    for (int i = 0; i < Ld->rows; i++) {
         const double *p = Ld->data + 4 * i;
-        rc = mm_sta_force(res, "load", p[0], p[1], p[2], p[3], sc, 1);
+        mm_sta_force(res, "load", p[0], p[1], p[2], p[3], sc, 1);
     }
-    if (!rc && in[P_C].x != 0)
-        rc = mm_sta_couple(res, "couple", 0.5 * size, 0, 0.08 * size, in[P_C].x);
+    if (in[P_C].x != 0)
+        mm_sta_couple(res, "couple", 0.5 * size, 0, 0.08 * size, in[P_C].x);
     return rc;
 }
 

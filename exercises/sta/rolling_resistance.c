@@ -113,21 +113,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double P = mode == 2 ? Ps : Pr, N = W - P * sin(th), F = P * cos(th);
     double xN = mode == 2 ? 0 : a, sc = mm_sta_scale(fmax(W, P), r, 1.0);
     double ground[4] = {-1.5 * r, -h, 1.5 * r, -h};
-    rc = mm_sta_fbd(res);
-    if (!rc)
-        rc = mm_sta_path(res, "ground", 2, ground, "ground");
-    if (!rc)
-        rc = mm_sta_circle(res, "wheel", 0, 0, r, NULL);
-    if (!rc)
-        rc = mm_sta_force(res, "W", 0, 0, 0, -W, sc, 0);
-    if (!rc)
-        rc = mm_sta_force(res, "P", 0, 0, P * cos(th), P * sin(th), sc, 0);
-    if (!rc)
-        rc = mm_sta_force(res, "N", xN, -h, 0, N, sc, 1);
-    if (!rc)
-        rc = mm_sta_force(res, "friction", xN, -h, -F, 0, sc, 1);
-    if (!rc)
-        rc = mm_sta_label(res, -r, r * 1.1, "%s first, at P = %.4g N", modes[mode], P);
+    mm_sta_fbd(res);
+    mm_sta_path(res, "ground", 2, ground, "ground");
+    mm_sta_circle(res, "wheel", 0, 0, r, NULL);
+    mm_sta_force(res, "W", 0, 0, 0, -W, sc, 0);
+    mm_sta_force(res, "P", 0, 0, P * cos(th), P * sin(th), sc, 0);
+    mm_sta_force(res, "N", xN, -h, 0, N, sc, 1);
+    mm_sta_force(res, "friction", xN, -h, -F, 0, sc, 1);
+    mm_sta_label(res, -r, r * 1.1, "%s first, at P = %.4g N", modes[mode], P);
     return rc;
 }
 

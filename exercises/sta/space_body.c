@@ -47,46 +47,19 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the body on its links with loads and reactions"),
 };
 
-static void cross(const double *a, const double *b, double *c)
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double norm(const double *a)
-{
-    return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-}
-
 static int check(const mm_value *in, mm_error *err)
 {
     if (in[P_LINKS].cols != 6)
         return mm_error_set(err, MM_ERANGE, "links", "each link is one row x,y,z,dx,dy,dz; got %d numbers",
                             in[P_LINKS].cols);
     for (int k = 0; k < in[P_LINKS].rows; k++)
-        if (norm(in[P_LINKS].data + 6 * k + 3) == 0)
+        if (mm_sta_norm(in[P_LINKS].data + 6 * k + 3) == 0)
             return mm_error_set(err, MM_ERANGE, "links", "link %d has no direction", k + 1);
     if (in[P_LOADS].cols != 6)
         return mm_error_set(err, MM_ERANGE, "loads", "each load is one row x,y,z,Fx,Fy,Fz; got %d numbers",
                             in[P_LOADS].cols);
     if (in[P_BODY].cols != 3 || in[P_BODY].rows < 2)
         return mm_error_set(err, MM_ERANGE, "body", "the outline needs rows x,y,z, at least 2");
-    return MM_OK;
-}
-
-static int arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale)
-{
-    double q[3] = {p[0] - scale * v[0], p[1] - scale * v[1], p[2] - scale * v[2]}, u0, v0, u1, v1;
-    mm_sta_project(q[0], q[1], q[2], &u0, &v0);
-    mm_sta_project(p[0], p[1], p[2], &u1, &v1);
-    mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_ARROW, 1, 2);
-    double *val = s ? mm_shape_values(res, s) : NULL;
-    if (!val)
-        return MM_ENOMEM;
-    s->x[0] = u0, s->y[0] = v0, s->x[1] = u1, s->y[1] = v1;
-    s->unit = "N", s->scale = scale;
-    val[0] = norm(v);
     return MM_OK;
 }
 
@@ -97,22 +70,22 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double A[6 * MAXL], W[6] = {0}, b[6], R[MAXL], mech[6], self[MAXL], Fs = 0, size = 1e-3;
     for (int k = 0; k < n; k++) {                        /* column k: (e_k, p_k x e_k), eq. (1) */
         const double *l = Lk->data + 6 * k;
-        double e[3], m[3], len = norm(l + 3);
+        double e[3], m[3], len = mm_sta_norm(l + 3);
         for (int c = 0; c < 3; c++)
             e[c] = l[3 + c] / len;
-        cross(l, e, m);
+        mm_sta_cross(l, e, m);
         for (int c = 0; c < 3; c++)
             A[c * n + k] = e[c], A[(3 + c) * n + k] = m[c];
-        size = fmax(size, norm(l));
+        size = fmax(size, mm_sta_norm(l));
     }
     for (int i = 0; i < Ld->rows; i++) {
         const double *p = Ld->data + 6 * i;
         double m[3];
-        cross(p, p + 3, m);
+        mm_sta_cross(p, p + 3, m);
         for (int c = 0; c < 3; c++)
             W[c] += p[3 + c], W[3 + c] += m[c];
-        Fs += norm(p + 3);
-        size = fmax(size, norm(p));
+        Fs += mm_sta_norm(p + 3);
+        size = fmax(size, mm_sta_norm(p));
     }
     for (int c = 0; c < 6; c++)
         b[c] = -W[c];
@@ -122,17 +95,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (rc == MM_ESINGULAR) {
         if (er.n_mech > 0) {
             /* the free motion: origin velocity v, angular velocity w */
-            double *v = mech, *w = mech + 3, wn = norm(w);
-            if (wn > 1e-9 * norm(v)) {
+            double *v = mech, *w = mech + 3, wn = mm_sta_norm(w);
+            if (wn > 1e-9 * mm_sta_norm(v)) {
                 double p[3];
-                cross(w, v, p);
+                mm_sta_cross(w, v, p);
                 return mm_error_set(err, MM_ESINGULAR, "links",
                                     "improperly supported (%d links, rank %d): the body can turn about the axis "
                                     "through (%.3g, %.3g, %.3g) along (%.3g, %.3g, %.3g); add or move a link",
                                     n, er.rank, p[0] / (wn * wn) + 0.0, p[1] / (wn * wn) + 0.0,
                                     p[2] / (wn * wn) + 0.0, w[0] / wn + 0.0, w[1] / wn + 0.0, w[2] / wn + 0.0);
             }
-            double vn = norm(v);
+            double vn = mm_sta_norm(v);
             return mm_error_set(err, MM_ESINGULAR, "links",
                                 "improperly supported (%d links, rank %d): the body can slide along (%.3g, %.3g, "
                                 "%.3g); add or move a link", n, er.rank, v[0] / vn + 0.0, v[1] / vn + 0.0,
@@ -149,17 +122,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         *err = e2;
         return rc;
     }
-    double rerr = 4 * DBL_EPSILON * Fs / er.rcond, Rmax = 0;
-    for (int k = 0; k < n; k++) {
-        mm_scalar *s = mm_res_scalar_i(res, O_R, k + 1, fabs(R[k]) <= rerr ? 0 : R[k]);
-        s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;
-        Rmax = fmax(Rmax, fabs(R[k]));
-    }
-    mm_series *rp = mm_res_series(res, O_RPLOT, n);
-    if (!rp)
-        return MM_ENOMEM;
-    for (int k = 0; k < n; k++)
-        rp->x[k] = k + 1, rp->y[k] = fabs(R[k]) <= rerr ? 0 : R[k];
+    double Rmax = mm_sta_reactions(res, O_R, O_RPLOT, n, R, 4 * DBL_EPSILON * Fs / er.rcond);
     /* check 1: eq. (1) put back */
     double worst = 0, scale = 0;
     for (int c = 0; c < 6; c++) {
@@ -199,28 +162,26 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method(res, "six equilibrium equations, LU with the rank test", 0);
 
     /* the drawing */
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double sc = mm_sta_scale(fmax(Rmax, Fs), size, 0.3), xy[2 * 50];
     for (int i = 0; i < in[P_BODY].rows; i++)
         mm_sta_project(in[P_BODY].data[3 * i], in[P_BODY].data[3 * i + 1], in[P_BODY].data[3 * i + 2], &xy[2 * i],
                        &xy[2 * i + 1]);
-    if (!rc)
-        rc = mm_sta_polygon(res, "body", in[P_BODY].rows, xy, NULL);
-    for (int k = 0; k < n && !rc; k++) {
+    mm_sta_polygon(res, "body", in[P_BODY].rows, xy, NULL);
+    for (int k = 0; k < n; k++) {
         const double *l = Lk->data + 6 * k;
-        double len = norm(l + 3), e[3] = {l[3] / len, l[4] / len, l[5] / len}, t[4], f[3];
+        double len = mm_sta_norm(l + 3), e[3] = {l[3] / len, l[4] / len, l[5] / len}, t[4], f[3];
         mm_sta_project(l[0], l[1], l[2], &t[0], &t[1]);
         mm_sta_project(l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], l[2] - 0.15 * size * e[2], &t[2], &t[3]);
-        rc = mm_sta_path(res, "link", 2, t, "ground");
+        mm_sta_path(res, "link", 2, t, "ground");
         for (int c = 0; c < 3; c++)
             f[c] = R[k] * e[c];
-        if (!rc && R[k] != 0)
-            rc = arrow3(res, "reaction", l, f, sc);
-        if (!rc)
-            rc = mm_sta_label(res, t[2], t[3], "R%d", k + 1);
+        if (R[k] != 0)
+            mm_sta_arrow3(res, "reaction", l, f, sc, 1, "N", NULL);
+        mm_sta_label(res, t[2], t[3], "R%d", k + 1);
     }
-    for (int i = 0; i < Ld->rows && !rc; i++)
-        rc = arrow3(res, "load", Ld->data + 6 * i, Ld->data + 6 * i + 3, sc);
+    for (int i = 0; i < Ld->rows; i++)
+        mm_sta_arrow3(res, "load", Ld->data + 6 * i, Ld->data + 6 * i + 3, sc, 1, "N", NULL);
     return rc;
 }
 

@@ -236,14 +236,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* the drawing at the tilted equilibrium, or upright */
     double q = c < 1 ? acos(c) : 0, L = s.L, xw = -0.6 * L;
     double tip[2] = {L * sin(q), L * cos(q)}, sp[2] = {s.a * sin(q), s.a * cos(q)};
-    rc = mm_sta_fbd(res);
-    if (!rc)
-        rc = mm_sta_pin(res, "hinge", 0, 0, 0.1 * L, 0);
-    if (!rc)
-        rc = mm_sta_line(res, "rod", 0, 0, tip[0], tip[1], NULL, 0, 0);
+    mm_sta_fbd(res);
+    mm_sta_pin(res, "hinge", 0, 0, 0.1 * L, 0);
+    mm_sta_line(res, "rod", 0, 0, tip[0], tip[1], NULL, 0, 0);
     double guide[4] = {xw, 0, xw, 1.2 * L};
-    if (!rc)
-        rc = mm_sta_path(res, "guide", 2, guide, "ground");
+    mm_sta_path(res, "guide", 2, guide, "ground");
     mm_shape *spring = mm_anim_shape(res, "spring", MM_SHAPE_LINE, 1, 16);
     if (!spring)
         return MM_ENOMEM;
@@ -252,14 +249,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         spring->x[k] = xw + f * (sp[0] - xw), spring->y[k] = sp[1] + zig;
     }
     double sc = mm_sta_scale(fmax(s.W, s.k * s.a * fabs(sin(q))), L, 0.4);
-    if (!rc)
-        rc = mm_sta_force(res, "W", tip[0], tip[1], 0, -s.W, sc, 0);
-    if (!rc && q != 0)
-        rc = mm_sta_force(res, "spring force", sp[0], sp[1], -s.k * sp[0], 0, sc, 0);
-    if (!rc)
-        rc = mm_sta_force(res, "hinge reaction", 0, 0, s.k * sp[0], s.W, sc, 1);
-    if (!rc)
-        rc = mm_sta_label(res, tip[0], tip[1] + 0.05 * L, "theta = %.4g rad (%s)", q,
+    mm_sta_force(res, "W", tip[0], tip[1], 0, -s.W, sc, 0);
+    if (q != 0)
+        mm_sta_force(res, "spring force", sp[0], sp[1], -s.k * sp[0], 0, sc, 0);
+    mm_sta_force(res, "hinge reaction", 0, 0, s.k * sp[0], s.W, sc, 1);
+    mm_sta_label(res, tip[0], tip[1] + 0.05 * L, "theta = %.4g rad (%s)", q,
                           q != 0 ? "unstable" : up > 0 ? "stable" : up < 0 ? "unstable" : "neutral");
     return rc;
 }

@@ -107,25 +107,22 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         sn->y[i] = pnew, sw->y[i] = C / sw->x[i];
 
     /* the drawing: the section through the axis */
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double H = R2, shaft[8] = {-R1 * 0.9, 0, R1 * 0.9, 0, R1 * 0.9, 2 * H, -R1 * 0.9, 2 * H};
     double collar[8] = {-R2, 0, R2, 0, R2, 0.3 * H, -R2, 0.3 * H};
     double seat[8] = {-1.3 * R2, -0.3 * H, 1.3 * R2, -0.3 * H, 1.3 * R2, 0, -1.3 * R2, 0};
-    if (!rc)
-        rc = mm_sta_polygon(res, "seat", 4, seat, "ground");
-    if (!rc)
-        rc = mm_sta_polygon(res, "collar", 4, collar, NULL);
-    if (!rc && R1 > 0)
-        rc = mm_sta_polygon(res, "shaft", 4, shaft, NULL);
+    mm_sta_polygon(res, "seat", 4, seat, "ground");
+    mm_sta_polygon(res, "collar", 4, collar, NULL);
+    if (R1 > 0)
+        mm_sta_polygon(res, "shaft", 4, shaft, NULL);
     double pm = worn && R1 > 0 ? C / R1 : worn ? C / r0 : pnew, ps = 0.4 * H / pm;
-    if (!rc)
-        rc = mm_sta_force(res, "P", 0, 2 * H + 0.5 * H, 0, -P, 0.5 * H / P, 0);
-    for (int k = 0; k <= 6 && !rc; k++) {
+    mm_sta_force(res, "P", 0, 2 * H + 0.5 * H, 0, -P, 0.5 * H / P, 0);
+    for (int k = 0; k <= 6; k++) {
         double r = R1 + (R2 - R1) * k / 6;
         if (r <= 0)
             continue;
         double p = worn ? C / r : pnew;
-        for (int side = -1; side <= 1 && !rc; side += 2) {
+        for (int side = -1; side <= 1; side += 2) {
             mm_shape *s = mm_anim_shape(res, "pressure", MM_SHAPE_ARROW, 1, 2);
             double *v = s ? mm_shape_values(res, s) : NULL;
             if (!v)
@@ -134,9 +131,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             s->unit = "Pa", s->scale = ps, v[0] = p;
         }
     }
-    if (!rc)
-        rc = mm_sta_label(res, R2, 0.3 * H, "M = %.4g N m (%s)", M, wears[worn]);
-    return rc;
+    mm_sta_label(res, R2, 0.3 * H, "M = %.4g N m (%s)", M, wears[worn]);
+    return MM_OK;
 }
 
 static const char *const references[] = {

@@ -186,37 +186,37 @@ static void body_residual(const mm_truss *t, const double *R, double *worst, dou
 
 static int draw(const mm_truss *t, const double *F, const double *R, double fscale, double ftol, mm_result *res)
 {
-    int rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (int j = 0; j < t->n_nodes; j++)
         for (int d = 0; d < 2; d++)
             lo[d] = fmin(lo[d], t->xy[2 * j + d]), hi[d] = fmax(hi[d], t->xy[2 * j + d]);
     double size = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]), 1e-6), sup = 0.06 * size;
-    for (int e = 0; e < t->n_members && !rc; e++) {
+    for (int e = 0; e < t->n_members; e++) {
         const double *a = t->xy + 2 * t->ends[2 * e], *b = t->xy + 2 * t->ends[2 * e + 1];
         char name[24];
         snprintf(name, sizeof name, "member %d", e + 1);
-        rc = mm_sta_member(res, name, a[0], a[1], b[0], b[1], F[e], ftol);
+        mm_sta_member(res, name, a[0], a[1], b[0], b[1], F[e], ftol);
     }
-    for (int s = 0; s < t->n_supports && !rc; s++) {
+    for (int s = 0; s < t->n_supports; s++) {
         const int *r = t->supports + 3 * s;
         const double *p = t->xy + 2 * r[0];
         if (r[1] && r[2])
-            rc = mm_sta_pin(res, "pin", p[0], p[1], sup, 0);
+            mm_sta_pin(res, "pin", p[0], p[1], sup, 0);
         else
-            rc = mm_sta_roller(res, "roller", p[0], p[1], sup, r[2] ? 0 : -M_PI / 2);
-        for (int d = 0; d < 2 && !rc; d++)
+            mm_sta_roller(res, "roller", p[0], p[1], sup, r[2] ? 0 : -M_PI / 2);
+        for (int d = 0; d < 2; d++)
             if (r[1 + d] && fabs(R[2 * r[0] + d]) > ftol)
-                rc = mm_sta_force(res, "reaction", p[0], p[1], d == 0 ? R[2 * r[0]] : 0,
+                mm_sta_force(res, "reaction", p[0], p[1], d == 0 ? R[2 * r[0]] : 0,
                                   d == 1 ? R[2 * r[0] + 1] : 0, fscale, 1);
     }
-    for (int l = 0; l < t->n_loads && !rc; l++) {
+    for (int l = 0; l < t->n_loads; l++) {
         const double *p = t->xy + 2 * t->load_node[l];
-        rc = mm_sta_force(res, "load", p[0], p[1], t->load_f[2 * l], t->load_f[2 * l + 1], fscale, 1);
+        mm_sta_force(res, "load", p[0], p[1], t->load_f[2 * l], t->load_f[2 * l + 1], fscale, 1);
     }
-    for (int j = 0; j < t->n_nodes && !rc; j++)
-        rc = mm_sta_label(res, t->xy[2 * j] + 0.02 * size, t->xy[2 * j + 1] + 0.02 * size, "%d", j + 1);
-    return rc;
+    for (int j = 0; j < t->n_nodes; j++)
+        mm_sta_label(res, t->xy[2 * j] + 0.02 * size, t->xy[2 * j + 1] + 0.02 * size, "%d", j + 1);
+    return MM_OK;
 }
 
 /* ---- solve ------------------------------------------------------------------------------ */

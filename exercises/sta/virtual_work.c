@@ -182,29 +182,22 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* the drawing */
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double L = m.r + m.l, sc = mm_sta_scale(fabs(m.P), L, 0.25), bw = 0.1 * L;
     double box[8] = {xb - bw, yb - bw / 2, xb + bw, yb - bw / 2, xb + bw, yb + bw / 2, xb - bw, yb + bw / 2};
     double guide[4] = {-0.2 * L, yb - bw / 2, 1.3 * L, yb - bw / 2};
-    if (!rc)
-        rc = mm_sta_path(res, "guide", 2, guide, "ground");
-    if (!rc)
-        rc = mm_sta_pin(res, "pivot O", 0, 0, 0.06 * L, 0);
-    if (!rc)
-        rc = mm_sta_line(res, "crank", 0, 0, xa, ya, NULL, 0, 0);
-    if (!rc)
-        rc = mm_sta_member(res, "rod", xa, ya, xb, yb, Frod, ferr);
-    if (!rc)
-        rc = mm_sta_polygon(res, "slider", 4, box, NULL);
-    if (!rc && m.P != 0)
-        rc = mm_sta_force(res, "P", xb + bw, yb, -m.P, 0, sc, 1);
-    if (!rc && m.M != 0)
-        rc = mm_sta_couple(res, "M", 0, 0, 0.25 * m.r, m.M);
-    if (!rc)
-        rc = mm_sta_line(res, "virtual displacement dx_B", xb, yb + bw, xb + 0.3 * L * (dx >= 0 ? 1 : -1), yb + bw,
+    mm_sta_path(res, "guide", 2, guide, "ground");
+    mm_sta_pin(res, "pivot O", 0, 0, 0.06 * L, 0);
+    mm_sta_line(res, "crank", 0, 0, xa, ya, NULL, 0, 0);
+    mm_sta_member(res, "rod", xa, ya, xb, yb, Frod, ferr);
+    mm_sta_polygon(res, "slider", 4, box, NULL);
+    if (m.P != 0)
+        mm_sta_force(res, "P", xb + bw, yb, -m.P, 0, sc, 1);
+    if (m.M != 0)
+        mm_sta_couple(res, "M", 0, 0, 0.25 * m.r, m.M);
+    mm_sta_line(res, "virtual displacement dx_B", xb, yb + bw, xb + 0.3 * L * (dx >= 0 ? 1 : -1), yb + bw,
                          "highlight", 1, dx);
-    if (!rc)
-        rc = mm_sta_label(res, -0.2 * L, 0.5 * L, "M = P dx_B/dtheta = %.4g N m", m.M);
+    mm_sta_label(res, -0.2 * L, 0.5 * L, "M = P dx_B/dtheta = %.4g N m", m.M);
     return rc;
 }
 

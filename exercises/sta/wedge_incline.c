@@ -145,28 +145,22 @@ static int block(const mm_value *in, mm_result *res, mm_error *err)
 
     /* the drawing at the first limit, in the slope frame turned by alpha */
     double P = first == 2 ? Ptip : Pup, N = W * ca, xn = first == 2 ? w : xN, F = P - W * sa;
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double L = 3 * fmax(w, h), ramp[6] = {-0.5 * L * ca, -0.5 * L * sa, 1.5 * L * ca, 1.5 * L * sa, 1.5 * L * ca,
                                          -0.5 * L * sa};
-    if (!rc)
-        rc = mm_sta_polygon(res, "incline", 3, ramp, "ground");
+    mm_sta_polygon(res, "incline", 3, ramp, "ground");
     double c[8], loc[8] = {0, 0, w, 0, w, h, 0, h};
     for (int k = 0; k < 4; k++)
         c[2 * k] = loc[2 * k] * ca - loc[2 * k + 1] * sa, c[2 * k + 1] = loc[2 * k] * sa + loc[2 * k + 1] * ca;
-    if (!rc)
-        rc = mm_sta_polygon(res, "block", 4, c, NULL);
+    mm_sta_polygon(res, "block", 4, c, NULL);
     double sc = mm_sta_scale(fmax(fmax(W, P), N), fmax(w, h), 0.6);
 #define AT(u, v) (u) * ca - (v) * sa, (u) * sa + (v) * ca
-    if (!rc)
-        rc = mm_sta_force(res, "W", AT(w / 2, h / 2), 0, -W, sc, 0);
-    if (!rc)
-        rc = mm_sta_force(res, "P", AT(0, hP), P * ca, P * sa, sc, 1);
-    if (!rc)
-        rc = mm_sta_force(res, "N", AT(xn, 0), -N * sa, N * ca, sc, 1);
-    if (!rc && F != 0)
-        rc = mm_sta_force(res, "friction", AT(xn, 0), -F * ca, -F * sa, sc, 1);
-    if (!rc)
-        rc = mm_sta_label(res, AT(0, h * 1.3), "%s at P = %.4g N", firsts[first], P);
+    mm_sta_force(res, "W", AT(w / 2, h / 2), 0, -W, sc, 0);
+    mm_sta_force(res, "P", AT(0, hP), P * ca, P * sa, sc, 1);
+    mm_sta_force(res, "N", AT(xn, 0), -N * sa, N * ca, sc, 1);
+    if (F != 0)
+        mm_sta_force(res, "friction", AT(xn, 0), -F * ca, -F * sa, sc, 1);
+    mm_sta_label(res, AT(0, h * 1.3), "%s at P = %.4g N", firsts[first], P);
 #undef AT
     return rc;
 }
@@ -224,34 +218,24 @@ static int wedge(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* the drawing: floor, wall, wedge (thick end left), load box */
-    rc = mm_sta_fbd(res);
+    mm_sta_fbd(res);
     double Lw = 2, H = Lw * tan(be), xl = 1.2, bw = 0.6;         /* the load sits at x in [xl - bw, xl] */
     double yl = (Lw - xl) * tan(be);                              /* incline height under the load's right edge */
     double wedge_xy[6] = {0, 0, Lw, 0, 0, H}, load[8] = {xl - bw, yl + bw * tan(be), xl, yl, xl, yl + 0.8,
                                                          xl - bw, yl + 0.8};
     double floor[4] = {-0.5, 0, Lw + 0.3, 0}, wall[4] = {xl, yl, xl, yl + 1.2};
     double sc = mm_sta_scale(fmax(fmax(Pin, W), x[1]), 1.5, 0.4);
-    if (!rc)
-        rc = mm_sta_path(res, "floor", 2, floor, "ground");
-    if (!rc)
-        rc = mm_sta_path(res, "wall", 2, wall, "ground");
-    if (!rc)
-        rc = mm_sta_polygon(res, "wedge", 3, wedge_xy, NULL);
-    if (!rc)
-        rc = mm_sta_polygon(res, "load", 4, load, NULL);
-    if (!rc)
-        rc = mm_sta_force(res, "P", 0, 0.3 * H, Pin, 0, sc, 1);
-    if (!rc)
-        rc = mm_sta_force(res, "W", xl - bw / 2, yl + 0.4, 0, -W, sc, 0);
-    if (!rc)
-        rc = mm_sta_force(res, "N2 on the load", xl - bw / 2, yl + 0.5 * bw * tan(be), x[1] * sin(be),
+    mm_sta_path(res, "floor", 2, floor, "ground");
+    mm_sta_path(res, "wall", 2, wall, "ground");
+    mm_sta_polygon(res, "wedge", 3, wedge_xy, NULL);
+    mm_sta_polygon(res, "load", 4, load, NULL);
+    mm_sta_force(res, "P", 0, 0.3 * H, Pin, 0, sc, 1);
+    mm_sta_force(res, "W", xl - bw / 2, yl + 0.4, 0, -W, sc, 0);
+    mm_sta_force(res, "N2 on the load", xl - bw / 2, yl + 0.5 * bw * tan(be), x[1] * sin(be),
                           x[1] * cos(be), sc, 1);
-    if (!rc)
-        rc = mm_sta_force(res, "N3 from the wall", xl, yl + 0.4, -x[2], 0, sc, 1);
-    if (!rc)
-        rc = mm_sta_force(res, "N1 from the floor", 0.5 * Lw, 0, 0, x[0], sc, 1);
-    if (!rc)
-        rc = mm_sta_label(res, 0, H + 0.1, "P_in = %.4g N, P_out = %.4g N", Pin, Pout);
+    mm_sta_force(res, "N3 from the wall", xl, yl + 0.4, -x[2], 0, sc, 1);
+    mm_sta_force(res, "N1 from the floor", 0.5 * Lw, 0, 0, x[0], sc, 1);
+    mm_sta_label(res, 0, H + 0.1, "P_in = %.4g N, P_out = %.4g N", Pin, Pout);
     return rc;
 }
 

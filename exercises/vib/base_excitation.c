@@ -180,20 +180,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* ---- the response from the initial state ---- */
     mm_series *sx = mm_res_series(res, O_XT, n), *sy = mm_res_series(res, O_YT, n);
-    mm_series *se = mm_res_series(res, O_ERR, n);
-    double *xi = mm_res_alloc(res, (size_t)n * sizeof *xi);
-    if (!sx || !sy || !se || !xi)
-        return MM_ENOMEM;
-    mm_linspace(0, t_end, n, sx->x);
-    double worst;
-    int rc = mm_ex_sdof_response(&s, &p, t_end, n, sx->x, sx->y, xi, &worst, res, err);
+    int rc = sy ? mm_ex_sdof_plot(&s, &p, t_end, sx, mm_res_series(res, O_ERR, n), res, err) : MM_ENOMEM;
     if (rc != MM_OK)
         return rc;
-    for (int i = 0; i < n; i++) {
-        se->x[i] = sx->x[i];
-        se->y[i] = xi[i] - sx->y[i];
-    }
-    mm_ex_round_sig(se->y, n, 3);                             /* an error needs no more digits */
     for (int i = 0; i < n; i++) {
         sy->x[i] = sx->x[i];
         sy->y[i] = Y * cos(w * sx->x[i]);

@@ -247,21 +247,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* ---- the response from rest: the closed form, DOP853 beside it ---- */
     mm_series *sx = mm_res_series(res, O_XT, n), *se = mm_res_series(res, O_ENV, n);
-    mm_series *sr = mm_res_series(res, O_ERR, n);
-    double *xi = mm_res_alloc(res, (size_t)n * sizeof *xi);
-    if (!sx || !se || !sr || !xi)
-        return MM_ENOMEM;
-    mm_linspace(0, t_end, n, sx->x);
-    double worst;
-    int rc = mm_ex_sdof_response(&s, &p, t_end, n, sx->x, sx->y, xi, &worst, res, err);
+    int rc = se ? mm_ex_sdof_plot(&s, &p, t_end, sx, mm_res_series(res, O_ERR, n), res, err) : MM_ENOMEM;
     if (rc != MM_OK)
         return rc;
     for (int i = 0; i < n; i++) {
-        se->x[i] = sr->x[i] = sx->x[i];
+        se->x[i] = sx->x[i];
         se->y[i] = envelope(&s, &p, sx->x[i]);
-        sr->y[i] = xi[i] - sx->y[i];
     }
-    mm_ex_round_sig(sr->y, n, 3);                             /* an error needs no more digits */
     mm_ex_round_sig(se->y, n, 6);                             /* the envelope: a guide to the eye */
     if (p.resonant && s.F0 != 0) {
         /* the closed form's stable product formula against eq. (3) written out */
@@ -318,10 +310,10 @@ const mm_exercise mm_ex_vib_resonance = {
     .summary = "Drive a mass-spring system at its natural frequency from rest: linear growth, damped build-up, beats.",
     .tags = "vibration, 1 DOF, forced, resonance, beats, envelope",
     .theory = "exercises/vib/resonance.md",
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
     .params = params,
     .n_params = MM_COUNT(params),
+    .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs),
     .references = references,
     .check = check,
     .solve = solve,

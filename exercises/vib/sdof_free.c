@@ -83,17 +83,11 @@ static int damper_work(const mm_sdof *s, const mm_sdof_props *p, double t_end, d
     double E0 = mm_sdof_energy(s, s->x0, s->v0), size = sqrt(2 * E0 / s->k);
     double y0[3] = {s->x0, s->v0, 0}, y[3];
     mm_ode_problem prob = {.n = 3, .f = rhs_energy, .params = (void *)s, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt;
-    mm_ode_options_init(&opt);
-    opt.method = MM_ODE_DOP853;
-    opt.rtol = rtol;
-    opt.atol = rtol * fmin(fmin(size, size * p->omega_n), E0);
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol * fmin(fmin(size, size * p->omega_n), E0),
+                                                 1000000);
     opt.h_max = 1 / mm_sdof_fastest_rate(s, p);
-    opt.max_steps = 1000000;
     mm_ode_result r = {.y_end = y};
-    mm_ode_work *w = mm_ode_work_alloc(3);
-    int rc = w ? mm_ode_solve(&prob, &opt, w, &r, err) : MM_ENOMEM;
-    mm_ode_work_free(w);
+    int rc = mm_ode_run(&prob, &opt, &r, err);
     *D = y[2];
     return rc;
 }
@@ -116,20 +110,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     mm_res_scalar(res, O_CCRIT, 2 * sqrt(s.k * s.m));
 
-    mm_series *sx = mm_res_series(res, O_X, n), *se = mm_res_series(res, O_ERR, n);
-    double *xi = mm_res_alloc(res, (size_t)n * sizeof *xi);
-    if (!sx || !se || !xi)
-        return MM_ENOMEM;
-    mm_linspace(0, t_end, n, sx->x);
-    double worst;
-    int rc = mm_ex_sdof_response(&s, &p, t_end, n, sx->x, sx->y, xi, &worst, res, err);
+    mm_series *sx = mm_res_series(res, O_X, n);
+    int rc = mm_ex_sdof_plot(&s, &p, t_end, sx, mm_res_series(res, O_ERR, n), res, err);
     if (rc != MM_OK)
         return rc;
-    for (int i = 0; i < n; i++) {
-        se->x[i] = sx->x[i];
-        se->y[i] = xi[i] - sx->y[i];
-    }
-    mm_ex_round_sig(se->y, n, 3);                             /* an error needs no more digits */
 
     /* eq. (5): what the block has lost, by the closed form; its rounding
      * grows with the phase w t_end carried by the cosines */

@@ -13,7 +13,7 @@
 #include "mm_api.h"
 #include "mm_beam.h"
 #include "mm_section.h"
-#include "mm_truss.h"
+#include "../unit/mm_truss_fixture.h"
 
 #define OCTAVE_TRUSS_US 1400.0   /* PERFORMANCE.md, Octave 7.3 in-process */
 
@@ -22,47 +22,6 @@ static double now_us(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return 1e6 * (double)ts.tv_sec + 1e-3 * (double)ts.tv_nsec;
-}
-
-/* The Pratt truss of N panels of tests/unit/test_truss.c: 2N joints. */
-typedef struct pratt {
-    double xy[2 * MM_TRUSS_MAX_NODES], lf[2 * MM_TRUSS_MAX_LOADS];
-    int ends[2 * MM_TRUSS_MAX_MEMBERS], sup[6], lnode[MM_TRUSS_MAX_LOADS];
-    mm_truss t;
-} pratt;
-
-static void build(pratt *p, int N, double a, double h, double P)
-{
-    int n = 0, m = 0;
-    for (int i = 0; i <= N; i++)
-        p->xy[2 * n] = i * a, p->xy[2 * n + 1] = 0, n++;
-    for (int i = 1; i < N; i++)
-        p->xy[2 * n] = i * a, p->xy[2 * n + 1] = h, n++;
-#define T(i) (N + (i))
-#define E(q, r) (p->ends[2 * m] = (q), p->ends[2 * m + 1] = (r), m++)
-    for (int i = 0; i < N; i++)
-        E(i, i + 1);
-    for (int i = 1; i + 1 < N; i++)
-        E(T(i), T(i + 1));
-    for (int i = 1; i < N; i++)
-        E(i, T(i));
-    E(0, T(1));
-    E(N, T(N - 1));
-    for (int i = 1; i + 1 < N; i++) {
-        if (2 * i < N)
-            E(T(i), i + 1);
-        else
-            E(i, T(i + 1));
-    }
-#undef T
-#undef E
-    int sup[] = {0, 1, 1, N, 0, 1};
-    memcpy(p->sup, sup, sizeof sup);
-    for (int i = 1; i < N; i++) {
-        p->lnode[i - 1] = i;
-        p->lf[2 * (i - 1)] = 0, p->lf[2 * (i - 1) + 1] = -P;
-    }
-    p->t = (mm_truss){n, p->xy, m, p->ends, 2, p->sup, N - 1, p->lnode, p->lf};
 }
 
 /* Median of 7 timings of reps calls. */
@@ -91,21 +50,21 @@ static double time_truss(const mm_truss *t, int reps, int expect)
 
 int main(void)
 {
-    pratt p;
-    build(&p, 25, 2, 3, 1000);
+    static built p;                      /* the Pratt truss of mm_truss_fixture.h */
+    pratt(&p, 25, 2, 3, 1000);
     double us = time_truss(&p.t, 200, MM_OK);
     printf("50-joint Pratt truss (97 members), mm_truss_solve: %8.1f us   Octave 1.4 ms / this = %.1fx "
            "(goal >= 10x)\n", us, OCTAVE_TRUSS_US / us);
 
-    build(&p, 50, 2, 3, 1000);
+    pratt(&p, 50, 2, 3, 1000);
     us = time_truss(&p.t, 100, MM_OK);
     printf("100-joint Pratt truss (197 members, the limit):   %8.1f us\n", us);
 
-    build(&p, 25, 2, 3, 1000);
+    pratt(&p, 25, 2, 3, 1000);
     p.t.n_members--;                     /* a diagonal missing: the diagnosis path */
     us = time_truss(&p.t, 20, MM_ESINGULAR);
     printf("50-joint truss with a diagonal missing (rank test, mechanism named): %8.1f us\n", us);
-    build(&p, 50, 2, 3, 1000);
+    pratt(&p, 50, 2, 3, 1000);
     p.t.n_members--;
     us = time_truss(&p.t, 5, MM_ESINGULAR);
     printf("100-joint truss with a diagonal missing:                             %8.1f us\n", us);
@@ -164,7 +123,7 @@ int main(void)
     if (ex) {
         static char nodes[8192], members[8192], loads[8192];
         size_t a = 0, b = 0, c = 0;
-        build(&p, 25, 2, 3, 1000);
+        pratt(&p, 25, 2, 3, 1000);
         for (int i = 0; i < p.t.n_nodes; i++)
             a += (size_t)snprintf(nodes + a, sizeof nodes - a, "%s%g,%g", i ? ";" : "", p.xy[2 * i],
                                   p.xy[2 * i + 1]);

@@ -20,61 +20,11 @@
 
 #include "mm_api.h"
 #include "mm_dyn.h"
-#include "mm_pipeline.h"
-
-static const cJSON *find(const cJSON *doc, const char *list, const char *name)
-{
-    const cJSON *s;
-    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, list)) {
-        const cJSON *nm = cJSON_GetObjectItem(s, "name");
-        if (cJSON_IsString(nm) && strcmp(nm->valuestring, name) == 0)
-            return s;
-    }
-    return NULL;
-}
-
-static double scalar(const cJSON *doc, const char *name)
-{
-    const cJSON *s = find(doc, "scalars", name);
-    if (!s)
-        fail_msg("no scalar %s", name);
-    return cJSON_GetObjectItem(s, "value")->valuedouble;
-}
+#include "mm_answer.h"
 
 static double scalar_error(const cJSON *doc, const char *name)
 {
-    return cJSON_GetObjectItem(find(doc, "scalars", name), "error")->valuedouble;
-}
-
-/* A series' y values (malloc'd) and its length. */
-static int series_y(const cJSON *doc, const char *name, double **y)
-{
-    const cJSON *s = find(doc, "series", name);
-    if (!s)
-        fail_msg("no series %s", name);
-    const cJSON *ys = cJSON_GetObjectItem(s, "y");
-    int n = cJSON_GetArraySize(ys);
-    *y = malloc((size_t)n * sizeof **y);
-    for (int i = 0; i < n; i++)
-        (*y)[i] = cJSON_GetArrayItem(ys, i)->valuedouble;
-    return n;
-}
-
-static double method_stat(const cJSON *doc, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItem(cJSON_GetObjectItem(doc, "method"), key);
-    if (!cJSON_IsNumber(v))
-        fail_msg("no method figure %s", key);
-    return v->valuedouble;
-}
-
-static int warned(const cJSON *doc, const char *word)
-{
-    const cJSON *w;
-    cJSON_ArrayForEach(w, cJSON_GetObjectItem(doc, "warnings"))
-        if (strstr(w->valuestring, word))
-            return 1;
-    return 0;
+    return cJSON_GetObjectItem(named(doc, "scalars", name), "error")->valuedouble;
 }
 
 static int has_animation(const cJSON *doc)
@@ -165,7 +115,7 @@ static void double_pendulum_energy_over_1000_periods_should_stay_bounded_only_wh
     (void)state;
     /* small swings: the slow period 2 pi / 2.3972 = 2.621 s; 1,000 of them */
     cJSON *d = solve_ok("dyn-double-pendulum", "theta1_0=0.05&theta2_0=0.05&t_end=2621&h=0.042");
-    double sy = method_stat(d, "symplectic_largest_energy_error"), dp = method_stat(d, "dopri5_largest_energy_error");
+    double sy = stat(d, "symplectic_largest_energy_error"), dp = stat(d, "dopri5_largest_energy_error");
     /* Gauss-4 at omega_fast h = 0.24: an O(h^4) error on an energy of
      * 1e-3 of the scale, bounded: seen at 1e-12; Dormand-Prince at rtol 1e-6
      * drifts to ~4e-6 */

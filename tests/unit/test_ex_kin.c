@@ -20,35 +20,7 @@
 #include <string.h>
 
 #include "mm_api.h"
-#include "mm_pipeline.h"
-
-static const cJSON *find(const cJSON *doc, const char *list, const char *name)
-{
-    const cJSON *s;
-    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, list)) {
-        const cJSON *nm = cJSON_GetObjectItem(s, "name");
-        if (cJSON_IsString(nm) && strcmp(nm->valuestring, name) == 0)
-            return s;
-    }
-    return NULL;
-}
-
-static double scalar(const cJSON *doc, const char *name)
-{
-    const cJSON *s = find(doc, "scalars", name);
-    if (!s)
-        fail_msg("no scalar %s", name);
-    return cJSON_GetObjectItem(s, "value")->valuedouble;
-}
-
-static int has_warning(const cJSON *doc, const char *word)
-{
-    const cJSON *w;
-    cJSON_ArrayForEach(w, cJSON_GetObjectItem(doc, "warnings"))
-        if (cJSON_IsString(w) && strstr(w->valuestring, word))
-            return 1;
-    return 0;
-}
+#include "mm_answer.h"
 
 static void expect_400(const char *id, const char *query, const char *param, const char *word)
 {
@@ -95,7 +67,7 @@ static void slider_crank_exactly_at_a_toggle_should_leave_out_v_and_a(void **sta
     cJSON *d = solve_ok("kin-slider-crank", q);
     assert_null(find(d, "scalars", "v"));
     assert_null(find(d, "scalars", "a"));
-    assert_true(has_warning(d, "toggle"));
+    assert_true(warned(d, "toggle"));
     check_abs(scalar(d, "x"), 0.1 * cos(M_PI / 6), 2e-8, "x = r cos phi at the toggle (to sqrt of rounding)");
     check_abs(scalar(d, "theta3"), M_PI / 2, 1e-7, "the rod upright");
     const cJSON *xs = find(d, "scalars", "x");
@@ -110,7 +82,7 @@ static void slider_crank_with_an_offset_too_large_should_report_where_it_cannot_
     (void)state;
     /* reachable for phi in [-pi/6, 7 pi/6]: at phi = 1 it closes and says so */
     cJSON *d = solve_ok("kin-slider-crank", "e=0.35&phi=1");
-    assert_true(has_warning(d, "cannot close"));
+    assert_true(warned(d, "cannot close"));
     assert_true(find(d, "scalars", "v") != NULL);
     cJSON_Delete(d);
     /* at phi = -pi/2 it cannot close; with |e| > l + r nowhere */
@@ -160,7 +132,7 @@ static void four_bar_at_the_grashof_boundary_should_be_a_change_point(void **sta
     cJSON *d = solve_ok("kin-four-bar", "a=0.2&b=0.5&c=0.4&d=0.3");
     check_abs(scalar(d, "grashof"), 1, 0, "s + l = p + q counts as Grashof");
     assert_string_equal(cJSON_GetObjectItem(find(d, "scalars", "grashof"), "text")->valuestring, "change point");
-    assert_true(has_warning(d, "change point"));
+    assert_true(warned(d, "change point"));
     assert_true(find(d, "checks", "change point: located by the sweep (det = 0) vs all links in line") != NULL);
     cJSON_Delete(d);
 }
@@ -178,7 +150,7 @@ static void a_parallelogram_should_move_as_one_and_stop_at_its_change_points(voi
     d = solve_ok("kin-four-bar", "a=0.3&b=0.6&c=0.3&d=0.6&theta2=0");
     assert_null(find(d, "scalars", "omega3"));
     assert_null(find(d, "scalars", "alpha4"));
-    assert_true(has_warning(d, "change point"));
+    assert_true(warned(d, "change point"));
     check_abs(scalar(d, "theta4"), 0, 1e-6, "all links in line");
     cJSON_Delete(d);
 }
@@ -192,7 +164,7 @@ static void four_bar_crank_exactly_at_a_toggle_should_leave_out_the_rates(void *
     snprintf(q, sizeof q, "a=0.5&b=0.3&c=0.4&d=0.35&theta2=%.17g", tog);
     cJSON *doc = solve_ok("kin-four-bar", q);
     assert_null(find(doc, "scalars", "omega4"));
-    assert_true(has_warning(doc, "toggle"));
+    assert_true(warned(doc, "toggle"));
     check_abs(scalar(doc, "grashof"), 0, 0, "0.5 + 0.3 > 0.4 + 0.35: not Grashof");
     check_abs(scalar(doc, "theta2_toggle2"), tog, 1e-15, "the toggle reported");
     /* at the toggle coupler and rocker are in line: theta4 - theta3 = pi */
@@ -215,7 +187,7 @@ static void linkages_near_their_limits_should_keep_to_their_arc_and_assembly(voi
     (void)state;
     cJSON *doc = solve_ok("kin-four-bar", "a=0.1739779128451147&b=0.08439686717299758&c=0.07173806426135312&"
                                           "d=0.185803615458478&theta2=-13.308386829754298&branch=crossed&points=187");
-    assert_true(has_warning(doc, "nor from"));              /* two gaps: the other arc is another assembly */
+    assert_true(warned(doc, "nor from"));              /* two gaps: the other arc is another assembly */
     double lo = scalar(doc, "theta2_toggle1"), hi = scalar(doc, "theta2_toggle2");
     assert_true(lo < -13.308386829754298 && -13.308386829754298 < hi);
     cJSON_Delete(doc);
@@ -246,7 +218,7 @@ static void a_rhombus_should_take_both_its_assemblies(void **state)
     check_abs(scalar(doc, "theta3"), 1 - M_PI, 1e-12, "C on O2: the coupler points back along the crank");
     cJSON_Delete(doc);
     doc = solve_ok("kin-four-bar", "a=10&b=0.01&c=10&d=0.01&theta2=-100&points=721");
-    assert_true(has_warning(doc, "change point"));
+    assert_true(warned(doc, "change point"));
     cJSON_Delete(doc);
 }
 
@@ -258,7 +230,7 @@ static void a_cam_with_a_roller_too_large_should_warn_of_undercutting(void **sta
     cJSON *d = solve_ok("kin-cam-follower", "Rb=0.01&Rr=0.03&h=0.04&beta_rise=0.8");
     check_abs(scalar(d, "undercut"), 1, 0, "undercut");
     assert_true(scalar(d, "rho_cam_min") < 0);
-    assert_true(has_warning(d, "undercut"));
+    assert_true(warned(d, "undercut"));
     cJSON_Delete(d);
     d = solve_ok("kin-cam-follower", "");
     check_abs(scalar(d, "undercut"), 0, 0, "the default cam is not undercut");
@@ -334,7 +306,7 @@ static void space_motion_should_find_gimbal_lock(void **state)
     cJSON *d = solve_ok("kin-space-motion", q);
     check_abs(scalar(d, "gimbal_lock"), 1, 0, "pitch of 90 degrees");
     check_abs(scalar(d, "det_B"), 0, 4 * DBL_EPSILON, "det B = -cos(theta) = 0");
-    assert_true(has_warning(d, "phi - psi"));
+    assert_true(warned(d, "phi - psi"));
     cJSON_Delete(d);
     d = solve_ok("kin-space-motion", "");
     check_abs(scalar(d, "gimbal_lock"), 0, 0, "no lock at the defaults");

@@ -61,14 +61,17 @@ static void spit(const char *path, const char *text)
 static char *octave(int parts)
 {
     char cmd[1200];
-    const char *oct = "timeout 600 octave --no-gui --no-window-system --norc --quiet";
+    /* a hang is stopped by a CPU-time limit, not a wall-clock one: on a
+     * loaded machine (load 14-16) the two Octaves once took over 600 s of
+     * wall time for their ~60 s of CPU */
+    const char *oct = "(ulimit -t 900; exec octave --no-gui --no-window-system --norc --quiet";
     if (parts == 2)
         snprintf(cmd, sizeof cmd,
-                 "cd '%s' && { %s --eval 'part = 1; driver' > out1.txt 2>&1 & "
-                 "%s --eval 'part = 2; driver' > out2.txt 2>&1; wait; } ; cat out1.txt out2.txt",
+                 "cd '%s' && { %s --eval 'part = 1; driver') > out1.txt 2>&1 & "
+                 "%s --eval 'part = 2; driver') > out2.txt 2>&1; wait; } ; cat out1.txt out2.txt",
                  dir, oct, oct);
     else
-        snprintf(cmd, sizeof cmd, "cd '%s' && %s --eval 'driver' 2>&1", dir, oct);
+        snprintf(cmd, sizeof cmd, "cd '%s' && %s --eval 'driver') 2>&1", dir, oct);
     FILE *p = popen(cmd, "r");
     assert_non_null(p);
     size_t cap = 1 << 20, len = 0;

@@ -1301,6 +1301,50 @@ static void fixed_steps_should_be_equal_and_never_one_too_many(void **state)
     check_abs(mm_ode_fixed_steps(1, 0.1), 10, 0, "1 / 0.1 = 10 exactly");
 }
 
+/* mm_ode_run is the ritual check, workspace, solve, free in one call: the
+ * same answer to the last bit as mm_ode_solve with a workspace of one's
+ * own, and a refused problem refused before anything is allocated or
+ * evaluated (the right-hand side is never called). */
+static void run_should_give_what_check_and_solve_give_and_refuse_what_check_refuses(void **state)
+{
+    (void)state;
+    ctx c1 = {0}, c2 = {0};
+    mm_ode_problem p1 = osc_problem(&c1, OSC_Y0, 2.0), p2 = osc_problem(&c2, OSC_Y0, 2.0);
+    mm_ode_options o = opts(MM_ODE_DOP853, 1e-9, 0);
+    double t[5] = {0, 0.5, 1, 1.5, 2}, y1[10], y2[10];
+    mm_ode_result r1 = {.t_out = t, .nout = 5, .y_out = y1}, r2 = {.t_out = t, .nout = 5, .y_out = y2};
+    mm_error err;
+    assert_int_equal(solve(&p1, &o, &r1, &err), MM_OK);
+    assert_int_equal(mm_ode_run(&p2, &o, &r2, &err), MM_OK);
+    assert_memory_equal(y1, y2, sizeof y1);
+    assert_int_equal(r1.n_eval, r2.n_eval);
+    assert_int_equal(c1.calls, c2.calls);
+
+    ctx c3 = {0};
+    mm_ode_problem bad = osc_problem(&c3, OSC_Y0, -1.0);        /* t_end before t0 */
+    mm_ode_result r3 = {.t_out = NULL, .nout = 0};
+    assert_int_equal(mm_ode_run(&bad, &o, &r3, &err), MM_ERANGE);
+    assert_string_equal(err.param, "t_end");
+    assert_int_equal(c3.calls, 0);
+}
+
+/* mm_ode_options_adaptive is mm_ode_options_init with the method, the two
+ * tolerances and the step budget set, and nothing else changed. */
+static void options_adaptive_should_be_the_defaults_with_four_fields_set(void **state)
+{
+    (void)state;
+    mm_ode_options want, got = mm_ode_options_adaptive(MM_ODE_DOP853, 1e-8, 1e-11, 12345);
+    mm_ode_options_init(&want);
+    want.method = MM_ODE_DOP853;
+    want.rtol = 1e-8;
+    want.atol = 1e-11;
+    want.max_steps = 12345;
+    assert_int_equal(got.method, want.method);
+    assert_true(got.rtol == want.rtol && got.atol == want.atol && got.max_steps == want.max_steps);
+    assert_true(got.h == want.h && got.h_init == want.h_init && got.h_max == want.h_max);
+    assert_int_equal(got.pi_control, want.pi_control);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1325,8 +1369,10 @@ int main(void)
         cmocka_unit_test(adaptive_run_should_stop_at_max_steps_with_a_clear_message),
         cmocka_unit_test(check_should_reject_each_bad_argument_naming_the_field),
         cmocka_unit_test(solve_should_report_enomem_for_a_missing_workspace),
+        cmocka_unit_test(run_should_give_what_check_and_solve_give_and_refuse_what_check_refuses),
         cmocka_unit_test(work_alloc_should_refuse_bad_sizes_and_free_null),
         cmocka_unit_test(options_init_should_fill_the_documented_defaults),
+        cmocka_unit_test(options_adaptive_should_be_the_defaults_with_four_fields_set),
         cmocka_unit_test(solve_should_stop_when_the_callback_returns_nonzero),
         cmocka_unit_test(adaptive_run_should_report_nonfinite_when_f_gives_nan),
         cmocka_unit_test(fixed_step_beyond_the_stability_limit_should_report_nonfinite),
