@@ -321,9 +321,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_scalar_err(res, O_DISC, dd, tol, MM_ERR_BOUND);
         mm_res_check_abs(res, "q(t) vs the exact discrete solution of the scheme, powers of its amplification "
                               "matrix (11): worst difference [m] (rounding)", dd, 0, tol);
-        /* the transition matrix's rounding at each plotted step, and the phase of the force
-         * and of the modes, omega t in double: eps per radian of either (a forced run over
-         * 141 radians was 1.26x over 8 eps ns A alone, tests/ref/num_ref.py) */
+        /* the transition matrix's rounding per plotted step, and omega t's phase in double (eps a
+         * radian of force or mode: a run over 141 rad was 1.26x over 8 eps ns A, tests/ref) */
         err_ref = eps * (8.0 * ns + 2 * (s.w + wmax) * (double)N * h) * fmax(A, mm_maxabs(qx, ns * n));
     } else {
         rc = mm_mdof_ode(&ms, force, &s, s.q0, s.v0, ns, r1.t, 1e-11, fmax(A, 1e-300), qx, &ref_evals, err);
