@@ -112,15 +112,16 @@ typedef struct mm_fem_problem {
 
 typedef enum mm_fem_method {
     MM_FEM_AUTO,     /* dense up to 40 free DOFs or a third of the modes;
-                        beyond, subspace iteration for up to 20 modes of a
-                        supported mesh, banded otherwise (free-free, more
-                        modes, or subspace iteration not settling).
+                        beyond, Lanczos; should it fail, subspace iteration
+                        for up to 20 modes of a supported mesh, banded
+                        otherwise (free-free, more modes, or subspace
+                        iteration not settling).
                         bench_fem: for ten modes of a 1000-element
                         cantilever, subspace 43 ms and 3e-13 on mode 1,
                         banded 190 ms and 6e-6, dense 11 s and 3e-9 */
     MM_FEM_DENSE,    /* all eigenpairs, mm_linalg_sygv (dsygvd) */
     MM_FEM_BANDED,   /* first modes only, mm_linalg_sbgv_first (dsbgvx) */
-    MM_FEM_SUBSPACE  /* first modes only, subspace iteration with K^-1 M
+    MM_FEM_SUBSPACE, /* first modes only, subspace iteration with K^-1 M
                         (K factored once, banded Cholesky) and a Ritz step
                         of p = max(2 nmodes, nmodes + 8) vectors (Bathe):
                         no O(n^2) work at all, and the lowest modes of a
@@ -129,6 +130,17 @@ typedef enum mm_fem_method {
                         meshes only (K positive definite); AUTO takes it
                         for up to 20 modes of a mesh with no rigid-body
                         modes, where banded would be taken */
+    MM_FEM_LANCZOS   /* first modes only, shift-invert Lanczos in the M
+                        inner product with full reorthogonalisation: K
+                        factored once (banded Cholesky; a free-free member
+                        on temporary supports, its rigid-body modes known
+                        exactly and deflated), one solve per Lanczos vector
+                        (about 2 nmodes + 10 of them), stopping on each
+                        wanted Ritz pair's residual, then a Sturm sequence
+                        count (LDL^T of K - sigma M) proving no mode below
+                        the last was missed.  AUTO takes it wherever it
+                        would have taken subspace or banded, and falls back
+                        to those if it fails (not seen on any mesh) */
 } mm_fem_method;
 
 typedef struct mm_fem_options {
@@ -154,8 +166,8 @@ typedef struct mm_fem_modes {
                           mesh has fewer (e.g. a 1-element fixed-free bar) */
     size_t n_rigid;    /* out: rigid-body modes found and left out */
     size_t n_free;     /* out: free DOFs (order of the eigenproblem) */
-    mm_fem_method method;   /* out: MM_FEM_DENSE, MM_FEM_BANDED or
-                               MM_FEM_SUBSPACE, as used */
+    mm_fem_method method;   /* out: MM_FEM_DENSE, MM_FEM_BANDED,
+                               MM_FEM_SUBSPACE or MM_FEM_LANCZOS, as used */
 } mm_fem_modes;
 
 /* ---- set-up --------------------------------------------------------------- */

@@ -483,6 +483,33 @@ out:
     return rc;
 }
 
+int mm_linalg_stev(int n, const double *d, const double *e, double *lambda,
+                   double *Z, mm_error *err)
+{
+    int rc;
+    assert(d && lambda && (n == 1 || e));
+    if ((rc = check_order("n", n, MM_LINALG_MAX_N, err)) ||
+        (rc = mm_linalg_check_finite("d", (size_t)n, d, err)) ||
+        (rc = mm_linalg_check_finite("e", (size_t)n - 1, e, err)))
+        return rc;
+    double *sub = alloc_doubles((size_t)n);
+    if (!sub)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory for eigenvalues");
+    memcpy(lambda, d, (size_t)n * sizeof *lambda);
+    if (n > 1)
+        memcpy(sub, e, (size_t)(n - 1) * sizeof *sub);
+    lapack_int li;
+    LAPACK_CALL(li, LAPACKE_dstev(LAPACK_COL_MAJOR, Z ? 'V' : 'N', n, lambda, sub, Z, n));
+    if (li < 0)
+        rc = lapack_fail(err, li, "dstev");
+    else if (li > 0)
+        rc = eig_noconv(err, "dstev", (int)li);
+    else
+        rc = MM_OK;
+    free(sub);
+    return rc;
+}
+
 int mm_linalg_sygv_first(int n, int nev, const double *K, const double *M,
                          double *lambda, double *V, mm_error *err)
 {

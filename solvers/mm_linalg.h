@@ -203,6 +203,16 @@ int mm_linalg_sbgv_first(int n, int kd, int nev, const double *Kb,
                          const double *Mb, double *lambda, double *V,
                          mm_error *err);
 
+/* All n eigenpairs of the symmetric tridiagonal matrix with diagonal d[n]
+ * and off-diagonal e[n-1] (LAPACK dstev, implicit QL/QR): lambda[n]
+ * ascending, Z[n*n] (or NULL) column-major, eigenvector j in
+ * Z[j*n .. j*n + n-1], each of Euclidean norm 1, sign as LAPACK leaves it.
+ * d and e are not modified.  The small projected problem of a Lanczos
+ * iteration (mm_fem).  MM_ERANGE ("n"), MM_EVALUE (non-finite entries),
+ * MM_ENOCONV, MM_ENOMEM. */
+int mm_linalg_stev(int n, const double *d, const double *e, double *lambda,
+                   double *Z, mm_error *err);
+
 /* ---- general (nonsymmetric) eigenproblem A v = lambda v -------------------- */
 
 /* Eigenvalues of the general n x n A (LAPACK dgeev, with balancing):

@@ -99,7 +99,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return rc;
     mm_res_method(res, md.method == MM_FEM_DENSE    ? "LAPACK dsygvd, dense: every mode of the mesh"
                        : md.method == MM_FEM_BANDED ? "LAPACK dsbgvx, banded: only the modes shown"
-                                                    : "subspace iteration with K^-1 M, banded: only the modes shown",
+                       : md.method == MM_FEM_LANCZOS
+                           ? "shift-invert Lanczos with K^-1 M, banded: only the modes shown"
+                           : "subspace iteration with K^-1 M, banded: only the modes shown",
                   0);
     mm_res_method_stat(res, "free_dofs", (double)md.n_free);
 
