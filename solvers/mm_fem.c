@@ -572,19 +572,33 @@ static int rigid_basis(const mm_fem_problem *p, size_t nf, int kd, const double 
 
 /* Remove from r its M-components along the nb M-orthonormal vectors B
  * (MB = M B), classical Gram-Schmidt twice ("twice is enough", Parlett):
- * full reorthogonalisation.  Adds the coefficients removed to c (or NULL). */
+ * full reorthogonalisation.  c (nb doubles) is scratch.  Each pass forms
+ * every coefficient first (MB^T r, four partial sums per product), then
+ * subtracts B c: two sweeps over the basis instead of one per vector. */
 static void m_orthogonalise(size_t nf, size_t nb, const double *B, const double *MB, double *r, double *c)
 {
-    for (int pass = 0; pass < 2; pass++)
+    for (int pass = 0; pass < 2; pass++) {
         for (size_t b = 0; b < nb; b++) {
-            double s = 0;
-            for (size_t i = 0; i < nf; i++)
-                s += MB[b * nf + i] * r[i];
-            for (size_t i = 0; i < nf; i++)
-                r[i] -= s * B[b * nf + i];
-            if (c)
-                c[b] += s;
+            const double *mb = MB + b * nf;
+            double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+            size_t i = 0;
+            for (; i + 4 <= nf; i += 4) {
+                s0 += mb[i] * r[i];
+                s1 += mb[i + 1] * r[i + 1];
+                s2 += mb[i + 2] * r[i + 2];
+                s3 += mb[i + 3] * r[i + 3];
+            }
+            for (; i < nf; i++)
+                s0 += mb[i] * r[i];
+            c[b] = (s0 + s1) + (s2 + s3);
         }
+        for (size_t b = 0; b < nb; b++) {
+            const double *bb = B + b * nf;
+            double cb = c[b];
+            for (size_t i = 0; i < nf; i++)
+                r[i] -= cb * bb[i];
+        }
+    }
 }
 
 /* The nwant lowest eigenpairs of the banded pencil (Kb, Mb) by
@@ -622,7 +636,7 @@ static int lanczos(const mm_fem_problem *p, size_t nf, int kd, const double *Kb,
     double *B = malloc((nrig + mmax + 1) * nf * sizeof *B), *MB = malloc((nrig + mmax + 1) * nf * sizeof *MB);
     double *R = B, *MR = MB, *Q = B + nrig * nf, *MQ = MB + nrig * nf;
     double *al = malloc(mmax * sizeof *al), *be = malloc(mmax * sizeof *be), *th = malloc(mmax * sizeof *th);
-    double *Z = malloc(mmax * mmax * sizeof *Z), *y = malloc(nf * sizeof *y);
+    double *Z = malloc(mmax * mmax * sizeof *Z), *y = malloc((nf > nrig + mmax + 1 ? nf : nrig + mmax + 1) * sizeof *y);
     if (!Kc || !B || !MB || !al || !be || !th || !Z || !y ||
         (nrig && rigid_basis(p, nf, kd, Mb, nrig, R, MR))) {
         rc = mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
@@ -652,7 +666,7 @@ static int lanczos(const mm_fem_problem *p, size_t nf, int kd, const double *Kb,
     /* the start: K^-1 M of a fixed irregular vector (already in the range
      * of the operator, so its high-mode part is damped once) */
     uint64_t st = UINT64_C(0x9E3779B97F4A7C15);
-    size_t k = 0;             /* Lanczos vectors so far */
+    size_t k = 0, off = 0;    /* Lanczos vectors so far; see below */
     for (size_t i = 0; i < nf; i++) {
         st ^= st << 13, st ^= st >> 7, st ^= st << 17;
         y[i] = 1.0 + (double)(st >> 11) / 9007199254740992.0;
@@ -661,7 +675,7 @@ static int lanczos(const mm_fem_problem *p, size_t nf, int kd, const double *Kb,
     for (size_t i = s0; i < s0 + nrig; i++)
         Q[i] = 0;
     band_chol_solve(nf, kd, Kc, 0, Q);
-    m_orthogonalise(nf, nrig, B, MB, Q, NULL);
+    m_orthogonalise(nf, nrig, B, MB, Q, y);
     band_matvec(nf, kd, Mb, Q, MQ);
     int done = 0;
     while (!done) {
@@ -683,7 +697,7 @@ static int lanczos(const mm_fem_problem *p, size_t nf, int kd, const double *Kb,
         for (size_t i = 0; i < nf; i++)
             a += mqk[i] * r[i];
         al[k - 1] = a;
-        m_orthogonalise(nf, nrig + k, B, MB, r, NULL);
+        m_orthogonalise(nf, nrig + k, B, MB, r, y);
         band_matvec(nf, kd, Mb, r, mr);
         double bb = 0;
         for (size_t i = 0; i < nf; i++)
@@ -693,18 +707,24 @@ static int lanczos(const mm_fem_problem *p, size_t nf, int kd, const double *Kb,
          * exact; go on from a fresh vector if more are wanted */
         int broke = !(bb > 1e-12 * fabs(a));
         be[k - 1] = broke ? 0 : bb;
-        if (k >= ne && (k == mmax || broke || (k - ne) % (k / 8 + 1) == 0)) {
-            /* the Ritz values of T_k, ascending theta; residual of the pair i:
-             * |beta_k Z(k-1, i)| */
+        /* the first check once k >= 1.5 ne (no sooner do the wanted ones
+         * settle), then every k/8 + 1 steps: each costs a bisection for
+         * ne + 1 eigenvalues of T_k */
+        size_t first = ne + ne / 2;
+        if (k == mmax || (k >= first && (broke || (k - first) % (k / 8 + 1) == 0))) {
+            /* the largest ne + 1 Ritz values of T_k (ascending theta, the
+             * first of them theta_off, 0-based in T_k's spectrum) and their
+             * vectors; residual of the pair i: |beta_k Z(k-1, i)| */
+            off = k > ne ? k - ne - 1 : 0;
             mm_error e2;
-            if ((rc = mm_linalg_stev((int)k, al, be, th, Z, &e2))) {
+            if ((rc = mm_linalg_stev((int)k, al, be, (int)off + 1, (int)k, th, Z, &e2))) {
                 rc = mm_error_set(err, MM_ENOCONV, NULL, "Lanczos: %s", e2.msg);
                 goto out;
             }
             done = 1;
             for (size_t j = 0; j < ne && done; j++) {
                 size_t i = k - 1 - j;
-                done = th[i] > 0 && fabs(be[k - 1] * Z[i * k + k - 1]) <= 1e-10 * th[i];
+                done = th[i - off] > 0 && fabs(be[k - 1] * Z[(i - off) * k + k - 1]) <= 1e-10 * th[i - off];
             }
             if (done)
                 break;
@@ -718,7 +738,7 @@ static int lanczos(const mm_fem_problem *p, size_t nf, int kd, const double *Kb,
                 st ^= st << 13, st ^= st >> 7, st ^= st << 17;
                 r[i] = (double)(st >> 11) / 9007199254740992.0 - 0.5;
             }
-            m_orthogonalise(nf, nrig + k, B, MB, r, NULL);
+            m_orthogonalise(nf, nrig + k, B, MB, r, y);
             band_matvec(nf, kd, Mb, r, mr);
         }
     }
@@ -734,8 +754,8 @@ static int lanczos(const mm_fem_problem *p, size_t nf, int kd, const double *Kb,
     double bk = be[k - 1];
     for (size_t j = 0; j < ne; j++) {
         size_t c = k - 1 - j;
-        const double *s = Z + c * k;
-        double g = bk > 0 ? s[k - 1] / th[c] : 0, f = bk * g;
+        const double *s = Z + (c - off) * k;
+        double g = bk > 0 ? s[k - 1] / th[c - off] : 0, f = bk * g;
         for (size_t i = 0; i < nf; i++)
             y[i] = g * rk[i];
         for (size_t l = 0; l < k; l++)
@@ -744,12 +764,12 @@ static int lanczos(const mm_fem_problem *p, size_t nf, int kd, const double *Kb,
         double sc = 1 / sqrt(1 + f * f);
         for (size_t i = 0; i < nf; i++)
             V[i * nwant + nrig + j] = sc * y[i];
-        lambda[nrig + j] = 1 / th[c];
+        lambda[nrig + j] = 1 / th[c - off];
     }
     /* Sturm check: exactly nwant eigenvalues below sigma, just above the
      * last wanted one (and below the next Ritz value) */
     if (k < room) {
-        double last = 1 / th[k - ne], next = k > ne ? 1 / th[k - ne - 1] : INFINITY;
+        double last = 1 / th[k - ne - off], next = k > ne ? 1 / th[k - ne - 1 - off] : INFINITY;
         double sigma = last + fmin(1e-3 * last, 0.5 * (next - last));
         long below = band_sturm(nf, kd, Kb, Mb, sigma, Kc);
         if (below != (long)nwant) {
