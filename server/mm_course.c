@@ -51,9 +51,11 @@ typedef struct scanner {
     mm_course *c;
 } scanner;
 
+/* White space as cJSON reads it: every byte up to ' ' (it accepts a stray
+ * control character between values, so the scanner must step over it too) */
 static void skip_ws(scanner *s)
 {
-    while (s->p < s->end && (*s->p == ' ' || *s->p == '\t' || *s->p == '\n' || *s->p == '\r')) {
+    while (s->p < s->end && (unsigned char)*s->p <= ' ') {
         if (*s->p == '\n')
             s->line++;
         s->p++;
@@ -91,7 +93,8 @@ static void scan_value(scanner *s, const cJSON *node, int line)
     if (open == '{' || open == '[') {
         s->p++;
         const cJSON *child = node->child;
-        for (;;) {
+        for (const char *was = NULL; s->p != was;) {   /* every round moves on, or the scan ends */
+            was = s->p;
             skip_ws(s);
             if (s->p >= s->end || *s->p == '}' || *s->p == ']') {
                 s->p++;

@@ -142,6 +142,16 @@ static void every_rule_should_be_refused_with_its_line(void **state)
     refused("[1,2]", "one JSON object");
 }
 
+/* cJSON reads every byte up to ' ' as white space; the scan that finds
+ * each value's line once looped for ever (and grew without bound) on a
+ * stray control character between two values: found by fuzz_course. */
+static void a_control_character_between_values_should_not_stop_the_line_count(void **state)
+{
+    (void)state;
+    refused("{\"exercises\": [\"vib-sdof-free\",\n \x19 \"nope\"]}", "c.json:2: no exercise \"nope\"");
+    refused("{\x01\n\x1f\"title\":\x0b 3}", "c.json:2: \"title\" must be a text");
+}
+
 static void assignments_should_be_kept_as_written(void **state)
 {
     (void)state;
@@ -177,6 +187,7 @@ int main(void)
         cmocka_unit_test(an_empty_object_should_be_the_builtin_course),
         cmocka_unit_test(overrides_should_narrow_limits_and_move_defaults),
         cmocka_unit_test(every_rule_should_be_refused_with_its_line),
+        cmocka_unit_test(a_control_character_between_values_should_not_stop_the_line_count),
         cmocka_unit_test(assignments_should_be_kept_as_written),
         cmocka_unit_test(a_missing_file_should_say_so),
     };
