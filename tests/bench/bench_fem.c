@@ -2,8 +2,9 @@
  *
  * 1. Cantilever beams of 10 ... 1000 elements: all modes by the dense
  *    solver (LAPACK dsygvd through mm_linalg_sygv) against the first ten by
- *    the banded selective one (dsbgvx + inverse iteration) and by subspace
- *    iteration (banded Cholesky of K, a Ritz step), all through
+ *    the banded selective one (dsbgvx + inverse iteration), by subspace
+ *    iteration (banded Cholesky of K, a Ritz step) and by shift-invert
+ *    Lanczos (the same Cholesky, a Krylov space of K^-1 M), all through
  *    mm_fem_modes_solve, so assembly and the Rayleigh-quotient refinement
  *    are included.  Also the error of mode 1 against the closed form
  *    (beta_1 L = 1.8751...), to show what each answer is worth.
@@ -11,9 +12,10 @@
  *    (PERFORMANCE.md: Octave 7.3 takes 14.7 ms in-process).
  * 3. vib-beam-modes against Octave's 3.7 ms for a 100-element cantilever,
  *    assemble + eig(K, M) (PERFORMANCE.md; goal: at least 10x faster): the
- *    same work through mm_fem_modes_solve (every mode, dense; the modes the
- *    exercise shows, banded), and the whole request (validation, the
- *    solve, the convergence study of 5 more meshes, the JSON answer).
+ *    same work through mm_fem_modes_solve (every mode, dense; the modes
+ *    the exercise shows, by the driver AUTO picks), and the whole request
+ *    (validation, the solve, the convergence study of 5 more meshes, the
+ *    JSON answer).
  *
  * Times are the best of several runs (the machine is noisy, +-30 %); only
  * ratios measured in one run mean much.  Exits 0.
