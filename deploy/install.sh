@@ -18,7 +18,7 @@ destdir=${1:-}
 prefix=${2:-/usr/local}
 bin=${3:-build/mechmat-server}
 share="$destdir$prefix/share/mechmat"
-packages=(katex d3 @observablehq/plot)
+packages=(katex)                 # package.json "dependencies" (d3 and Plot went in deb6ec1)
 
 [[ -x "$bin" ]] || { echo "install: $bin is not built (make first)"; exit 1; }
 for p in "${packages[@]}"; do

@@ -8,6 +8,27 @@
 #include <string.h>
 
 enum { BLOCK_MIN = 16 * 1024, ALIGN = 16 };
+#define SPARE_MAX ((size_t)1 << 20)     /* a thread keeps one block up to this size */
+
+/* The block a thread keeps between results (mm_result_keep_blocks): the
+ * server's workers solve one request after another, and a block of 64 KiB
+ * or more is mapped and unmapped by malloc each time (mm_http.c sets the
+ * threshold), a system call, a page fault per 4 KiB touched and, on
+ * munmap, a TLB shootdown across the cores: about half of a default
+ * vib-sdof-forced request's server time went there. */
+static _Thread_local struct {
+    int on;
+    mm_block *spare;
+} keep;
+
+void mm_result_keep_blocks(int on)
+{
+    keep.on = on;
+    if (!on) {
+        free(keep.spare);
+        keep.spare = NULL;
+    }
+}
 
 void mm_result_init(mm_result *r, size_t cap)
 {
@@ -22,7 +43,12 @@ void mm_result_release(mm_result *r)
     mm_block *b = r->blocks;
     while (b) {
         mm_block *next = b->next;
-        free(b);
+        if (keep.on && b->size <= SPARE_MAX && (!keep.spare || keep.spare->size < b->size)) {
+            free(keep.spare);                  /* the largest is kept */
+            keep.spare = b;
+        } else {
+            free(b);
+        }
         b = next;
     }
     r->blocks = NULL;
@@ -67,7 +93,13 @@ void *mm_res_alloc(mm_result *r, size_t bytes)
                 return NULL;
             }
         }
-        b = malloc(header_size() + size);
+        if (keep.spare && keep.spare->size >= size && r->total + keep.spare->size <= r->cap) {
+            b = keep.spare;                    /* this thread's block of the last result */
+            keep.spare = NULL;
+            size = b->size;
+        } else {
+            b = malloc(header_size() + size);
+        }
         if (!b) {
             fail(r, MM_ENOMEM, "malloc failed", NULL);
             return NULL;

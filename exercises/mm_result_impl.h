@@ -94,6 +94,12 @@ void mm_result_bind(mm_result *r, const mm_exercise *ex);
 /* Free the arena; r may be reused after mm_result_init. */
 void mm_result_release(mm_result *r);
 
+/* on: the calling thread keeps the largest block of each released arena
+ * (up to 1 MiB) for its next result, which then needs no new memory;
+ * off: that block is freed (call it before the thread ends).  Off by
+ * default; the server's solve workers turn it on. */
+void mm_result_keep_blocks(int on);
+
 /* The status that refuses the answer (MM_ETOOBIG over the cap, MM_ENOMEM,
  * MM_EINTERNAL), or MM_OK when every builder call succeeded. */
 int mm_result_status(const mm_result *r);

@@ -19,6 +19,10 @@ extern "C" {
  * return the length.  v must be finite (returns 0 and writes "" if not). */
 int mm_dtoa(double v, char *buf);
 
+/* The same by {fmt} alone, without mm_dtoa's fast path for short decimals
+ * (m 10^-k, k <= 6: 0.02, 0.0195, 100); the tests compare the two. */
+int mm_dtoa_fmt(double v, char *buf);
+
 #ifdef __cplusplus
 }
 #endif

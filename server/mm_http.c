@@ -38,6 +38,7 @@
 #define GZ_DOC        9             /* documents: once, at start and reload */
 #define STATIC_MEMO_MAX (64u << 20) /* bytes of static files kept in memory */
 #define STATIC_FILE_MAX (16u << 20) /* larger files are sent from disk each time */
+#define OUT_KEEP_GZ   ((size_t)256 << 10) /* a thread keeps its compression buffer up to this size */
 #define ASSET_TOKEN   "__MM_ASSET_VERSION__"
 #define YEAR_CACHE    "public, max-age=31536000, immutable"
 
@@ -254,25 +255,120 @@ static site *site_new(mm_api *api)
 
 /* ---- small pieces: compression, validators, escaping ----------------------------- */
 
+/* A thread's deflate stream at GZ_ANSWER and its output buffer, kept
+ * from one answer to the next.  deflateInit2 takes about 270 KiB (window,
+ * hash chains, pending buffer: four blocks over malloc's mmap threshold,
+ * each mapped and faulted in, and then unmapped by deflateEnd): 300 us of a
+ * 2 KB answer's compression went there; deflateReset costs a memset of the
+ * hash heads. */
+typedef struct gz_thread {
+    z_stream z;
+    int ready;
+    char *buf;
+    size_t cap;
+} gz_thread;
+
+static _Thread_local gz_thread *gz_tl;
+static pthread_key_t gz_key;
+static pthread_once_t gz_once = PTHREAD_ONCE_INIT;
+
+static void gz_thread_free(void *p)
+{
+    gz_thread *g = p;
+    if (!g)
+        return;
+    if (g->ready)
+        deflateEnd(&g->z);
+    free(g->buf);
+    free(g);
+}
+
+static void gz_key_make(void) { (void)pthread_key_create(&gz_key, gz_thread_free); }
+
+/* This thread's stream, made at its first use; freed when the thread ends
+ * (the key's destructor, for libmicrohttpd's threads) or by gzip_thread_end. */
+static gz_thread *gz_thread_get(void)
+{
+    if (gz_tl)
+        return gz_tl;
+    pthread_once(&gz_once, gz_key_make);
+    gz_thread *g = calloc(1, sizeof *g);
+    if (!g)
+        return NULL;
+    if (deflateInit2(&g->z, GZ_ANSWER, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK) {
+        free(g);
+        return NULL;
+    }
+    g->ready = 1;
+    if (pthread_setspecific(gz_key, g) != 0) {
+        gz_thread_free(g);
+        return NULL;
+    }
+    gz_tl = g;
+    return g;
+}
+
+static void gzip_thread_end(void)
+{
+    if (!gz_tl)
+        return;
+    (void)pthread_setspecific(gz_key, NULL);
+    gz_thread_free(gz_tl);
+    gz_tl = NULL;
+}
+
 static int gzip_bytes(const char *in, size_t n, int level, char **out, size_t *out_len)
 {
-    z_stream z;
-    memset(&z, 0, sizeof z);
-    if (deflateInit2(&z, level, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
-        return -1;
-    size_t cap = deflateBound(&z, (uLong)n);
-    char *buf = malloc(cap);
+    z_stream zs, *z = &zs;
+    gz_thread *g = level == GZ_ANSWER ? gz_thread_get() : NULL;
+    if (g) {
+        z = &g->z;
+        if (deflateReset(z) != Z_OK)
+            return -1;
+    } else {
+        memset(z, 0, sizeof *z);
+        if (deflateInit2(z, level, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+            return -1;
+    }
+    size_t cap = deflateBound(z, (uLong)n);
+    char *buf;
+    if (g) {                                 /* compressed into the thread's buffer, then copied */
+        if (g->cap < cap) {
+            free(g->buf);
+            g->buf = malloc(cap);
+            g->cap = g->buf ? cap : 0;
+        }
+        buf = g->buf;
+    } else {
+        buf = malloc(cap);
+    }
     if (!buf) {
-        deflateEnd(&z);
+        if (!g)
+            deflateEnd(z);
         return -1;
     }
-    z.next_in = (Bytef *)(uintptr_t)in;
-    z.avail_in = (uInt)n;
-    z.next_out = (Bytef *)buf;
-    z.avail_out = (uInt)cap;
-    int rc = deflate(&z, Z_FINISH);
-    size_t len = cap - z.avail_out;
-    deflateEnd(&z);
+    z->next_in = (Bytef *)(uintptr_t)in;
+    z->avail_in = (uInt)n;
+    z->next_out = (Bytef *)buf;
+    z->avail_out = (uInt)cap;
+    int rc = deflate(z, Z_FINISH);
+    size_t len = cap - z->avail_out;
+    if (g) {
+        char *copy = rc == Z_STREAM_END && len < n ? malloc(len) : NULL;
+        if (copy)
+            memcpy(copy, buf, len);
+        if (g->cap > OUT_KEEP_GZ) {
+            free(g->buf);
+            g->buf = NULL;
+            g->cap = 0;
+        }
+        if (!copy)
+            return -1;
+        *out = copy;
+        *out_len = len;
+        return 0;
+    }
+    deflateEnd(z);
     if (rc != Z_STREAM_END || len >= n) {    /* no gain: send it as it is */
         free(buf);
         return -1;
@@ -939,19 +1035,6 @@ static void wake(void *who)
     MHD_resume_connection(r->c);
 }
 
-/* The size of the last answer of each exercise (by a hash of its id): the
- * next answer's buffer is made that large at once (plus a quarter), so
- * that it is neither copied as it grows nor much larger than it needs. */
-static atomic_size_t size_hint[256];
-
-static atomic_size_t *hint_of(const char *id)
-{
-    unsigned h = 2166136261u;
-    for (const unsigned char *c = (const unsigned char *)id; *c; c++)
-        h = (h ^ *c) * 16777619u;
-    return &size_hint[h & 255];
-}
-
 static void run_task(mm_server *s, job *j)
 {
     mm_buf out;
@@ -975,26 +1058,40 @@ static void run_task(mm_server *s, job *j)
     free(j);
 }
 
-static void run_job(mm_server *s, job *j)
+#define OUT_KEEP ((size_t)1 << 20)   /* a worker keeps its answer buffer up to this size */
+
+/* A copy of the n bytes at p in a block of its own size, NUL-terminated. */
+static char *dup_exact(const char *p, size_t n)
+{
+    char *d = malloc(n + 1);
+    if (d) {
+        memcpy(d, p, n);
+        d[n] = '\0';
+    }
+    return d;
+}
+
+/* out: the worker's own buffer, written into and kept from one solve to
+ * the next; what goes into the cache is a copy of the answer's own size.
+ * A fresh buffer per answer (and one for the compressed form) was a block
+ * over malloc's mmap threshold each time, mapped, faulted in page by page
+ * and unmapped on eviction (see mm_result_keep_blocks). */
+static void run_job(mm_server *s, job *j, mm_buf *out)
 {
     if (j->task != TASK_NONE) {
         run_task(s, j);
         return;
     }
-    mm_buf out;
-    mm_buf_init(&out, MM_ANSWER_MAX);
-    atomic_size_t *hint = hint_of(j->solve->ex->id);
-    size_t last = atomic_load_explicit(hint, memory_order_relaxed);
-    mm_buf_reserve(&out, last ? last + last / 4 : 16384);
+    mm_buf_reset(out);
     if (j->solve->rc == MM_OK)
         mm_api_run(j->solve);
-    int status = mm_api_write(j->solve, &out);
+    int status = mm_api_write(j->solve, out);
     if (j->solve->ran)
         observe_solve(s, j->solve->elapsed_us);
-    size_t len = 0;
-    char *body = mm_buf_take(&out, &len);
-    if (status == 200)
-        atomic_store_explicit(hint, len, memory_order_relaxed);
+    size_t len = out->len;
+    char *body = out->failed || !out->p ? NULL : dup_exact(out->p, len);
+    if (out->cap > OUT_KEEP)
+        mm_buf_free(out);
     if (!body) {                           /* no memory even for the error */
         body = strdup("{\"error\":{\"code\":\"internal\",\"param\":null,\"message\":\"out of memory\"}}");
         len = body ? strlen(body) : 0;
@@ -1006,7 +1103,6 @@ static void run_job(mm_server *s, job *j)
         gz = NULL, gz_len = 0;
     int keep = status == 200 || status == mm_http_status(MM_ESINGULAR);
     mm_cache_fill(s->cache, j->entry, status, body, len, gz, gz_len, j->solve->elapsed_us, keep, wake);
-    mm_buf_free(&out);
     mm_solve_free(j->solve);
     free(j->solve);
     mm_cache_unref(j->entry);
@@ -1017,6 +1113,9 @@ static void run_job(mm_server *s, job *j)
 static void *worker_main(void *arg)
 {
     mm_server *s = arg;
+    mm_buf out;
+    mm_buf_init(&out, MM_ANSWER_MAX);
+    mm_result_keep_blocks(1);
     pthread_mutex_lock(&s->q_lock);
     for (;;) {
         while (s->q_len == 0 && !s->stopping)
@@ -1027,10 +1126,13 @@ static void *worker_main(void *arg)
         s->q_head = (s->q_head + 1) % s->q_cap;
         s->q_len--;
         pthread_mutex_unlock(&s->q_lock);
-        run_job(s, j);
+        run_job(s, j, &out);
         pthread_mutex_lock(&s->q_lock);
     }
     pthread_mutex_unlock(&s->q_lock);
+    mm_result_keep_blocks(0);
+    mm_buf_free(&out);
+    gzip_thread_end();
     return NULL;
 }
 
@@ -1999,7 +2101,13 @@ mm_server *mm_server_start(const mm_server_opts *o, mm_api *api, mm_error *err)
             MHD_OPTION_LISTENING_ADDRESS_REUSE, (unsigned)(s->n_io > 1),
             MHD_OPTION_CONNECTION_LIMIT, limit,
             MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)30,
-            MHD_OPTION_CONNECTION_MEMORY_LIMIT, (size_t)(64 * 1024),   /* queries to 48 KiB get our 413 */
+            /* 32 KiB: queries to about 30 KiB get our 413, longer ones
+             * libmicrohttpd's 414.  A pool over 32 KiB is mmap()ed by
+             * libmicrohttpd for each connection, then zeroed (a page fault
+             * per 4 KiB) and unmapped at its close: at a class start, 1,800
+             * new connections in a second, that was 60 % of the server's
+             * time; 32 KiB comes from malloc and is reused. */
+            MHD_OPTION_CONNECTION_MEMORY_LIMIT, (size_t)(32 * 1024),
             MHD_OPTION_LISTEN_BACKLOG_SIZE, (unsigned)4096,
             MHD_OPTION_NOTIFY_COMPLETED, on_completed, s,
             MHD_OPTION_NOTIFY_CONNECTION, on_connection, s,

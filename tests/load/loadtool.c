@@ -350,11 +350,15 @@ static int class_start(const char *base, int n_clients, double spread, const cha
     int per_page = n_links + 3;
     double *lat = malloc(sizeof(double) * (size_t)n_clients * (size_t)(per_page + 1));
     double *pages = malloc(sizeof(double) * (size_t)n_clients);
-    int n_lat = 0, n_pages = 0, started = 0, failed = 0, running = 0;
+    int n_lat = 0, n_pages = 0, started = 0, failed = 0, running = 0, done = 0;
     double bytes = 0;
     double t0 = now_s(), slowest = 0;
     char slowest_url[300] = "";
-    while (started < n_clients || running) {
+    /* until every page is complete: curl's running count misses the
+     * requests a page's HTML added after curl_multi_perform (the last
+     * browser's six, and with one browser, the instructor's, whose visit
+     * then warmed no answer) */
+    while (started < n_clients || running || done < n_clients) {
         double t = now_s() - t0;
         while (started < n_clients && cl[started].start <= t) {     /* a browser opens the page */
             char path[300];
@@ -400,6 +404,7 @@ static int class_start(const char *base, int n_clients, double spread, const cha
                 snprintf(path, sizeof path, "/api/exercises/%s/solve", k->exercise);
                 add_get(m, cl, h->client, 1, base, path);
             } else if (k->pending == 0) {
+                done++;
                 k->end = now_s();
                 pages[n_pages++] = (k->end - k->start) * 1e3;
             }

@@ -9,6 +9,37 @@
 #include "mm_dtoa.h"
 #include "mm_json.h"
 
+/* mm_dtoa's fast path for short decimals (m 10^-k) must write what {fmt}'s
+ * Dragonbox writes, character for character: short decimals of every
+ * length and sign near the fast path's edges (1e-4, 4.5e9), and random
+ * doubles that only look close to one. */
+static void short_decimals_should_be_written_as_dragonbox_writes_them(void **state)
+{
+    (void)state;
+    char fast[MM_DTOA_BUFSIZE], ref[MM_DTOA_BUFSIZE];
+    static const double edge[] = {1e-4, 9.9999999999999991e-05, 0.00012, 0.0195, 0.07, 0.3, 0.30000000000000004,
+                                  1.5, 100, 1e6, 4.4e9, 4.5e9, 4.6e9, 123456.789, 8.000000001, -0.5, -1e-4};
+    for (size_t i = 0; i < sizeof edge / sizeof edge[0]; i++) {
+        mm_dtoa(edge[i], fast);
+        mm_dtoa_fmt(edge[i], ref);
+        if (strcmp(fast, ref) != 0)
+            fail_msg("%.17g: %s, Dragonbox %s", edge[i], fast, ref);
+    }
+    unsigned long long x = 88172645463325252ULL;
+    static const double p10[] = {1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7};
+    for (int i = 0; i < 2000000; i++) {
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;           /* xorshift64 */
+        long long m = (long long)((x >> 8) % 100000000000ULL) >> (x % 40);
+        double v = (x & 0x100000 ? -1 : 1) * (double)m / p10[x % 8];
+        if (i % 3 == 0)
+            v = (double)m * (1 / p10[x % 8]);              /* near a short decimal, often not one */
+        mm_dtoa(v, fast);
+        mm_dtoa_fmt(v, ref);
+        if (strcmp(fast, ref) != 0)
+            fail_msg("%.17g: %s, Dragonbox %s", v, fast, ref);
+    }
+}
+
 static void numbers_should_read_back_exactly_in_the_shortest_form(void **state)
 {
     (void)state;
@@ -114,6 +145,7 @@ static void the_buffer_should_stop_at_its_limit(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(short_decimals_should_be_written_as_dragonbox_writes_them),
         cmocka_unit_test(numbers_should_read_back_exactly_in_the_shortest_form),
         cmocka_unit_test(strings_should_be_escaped_into_valid_json),
         cmocka_unit_test(a_nonfinite_number_should_be_flagged_not_written),
