@@ -18,16 +18,18 @@
  * columns) rather than adding penalty springs, so the matrices stay exact.
  *
  * Eigen solve (through mm_linalg, never LAPACK directly): K phi = w^2 M phi
- * on the free DOFs.  Dense (all modes, LAPACK dsygvd) or banded selective
- * (first modes only, dsbgvx on band storage, half-bandwidth 1 for bars and
- * 3 for beams, modes by inverse iteration); MM_FEM_AUTO picks the banded
- * one once it pays (see mm_fem_method).  Each frequency is then the
- * Rayleigh quotient of its mode, with the strain energy summed from element
- * strains and curvatures: the solvers' eigenvalues carry an absolute error
- * of about eps x (largest eigenvalue), which grows like n_el^4 for a beam
- * (8e-3 relative on mode 1 of a 1000-element cantilever), while the
- * quotient of the computed mode is second-order accurate in the mode and
- * free of the cancellation inside K phi.
+ * on the free DOFs.  Dense (all modes, LAPACK dsygvd), shift-invert
+ * Lanczos (first modes only, on band storage, half-bandwidth 1 for bars
+ * and 3 for beams: K factored once, a Krylov space of K^-1 M), subspace
+ * iteration, or banded selective (dsbgvx, modes by inverse iteration);
+ * MM_FEM_AUTO picks dense or Lanczos (see mm_fem_method).  Each frequency
+ * is then the Rayleigh quotient of its mode, with the strain energy summed
+ * from element strains and curvatures: the solvers' eigenvalues carry an
+ * absolute error of about eps x (largest eigenvalue), which grows like
+ * n_el^4 for a beam (8e-3 relative on mode 1 of a 1000-element cantilever
+ * by dsbgvx; 1e-6 by Lanczos' own Ritz value), while the quotient of the
+ * computed mode is second-order accurate in the mode and free of the
+ * cancellation inside K phi.
  * Rigid-body modes (free ends) have w^2 = 0 up to rounding; they are
  * recognised by w^2 <= rigid_tol x (largest eigenvalue of the mesh),
  * counted in n_rigid and left out of the elastic modes (only free-free
@@ -42,13 +44,15 @@
  * gives frequencies above the exact ones (Rayleigh-Ritz), converging as h^2
  * for bars and h^4 for beams; lumped bar mass gives them below, as h^2.
  * Rounding sets a floor, for beams: with the dense solver about 1e-11
- * relative from some 250 elements on (5e-9 on mode 1 at 1000); with the
- * banded one 1e-10 at 300 elements and 1e-6 at 1000 (its inverse-iteration
- * modes are less accurate).  tests/bench/bench_fem.c prints both.
+ * relative from some 250 elements on (3e-9 on mode 1 at 1000); with the
+ * banded one 1e-10 at 300 elements and 6e-6 at 1000 (its inverse-iteration
+ * modes are less accurate); Lanczos and subspace iteration keep mode 1 of
+ * 1000 elements to 3e-13 (free-free 9e-13).  tests/bench/bench_fem.c
+ * prints them.
  *
  * Memory: the caller owns the problem and the result arrays.  Scratch
  * matrices are allocated and freed inside mm_fem_modes_solve (O(n^2) for
- * the dense solver, O(n x modes) for the banded one).  Thread-safe: no
+ * the dense solver, O(n x modes) for the others).  Thread-safe: no
  * globals.
  *
  * Errors: MM_ERANGE (param "elements") for a mesh outside
@@ -111,16 +115,18 @@ typedef struct mm_fem_problem {
 } mm_fem_problem;
 
 typedef enum mm_fem_method {
-    MM_FEM_AUTO,     /* dense up to 40 free DOFs or a third of the modes;
-                        beyond, subspace iteration for up to 20 modes of a
+    MM_FEM_AUTO,     /* dense for at most 6 free DOFs or a third of the
+                        modes or more; otherwise Lanczos; should it fail,
+                        subspace iteration for up to 20 modes of a
                         supported mesh, banded otherwise (free-free, more
                         modes, or subspace iteration not settling).
-                        bench_fem: for ten modes of a 1000-element
-                        cantilever, subspace 43 ms and 3e-13 on mode 1,
-                        banded 190 ms and 6e-6, dense 11 s and 3e-9 */
+                        bench_fem, ten modes of a 1000-element cantilever
+                        (a loaded machine): Lanczos 3.5 ms and 3e-13 on
+                        mode 1, subspace 16-22 ms and 3e-13, banded
+                        100 ms and 6e-6, dense (every mode) 5 s and 3e-9 */
     MM_FEM_DENSE,    /* all eigenpairs, mm_linalg_sygv (dsygvd) */
     MM_FEM_BANDED,   /* first modes only, mm_linalg_sbgv_first (dsbgvx) */
-    MM_FEM_SUBSPACE  /* first modes only, subspace iteration with K^-1 M
+    MM_FEM_SUBSPACE, /* first modes only, subspace iteration with K^-1 M
                         (K factored once, banded Cholesky) and a Ritz step
                         of p = max(2 nmodes, nmodes + 8) vectors (Bathe):
                         no O(n^2) work at all, and the lowest modes of a
@@ -129,6 +135,18 @@ typedef enum mm_fem_method {
                         meshes only (K positive definite); AUTO takes it
                         for up to 20 modes of a mesh with no rigid-body
                         modes, where banded would be taken */
+    MM_FEM_LANCZOS   /* first modes only, shift-invert Lanczos in the M
+                        inner product with full reorthogonalisation: K
+                        factored once (banded Cholesky; a free-free member
+                        held at its middle node, its rigid-body modes known
+                        exactly and deflated), one solve per Lanczos vector
+                        (fewer than 2 nmodes + 4 of them on the beams and
+                        bars measured), stopping when each wanted Ritz
+                        pair's residual is below 1e-10 of its value, then
+                        a Sturm sequence count (LDL^T of K - sigma M)
+                        proving no mode below the last was missed.  AUTO
+                        falls back to subspace or banded if it fails (not
+                        seen on any mesh the exercises allow) */
 } mm_fem_method;
 
 typedef struct mm_fem_options {
@@ -154,8 +172,8 @@ typedef struct mm_fem_modes {
                           mesh has fewer (e.g. a 1-element fixed-free bar) */
     size_t n_rigid;    /* out: rigid-body modes found and left out */
     size_t n_free;     /* out: free DOFs (order of the eigenproblem) */
-    mm_fem_method method;   /* out: MM_FEM_DENSE, MM_FEM_BANDED or
-                               MM_FEM_SUBSPACE, as used */
+    mm_fem_method method;   /* out: MM_FEM_DENSE, MM_FEM_BANDED,
+                               MM_FEM_SUBSPACE or MM_FEM_LANCZOS, as used */
 } mm_fem_modes;
 
 /* ---- set-up --------------------------------------------------------------- */

@@ -483,6 +483,44 @@ out:
     return rc;
 }
 
+int mm_linalg_stev(int n, const double *d, const double *e, int il, int iu, double *lambda,
+                   double *Z, mm_error *err)
+{
+    int rc;
+    assert(d && lambda && (n == 1 || e));
+    if ((rc = check_order("n", n, MM_LINALG_MAX_N, err)) ||
+        (rc = mm_linalg_check_finite("d", (size_t)n, d, err)) ||
+        (rc = mm_linalg_check_finite("e", (size_t)n - 1, e, err)))
+        return rc;
+    if (il < 1 || il > iu || iu > n)
+        return mm_error_set(err, MM_ERANGE, "il", "eigenvalue indices %d..%d outside 1..%d", il, iu, n);
+    double *dd = alloc_doubles((size_t)n), *ee = alloc_doubles((size_t)n);
+    lapack_int *ifail = malloc((size_t)n * sizeof *ifail), m = 0;
+    if (!dd || !ee || !ifail) {
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory for eigenvalues");
+        goto out;
+    }
+    memcpy(dd, d, (size_t)n * sizeof *dd);
+    if (n > 1)
+        memcpy(ee, e, (size_t)(n - 1) * sizeof *ee);
+    lapack_int li;
+    /* abstol = 2 x the underflow threshold: eigenvalues to full relative
+     * accuracy where the matrix determines them so (LAPACK's advice) */
+    LAPACK_CALL(li, LAPACKE_dstevx(LAPACK_COL_MAJOR, Z ? 'V' : 'N', 'I', n, dd, ee, 0.0, 0.0, il, iu,
+                                   2 * DBL_MIN, &m, lambda, Z, n, ifail));
+    if (li < 0)
+        rc = lapack_fail(err, li, "dstevx");
+    else if (li > 0 || m != iu - il + 1)
+        rc = eig_noconv(err, "dstevx", li > 0 ? (int)li : 1);
+    else
+        rc = MM_OK;
+out:
+    free(ifail);
+    free(ee);
+    free(dd);
+    return rc;
+}
+
 int mm_linalg_sygv_first(int n, int nev, const double *K, const double *M,
                          double *lambda, double *V, mm_error *err)
 {

@@ -203,6 +203,19 @@ int mm_linalg_sbgv_first(int n, int kd, int nev, const double *Kb,
                          const double *Mb, double *lambda, double *V,
                          mm_error *err);
 
+/* Eigenpairs il..iu (1-based, in ascending order of the eigenvalues;
+ * 1 <= il <= iu <= n) of the symmetric tridiagonal matrix with diagonal
+ * d[n] and off-diagonal e[n-1] (LAPACK dstevx: bisection to full accuracy,
+ * then inverse iteration, so O(n (iu - il + 1)) work beyond an O(n^2)
+ * worst case, not the O(n^3) of all vectors): lambda[iu - il + 1]
+ * ascending, Z[n * (iu - il + 1)] (or NULL) column-major, eigenvector j in
+ * Z[j*n .. j*n + n-1], each of Euclidean norm 1, sign as LAPACK leaves it.
+ * d and e are not modified.  The small projected problem of a Lanczos
+ * iteration (mm_fem).  MM_ERANGE ("n", "il"), MM_EVALUE (non-finite
+ * entries), MM_ENOCONV (an eigenvector failed to converge), MM_ENOMEM. */
+int mm_linalg_stev(int n, const double *d, const double *e, int il, int iu, double *lambda,
+                   double *Z, mm_error *err);
+
 /* ---- general (nonsymmetric) eigenproblem A v = lambda v -------------------- */
 
 /* Eigenvalues of the general n x n A (LAPACK dgeev, with balancing):

@@ -916,6 +916,39 @@ static void printed_modes_and_residuals_should_be_checked_to_their_rounding(void
     check_rel(mm_linalg_norm2(2, (double[]){3e200, 4e200}), 5e200, EPS, "no overflow in the squares");
 }
 
+/* Selected eigenpairs of a symmetric tridiagonal matrix (mm_linalg_stev,
+ * the Lanczos step's small problem): the second-difference matrix
+ * tridiag(-1, 2, -1) of order n has eigenvalues 2 - 2 cos(j pi / (n + 1))
+ * and eigenvectors sin(i j pi / (n + 1)).  The top five of n = 60 to 8 eps
+ * of the largest, 4 (bisection to full accuracy), their
+ * vectors to 1e-12 (unit-norm, up to sign: inverse iteration on separated
+ * eigenvalues), and bad indices refused. */
+static void tridiagonal_selected_eigenpairs_should_match_the_second_difference(void **state)
+{
+    (void)state;
+    enum { N = 60, K = 5 };
+    double d[N], e[N - 1], lam[K], Z[N * K];
+    for (int i = 0; i < N; i++)
+        d[i] = 2;
+    for (int i = 0; i < N - 1; i++)
+        e[i] = -1;
+    mm_error err;
+    assert_int_equal(mm_linalg_stev(N, d, e, N - K + 1, N, lam, Z, &err), MM_OK);
+    for (int k = 0; k < K; k++) {
+        int j = N - K + 1 + k;
+        check_abs(lam[k], 2 - 2 * cos(j * PI / (N + 1)), 8 * DBL_EPSILON * 4, "tridiagonal eigenvalue");
+        double nn = 0, dot = 0;
+        for (int i = 0; i < N; i++) {
+            double s = sin((i + 1) * j * PI / (N + 1));
+            nn += s * s;
+            dot += s * Z[k * N + i];
+        }
+        check_abs(fabs(dot) / sqrt(nn), 1, 1e-12, "tridiagonal eigenvector");
+    }
+    assert_int_equal(mm_linalg_stev(N, d, e, 3, 2, lam, Z, &err), MM_ERANGE);
+    assert_int_equal(mm_linalg_stev(N, d, e, 1, N + 1, lam, Z, &err), MM_ERANGE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -947,6 +980,7 @@ int main(void)
         cmocka_unit_test(dd_singular_values_and_solve_should_be_right_for_hilbert_12),
         cmocka_unit_test(one_symmetry_rule_should_serve_every_module),
         cmocka_unit_test(printed_modes_and_residuals_should_be_checked_to_their_rounding),
+        cmocka_unit_test(tridiagonal_selected_eigenpairs_should_match_the_second_difference),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
