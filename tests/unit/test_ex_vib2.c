@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mm_answer.h"
 #include "mm_api.h"
 #include "mm_pipeline.h"
 #include "mm_fourier.h"
@@ -27,98 +28,18 @@
 /* ---- running a request ------------------------------------------------------ */
 
 
-static double scalar(const cJSON *doc, const char *name)
+/* A table cell's value, and the value of the check whose name starts with
+ * prefix (the readers themselves are mm_answer.h's). */
+static double cellv(const cJSON *doc, const char *table, int row, const char *col)
 {
-    const cJSON *s;
-    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, "scalars")) {
-        if (strcmp(cJSON_GetObjectItem(s, "name")->valuestring, name) == 0)
-            return cJSON_GetObjectItem(s, "value")->valuedouble;
-    }
-    fail_msg("no scalar %s", name);
-    return NAN;
-}
-
-static int has_scalar(const cJSON *doc, const char *name)
-{
-    const cJSON *s;
-    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, "scalars"))
-        if (strcmp(cJSON_GetObjectItem(s, "name")->valuestring, name) == 0)
-            return 1;
-    return 0;
-}
-
-static double stat(const cJSON *doc, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItem(cJSON_GetObjectItem(doc, "method"), key);
-    if (!cJSON_IsNumber(v))
-        fail_msg("no method figure %s", key);
+    const cJSON *v = cell(doc, table, row, col);
+    assert_non_null(v);
     return v->valuedouble;
 }
 
-/* The value of the check whose name starts with prefix. */
 static double check_value(const cJSON *doc, const char *prefix)
 {
-    const cJSON *c;
-    cJSON_ArrayForEach(c, cJSON_GetObjectItem(doc, "checks"))
-        if (strncmp(cJSON_GetObjectItem(c, "name")->valuestring, prefix, strlen(prefix)) == 0)
-            return cJSON_GetObjectItem(c, "value")->valuedouble;
-    fail_msg("no check '%s...'", prefix);
-    return NAN;
-}
-
-static int warned(const cJSON *doc, const char *text)
-{
-    const cJSON *w;
-    cJSON_ArrayForEach(w, cJSON_GetObjectItem(doc, "warnings")) {
-        if (strstr(w->valuestring, text))
-            return 1;
-    }
-    return 0;
-}
-
-/* A series' x and y (malloc'd; free both). */
-static int series_xy(const cJSON *doc, const char *name, double **x, double **y)
-{
-    const cJSON *s;
-    cJSON_ArrayForEach(s, cJSON_GetObjectItem(doc, "series")) {
-        if (strcmp(cJSON_GetObjectItem(s, "name")->valuestring, name))
-            continue;
-        const cJSON *xs = cJSON_GetObjectItem(s, "x"), *ys = cJSON_GetObjectItem(s, "y");
-        int n = cJSON_GetArraySize(xs);
-        *x = malloc((size_t)n * sizeof **x);
-        *y = malloc((size_t)n * sizeof **y);
-        for (int i = 0; i < n; i++) {
-            (*x)[i] = cJSON_GetArrayItem(xs, i)->valuedouble;
-            (*y)[i] = cJSON_GetArrayItem(ys, i)->valuedouble;
-        }
-        return n;
-    }
-    fail_msg("no series %s", name);
-    return 0;
-}
-
-/* Cell (row, column name) of a table. */
-static double cell(const cJSON *doc, const char *table, int row, const char *col)
-{
-    const cJSON *t;
-    cJSON_ArrayForEach(t, cJSON_GetObjectItem(doc, "tables")) {
-        if (strcmp(cJSON_GetObjectItem(t, "name")->valuestring, table))
-            continue;
-        int c = 0;
-        const cJSON *name;
-        cJSON_ArrayForEach(name, cJSON_GetObjectItem(t, "columns")) {
-            if (strcmp(name->valuestring, col) == 0)
-                break;
-            c++;
-        }
-        const cJSON *r = cJSON_GetArrayItem(cJSON_GetObjectItem(t, "rows"), row);
-        assert_non_null(r);
-        const cJSON *v = cJSON_GetArrayItem(r, c);
-        assert_non_null(v);
-        return v->valuedouble;
-    }
-    fail_msg("no table %s", table);
-    return NAN;
+    return cJSON_GetObjectItem(check_named(doc, prefix), "value")->valuedouble;
 }
 
 /* ---- vib-dft ------------------------------------------------------------------ */
@@ -153,7 +74,7 @@ static void dft_frequency_between_bins_should_leak_and_hann_should_reduce_it(voi
         check_abs(scalar(d, "leakage"), 0, 1e-12, "bin-centred sine: no leakage");
         check_rel(scalar(d, "peak_amplitude"), 1, 1e-12, "bin-centred sine reads its amplitude");
         check_rel(scalar(d, "peak_frequency"), 10, 1e-12, "bin-centred sine: its frequency");
-        check_rel(cell(d, "peaks", 0, "f"), 10, 1e-12, "peaks table, first row");
+        check_rel(cellv(d, "peaks", 0, "f"), 10, 1e-12, "peaks table, first row");
         cJSON_Delete(d);
     }
 }
@@ -177,8 +98,8 @@ static void dft_component_above_nyquist_should_be_warned_and_seen_at_its_alias(v
     d = solve_ok("vib-dft", "");
     assert_false(warned(d, "aliasing"));
     assert_true(stat(d, "above_nyquist") < 1e-9);
-    check_rel(cell(d, "peaks", 0, "f"), 5.078125, 1e-12, "largest peak at the bin nearest 5 Hz");
-    check_rel(cell(d, "peaks", 1, "f"), 12.109375, 1e-12, "second peak at the bin nearest 12 Hz (30.72 bins)");
+    check_rel(cellv(d, "peaks", 0, "f"), 5.078125, 1e-12, "largest peak at the bin nearest 5 Hz");
+    check_rel(cellv(d, "peaks", 1, "f"), 12.109375, 1e-12, "second peak at the bin nearest 12 Hz (30.72 bins)");
     cJSON_Delete(d);
 
     /* fs just above twice the frequency: no alias, peak where it belongs */
@@ -260,20 +181,20 @@ static void fourier_coefficients_should_match_the_closed_forms(void **state)
     cJSON *d = solve_ok("vib-fourier-series", "wave=square&terms=9&A=3");
     for (int k = 0; k <= 9; k++) {
         double b = k % 2 ? 4 * 3 / (k * M_PI) : 0;
-        check_abs(cell(d, "coefficients", k, "k"), k, 0, "k column");
-        check_abs(cell(d, "coefficients", k, "b_k"), b, 1.01 * 4 * M_PI / 3 * 3 * k / (N2 - k * k) + 1e-14,
+        check_abs(cellv(d, "coefficients", k, "k"), k, 0, "k column");
+        check_abs(cellv(d, "coefficients", k, "b_k"), b, 1.01 * 4 * M_PI / 3 * 3 * k / (N2 - k * k) + 1e-14,
                   "square b_k = 4A/(k pi), odd k");
-        check_abs(cell(d, "coefficients", k, "a_k"), 0, 1e-12, "square a_k = 0");
+        check_abs(cellv(d, "coefficients", k, "a_k"), 0, 1e-12, "square a_k = 0");
     }
     cJSON_Delete(d);
     d = solve_ok("vib-fourier-series", "wave=sawtooth&terms=9&T=2");
     for (int k = 1; k <= 9; k++)
-        check_abs(cell(d, "coefficients", k, "b_k"), -2 / (k * M_PI), 1.01 * 2 * M_PI / 3 * k / (N2 - k * k) + 1e-14,
+        check_abs(cellv(d, "coefficients", k, "b_k"), -2 / (k * M_PI), 1.01 * 2 * M_PI / 3 * k / (N2 - k * k) + 1e-14,
                   "sawtooth b_k = -2A/(k pi)");
     cJSON_Delete(d);
     d = solve_ok("vib-fourier-series", "wave=triangle&terms=9");
     for (int k = 1; k <= 9; k++)
-        check_abs(cell(d, "coefficients", k, "a_k"), k % 2 ? 8 / (M_PI * M_PI * k * k) : 0,
+        check_abs(cellv(d, "coefficients", k, "a_k"), k % 2 ? 8 / (M_PI * M_PI * k * k) : 0,
                   8 / (3 * (4096.0 - k) * (4096.0 - k)) + 1e-14, "triangle a_k = 8A/(pi k)^2, odd k");
     cJSON_Delete(d);
 }
@@ -401,21 +322,22 @@ static void fourier_series_should_print_the_exact_coefficients(void **state)
     cJSON *d = solve_ok("vib-fourier-series", "");
     for (int k = 0; k <= 25; k++) {
         /* a_k of the square wave is exactly 0, printed as 0; b_k = 4/(k pi) for odd k */
-        check_abs(cell(d, "coefficients", k, "a_k"), 0, 0, "a_k exactly 0");
-        check_rel(cell(d, "coefficients", k, "b_k"), k % 2 ? 4 / (k * M_PI) : 0, 1e-15, "b_k = 4A/(k pi)");
+        check_abs(cellv(d, "coefficients", k, "a_k"), 0, 0, "a_k exactly 0");
+        check_rel(cellv(d, "coefficients", k, "b_k"), k % 2 ? 4 / (k * M_PI) : 0, 1e-15, "b_k = 4A/(k pi)");
         /* the FFT's beside it, within the aliasing bound (9) */
-        double e = fmax(fabs(cell(d, "coefficients", k, "a_k_fft")), fabs(cell(d, "coefficients", k, "b_k_fft") -
-                                                                           cell(d, "coefficients", k, "b_k")));
-        check_rel(cell(d, "coefficients", k, "fft_error"), e, 1e-15, "the FFT's error, as printed");
-        assert_true(e <= cell(d, "coefficients", k, "fft_error_bound"));
+        double e = fmax(fabs(cellv(d, "coefficients", k, "a_k_fft")), fabs(cellv(d, "coefficients", k, "b_k_fft") -
+                                                                           cellv(d, "coefficients", k, "b_k")));
+        check_rel(cellv(d, "coefficients", k, "fft_error"), e, 1e-15, "the FFT's error, as printed");
+        assert_true(e <= cellv(d, "coefficients", k, "fft_error_bound"));
     }
-    check_rel(cell(d, "coefficients", 1, "b_k"), 1.2732395447351628, 1e-16, "b_1 = 4/pi to the last digit");
+    check_rel(cellv(d, "coefficients", 1, "b_k"), 1.2732395447351628, 1e-16, "b_1 = 4/pi to the last digit");
     /* the partial sum is built from the exact coefficients: the square's S_25 at
      * t = 0.1 summed here */
     double *t = NULL, *y = NULL, want = 0;
-    int n = series_xy(d, "partial_sum", &t, &y), i = 0;
+    int n = series(d, "partial_sum", &t, &y), i = 0;
     while (i < n && t[i] < 0.1)
         i++;
+    assert_true(i < n);                        /* the curve reaches t = 0.1 */
     for (int k = 1; k <= 25; k += 2)
         want += 4 / (k * M_PI) * sin(2 * M_PI * k * t[i]);
     check_abs(y[i], want, 1e-14, "S_K from the closed-form coefficients");
