@@ -3,13 +3,18 @@
  * yardstick).  Its requests/s in the same run is what `make bench` and
  * `make loadtest` divide the server's figures by.
  *
- *   bare_mhd [pool|single]     pool: 2 epoll threads (the best libmicrohttpd
+ *   bare_mhd [pool|single] [BYTES]
+ *                              pool: 2 epoll threads (the best libmicrohttpd
  *                              does here); single: one epoll thread, as the
- *                              server's event thread
+ *                              server's event thread; BYTES: answer that
+ *                              many bytes instead (the 200-byte JSON padded
+ *                              with spaces), the ceiling for an answer of
+ *                              that size
  * Prints "listening on http://127.0.0.1:PORT/" and serves until SIGTERM. */
 #include <microhttpd.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -17,6 +22,9 @@
 static const char BODY[] =
     "{\"status\":\"ok\",\"version\":\"0.1.0\",\"exercises\":20,\"note\":\"a fixed answer of two hundred "
     "bytes, the size of a small JSON document, for measuring the ceiling of libmicrohttpd here\",\"pad\":\"xx\"}";
+
+static const char *body = BODY;
+static size_t body_len = sizeof BODY - 1;
 
 static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const char *url, const char *method,
                                   const char *version, const char *upload_data, size_t *upload_size,
@@ -28,7 +36,7 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
         return MHD_YES;
     }
     *upload_size = 0;
-    struct MHD_Response *r = MHD_create_response_from_buffer(sizeof BODY - 1, (void *)BODY, MHD_RESPMEM_PERSISTENT);
+    struct MHD_Response *r = MHD_create_response_from_buffer(body_len, (void *)(uintptr_t)body, MHD_RESPMEM_PERSISTENT);
     MHD_add_response_header(r, MHD_HTTP_HEADER_CONTENT_TYPE, "application/json");
     enum MHD_Result ret = MHD_queue_response(c, 200, r);
     MHD_destroy_response(r);
@@ -38,6 +46,15 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
 int main(int argc, char **argv)
 {
     int single = argc > 1 && strcmp(argv[1], "single") == 0;
+    size_t want = argc > 2 ? strtoul(argv[2], NULL, 10) : 0;
+    if (want > body_len && want <= (64u << 20)) {    /* the JSON, then spaces: still one document */
+        char *b = malloc(want);
+        if (!b)
+            return 1;
+        memset(b, ' ', want);
+        memcpy(b, BODY, body_len);
+        body = b, body_len = want;
+    }
     struct sockaddr_in addr;
     memset(&addr, 0, sizeof addr);
     addr.sin_family = AF_INET;
