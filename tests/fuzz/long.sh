@@ -37,6 +37,10 @@ for name in "${names[@]}"; do
     -artifact_prefix="build/fuzz/crash-$name-" -print_final_stats=1 \
     "$work" "tests/fuzz/corpus/$name" > "$log" 2>&1 &
   pid=$!
+  # nice 19 holds only inside a session: with the kernel's autogroups a
+  # session started by setsid or a login competes as a whole at nice 0, so
+  # the fuzzer's session is made nice 19 as well (where the kernel has them)
+  echo 19 > "/proc/$pid/autogroup" 2>/dev/null || true
   used=0
   while kill -0 "$pid" 2>/dev/null; do
     sleep 20
