@@ -22,8 +22,9 @@ double mm_dyn_round(double x, double q);
 /* Round every coordinate of shape s to q.  Cannot fail. */
 void mm_dyn_round_shape(mm_shape *s, double q);
 
-/* The frame times of an animation: nf frames evenly over [0, t_show].
- * Cannot fail. */
+/* The frame times of an animation: nf frames evenly over [0, t_show],
+ * never past it (the last is t_show exactly, so an integration to t_show
+ * reaches every frame).  Cannot fail. */
 void mm_dyn_frame_times(mm_anim *a, double t_show);
 
 /* ---- dyn-robot-2link: a point-to-point move of the two-link arm -------------- */

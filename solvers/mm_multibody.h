@@ -136,8 +136,9 @@ void mm_sc_assemble(const mm_slider_crank *s, double phi1, double w, double *q, 
 
 /* Accelerations and joint forces at (q, qd): solves M q'' + Phi_q^T lambda = Q
  * with Phi_q q'' = gamma - 2 alpha Phi' - beta^2 Phi (Baumgarte's
- * stabilisation; alpha = beta = 0: the plain index-1 equations) through the
- * 4 x 4 system (Phi_q M^-1 Phi_q^T) lambda = Phi_q M^-1 Q - rhs.  qdd (5),
+ * stabilisation; alpha = beta = 0: the plain index-1 equations) in the
+ * null space of Phi_q: the crank angle independent, the other four from
+ * Phi_v (lengths only, so any mass ratio is accurate to round-off).  qdd (5),
  * lambda (4, may be NULL).  Returns MM_OK, or MM_ESINGULAR when the
  * constraints are dependent (the rod vertical: r >= l). */
 int mm_sc_accel(const mm_slider_crank *s, const double *q, const double *qd, double alpha,
