@@ -158,14 +158,14 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
     double *xf = mm_res_alloc(res, (size_t)n * sizeof *xf);
     if (!xf)
         return MM_ENOMEM;
-    /* the run shown, and the error estimate: a run at rtol / 100 with at
-     * least 8 steps (a short run may be one step at both tolerances) */
+    /* the run shown, and the error estimate: a run at rtol / MM_EX_SDOF_REF
+     * with at least 8 steps (a short run may be one step at both tolerances) */
     double h_max = 1 / mm_sdof_fastest_rate(s, p);
     mm_ode_result r, rf;
     int rc = mm_ex_sdof_integrate(s, t_end, n, t, xi, NULL, MM_EX_SDOF_RTOL, fmin(h_max, t_end / 4), &r,
                                   res, err);
     if (rc == MM_OK)
-        rc = mm_ex_sdof_integrate(s, t_end, n, t, xf, NULL, MM_EX_SDOF_RTOL / 100, fmin(h_max, t_end / 8),
+        rc = mm_ex_sdof_integrate(s, t_end, n, t, xf, NULL, MM_EX_SDOF_RTOL / MM_EX_SDOF_REF, fmin(h_max, t_end / 8),
                                   &rf, res, err);
     if (rc != MM_OK)
         return rc;
@@ -185,7 +185,7 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
     double terms = fmax(peak, fabs(p->X) + fabs(s->x0) + fabs(s->v0) / p->omega_n);
     double tol = 10 * est + mm_ex_roundoff(radians, terms);
     *worst = mm_check_curve(res, "x(t): DOP853 vs the closed form (worst plotted point), within 10 times "
-                            "its error estimated by a run at rtol/100", n, xi, x,
+                            "its error estimated by a run at rtol/10", n, xi, x,
                             peak > 0 ? tol / peak : 0);
     mm_res_method_stat(res, "max_error", *worst);
     return MM_OK;
@@ -228,7 +228,7 @@ static int steady_once(const mm_sdof *s, const mm_sdof_props *p, int periods, do
     mm_linspace(0, periods * T, n + 1, t);
     mm_ode_result r;
     int rc = mm_ex_sdof_integrate(&st, periods * T, n + 1, t, x, NULL, rtol,
-                                  fmin(1 / mm_sdof_fastest_rate(s, p), T / 8) * (rtol < 1e-10 ? 0.5 : 1),
+                                  fmin(1 / mm_sdof_fastest_rate(s, p), T / 8) * (rtol < MM_EX_SDOF_RTOL ? 0.5 : 1),
                                   &r, res, err);
     if (rc == MM_OK)
         rc = mm_fourier_harmonic(x, (size_t)n, PER, X, lag, err);   /* the last point repeats the first */
@@ -240,9 +240,9 @@ int mm_ex_sdof_steady_measure(const mm_sdof *s, const mm_sdof_props *p, int peri
                               double *lag_est, mm_result *res, mm_error *err)
 {
     double Xf, lagf;
-    int rc = steady_once(s, p, periods, 1e-10, X, lag, res, err);
+    int rc = steady_once(s, p, periods, MM_EX_SDOF_RTOL, X, lag, res, err);
     if (rc == MM_OK)
-        rc = steady_once(s, p, periods, 1e-12, &Xf, &lagf, res, err);
+        rc = steady_once(s, p, periods, MM_EX_SDOF_RTOL / MM_EX_SDOF_REF, &Xf, &lagf, res, err);
     if (rc != MM_OK)
         return rc;
     *lag = lag_near + remainder(*lag - lag_near, 2 * M_PI);      /* compare angles, not numbers */

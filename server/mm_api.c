@@ -215,13 +215,7 @@ static void write_hints(mm_buf *b, const mm_output *o)
 
 static void write_nums(mm_buf *b, const double *v, int n, const char *where)
 {
-    mm_buf_char(b, '[');
-    for (int i = 0; i < n; i++) {
-        if (i)
-            mm_buf_char(b, ',');
-        mm_buf_num(b, v[i], where);
-    }
-    mm_buf_char(b, ']');
+    mm_buf_nums(b, v, n > 0 ? (size_t)n : 0, where);
 }
 
 /* one array of point coordinates per frame */
@@ -349,19 +343,11 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
         field_str(b, "x_unit", s->x_unit);
         field_str(b, "unit", s->unit);
         write_hints(b, s->decl);
-        mm_buf_puts(b, ",\"x\":[");
-        for (int i = 0; i < s->s.n; i++) {
-            if (i)
-                mm_buf_char(b, ',');
-            mm_buf_num(b, s->s.x[i], s->name);
-        }
-        mm_buf_puts(b, "],\"y\":[");
-        for (int i = 0; i < s->s.n; i++) {
-            if (i)
-                mm_buf_char(b, ',');
-            mm_buf_num(b, s->s.y[i], s->name);
-        }
-        mm_buf_puts(b, "]}");
+        mm_buf_puts(b, ",\"x\":");
+        write_nums(b, s->s.x, s->s.n, s->name);
+        mm_buf_puts(b, ",\"y\":");
+        write_nums(b, s->s.y, s->s.n, s->name);
+        mm_buf_char(b, '}');
     }
 
     mm_buf_puts(b, "],\"tables\":[");

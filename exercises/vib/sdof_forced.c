@@ -139,9 +139,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                 return rc;
             double rnd = mm_ex_roundoff(4 * M_PI, 1);         /* two periods of round-off */
             mm_res_check_abs(res, "X: measured on the steady orbit vs eq. (4), within 10 times DOP853's error "
-                                  "estimated at rtol/100", Xm, p.X, 10 * Xe + rnd * p.X);
+                                  "estimated at rtol/10", Xm, p.X, 10 * Xe + rnd * p.X);
             mm_res_check_abs(res, "phase: measured on the steady orbit vs eq. (4), within 10 times DOP853's "
-                                  "error estimated at rtol/100", phm, p.phase, 10 * phe + rnd);
+                                  "error estimated at rtol/10", phm, p.phase, 10 * phe + rnd);
         }
     }
 

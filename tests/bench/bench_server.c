@@ -113,7 +113,7 @@ static void once(parts *t, int reps)
     mm_buf_free(&out);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
     cache = mm_cache_new(256u << 20);
     deflateInit2(&gz, 1, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY);   /* the server's level for answers */
@@ -123,6 +123,11 @@ int main(void)
     int over = 0;
     for (int i = 0; i < mm_exercise_count; i++) {
         cur = mm_exercises[i];
+        int want = argc < 2;                        /* bench_server [id...]: only those */
+        for (int a = 1; a < argc; a++)
+            want |= strcmp(argv[a], cur->id) == 0;
+        if (!want)
+            continue;
         parts p[9];
         int reps = 1;
         for (double dt = 0; dt < 0.01; reps *= 2) {
