@@ -25,7 +25,7 @@ DESTDIR  ?=
 CC       := gcc
 CXX      := g++
 
-PKGS     := libmicrohttpd libcjson lapacke fftw3 muparser libcmark zlib nettle
+PKGS     := libmicrohttpd libcjson lapacke fftw3 muparser libcmark zlib libdeflate nettle
 TESTPKGS := cmocka libcurl
 
 WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes \

@@ -153,8 +153,7 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
                         const double *t, double *x, double *xi, double *worst, mm_result *res,
                         mm_error *err)
 {
-    for (int i = 0; i < n; i++)
-        x[i] = mm_sdof_x(s, p, t[i], NULL);
+    mm_sdof_x_many(s, p, n, t, x);
     double *xf = mm_res_alloc(res, (size_t)n * sizeof *xf);
     if (!xf)
         return MM_ENOMEM;
@@ -283,17 +282,36 @@ int mm_ex_anim_frames(double t_end, double period, int npts, double *t_show)
     return cap;
 }
 
+/* nearbyint(x p) / p, with nearbyint done inline where it can be: below
+ * 2^51, adding and taking away 1.5 2^52 rounds to the nearest integer (ties
+ * to even, as nearbyint in the default mode) and copysign keeps the sign of
+ * a zero; libm's nearbyint is a call through the PLT on this baseline ISA. */
+static double round_scaled(double x, double p)
+{
+    double y = x * p;
+    if (fabs(y) < 0x1p51)
+        y = copysign((y + 0x1.8p52) - 0x1.8p52, y);
+    else
+        y = nearbyint(y);
+    return y / p;
+}
+
+/* 10^decimals, exact for 0 <= decimals <= 22. */
+static double pow10_exact(int decimals)
+{
+    double p = 1;
+    for (int i = 0; i < decimals; i++)
+        p *= 10;
+    return p;
+}
+
 /* x rounded to `decimals` digits after the point, as the double nearest
  * that short decimal (so that the answer prints it short): an integer over
  * an exact power of ten is correctly rounded. */
 static double round_decimals(double x, int decimals)
 {
-    if (decimals >= 0 && decimals <= 22) {
-        double p = 1;
-        for (int i = 0; i < decimals; i++)
-            p *= 10;
-        return nearbyint(x * p) / p;
-    }
+    if (decimals >= 0 && decimals <= 22)
+        return round_scaled(x, pow10_exact(decimals));
     char buf[64];
     snprintf(buf, sizeof buf, "%.*f", decimals, x);
     return strtod(buf, NULL);
@@ -334,6 +352,14 @@ void mm_ex_round_sig(double *y, int n, int digits)
 static void round_shape(mm_shape *s, int decimals)
 {
     size_t n = (size_t)s->frames * (size_t)s->npts;
+    if (decimals >= 0 && decimals <= 22) {
+        double p = pow10_exact(decimals);
+        for (size_t i = 0; i < n; i++) {
+            s->x[i] = round_scaled(s->x[i], p);
+            s->y[i] = round_scaled(s->y[i], p);
+        }
+        return;
+    }
     for (size_t i = 0; i < n; i++) {
         s->x[i] = round_decimals(s->x[i], decimals);
         s->y[i] = round_decimals(s->y[i], decimals);

@@ -243,9 +243,10 @@ static void anim_bounds(const mm_result *r, double bb[4])
             continue;
         size_t m = (size_t)n->s.frames * (size_t)n->s.npts;
         double rad = n->kind == MM_SHAPE_CIRCLE ? n->s.radius : 0;
-        for (size_t k = 0; k < m; k++) {
-            lo[0] = fmin(lo[0], n->s.x[k] - rad), hi[0] = fmax(hi[0], n->s.x[k] + rad);
-            lo[1] = fmin(lo[1], n->s.y[k] - rad), hi[1] = fmax(hi[1], n->s.y[k] + rad);
+        for (size_t k = 0; k < m; k++) {      /* finite (the writer refuses others): no fmin/fmax calls */
+            double xl = n->s.x[k] - rad, xh = n->s.x[k] + rad, yl = n->s.y[k] - rad, yh = n->s.y[k] + rad;
+            lo[0] = xl < lo[0] ? xl : lo[0], hi[0] = xh > hi[0] ? xh : hi[0];
+            lo[1] = yl < lo[1] ? yl : lo[1], hi[1] = yh > hi[1] ? yh : hi[1];
         }
     }
     if (!(lo[0] <= hi[0])) {

@@ -164,6 +164,31 @@ double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
     return xh + xp;
 }
 
+void mm_sdof_x_many(const mm_sdof *s, const mm_sdof_props *p, int n, const double *t, double *x)
+{
+    int forced = s->F0 != 0.0 || s->G0 != 0.0;
+    if (s->c == 0.0 && forced) {
+        for (int i = 0; i < n; i++)
+            x[i] = mm_sdof_x(s, p, t[i], NULL);
+        return;
+    }
+    /* mm_sdof_x's damped branch, its constants once: the same operations,
+     * so the same numbers */
+    double wn = p->omega_n, w = s->omega;
+    double a = p->zeta * wn;
+    double lambda = p->regime == MM_SDOF_CRITICAL ? 0.0 : wn * wn * (1 - p->zeta) * (1 + p->zeta);
+    double xp0 = 0, vp0 = 0, lag = 0;
+    if (forced) {
+        lag = p->phase - atan2(-s->G0, s->F0);
+        xp0 = p->X * cos(-lag);
+        vp0 = -p->X * w * sin(-lag);
+    }
+    for (int i = 0; i < n; i++) {
+        double xp = forced ? p->X * cos(w * t[i] - lag) : 0;
+        x[i] = homogeneous(a, lambda, wn * wn, s->x0 - xp0, s->v0 - vp0, t[i], NULL) + xp;
+    }
+}
+
 /* sin x and cos x for the forcing of mm_sdof_rhs, called at every stage of
  * an integration (a quarter of a default vib-sdof-forced request's time went
  * to libm's cos).  To within an ulp or two of libm's values, which is far

@@ -84,9 +84,9 @@ static int animate(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_re
         return MM_ENOMEM;
     for (int f = 0; f < nf; f++) {
         t[f] = t_show * f / (nf - 1);
-        x[f] = mm_sdof_x(s, p, t[f], NULL);
         F[f] = s->F0 * cos(s->omega * t[f]);
     }
+    mm_sdof_x_many(s, p, nf, t, x);
     return mm_ex_animate_oscillator(res, nf, t, x, NULL, s->F0 != 0 ? F : NULL, "F", 1, 0);
 }
 
