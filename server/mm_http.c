@@ -916,8 +916,9 @@ static enum MHD_Result send_answer(req *r, const char *method, const char *url, 
     if (a->allow)
         MHD_add_response_header(resp, MHD_HTTP_HEADER_ALLOW, a->allow);
     char timing[160];
-    snprintf(timing, sizeof timing, "%s%stotal;dur=%.3f", a->timing ? a->timing : "", a->timing ? ", " : "",
-             (double)(now_us() - r->t0) * 1e-3);
+    long long us = now_us() - r->t0;           /* milliseconds to 3 decimals, without printf's floating point */
+    snprintf(timing, sizeof timing, "%s%stotal;dur=%lld.%03lld", a->timing ? a->timing : "",
+             a->timing ? ", " : "", us / 1000, us % 1000);
     MHD_add_response_header(resp, "Server-Timing", timing);
     enum MHD_Result ret = MHD_queue_response(r->c, (unsigned)a->status, resp);
     MHD_destroy_response(resp);
@@ -1006,11 +1007,10 @@ static enum MHD_Result send_entry(req *r, const char *method, const char *url, m
         gz = gz_body != NULL;
     }
     char etag[MM_ETAG_SIZE + 4], timing[96];
-    size_t el = strlen(e->etag);
-    if (gz)
-        snprintf(etag, sizeof etag, "%.*s-gz\"", (int)(el - 1), e->etag);
-    else
-        snprintf(etag, sizeof etag, "%s", e->etag);
+    size_t el = strlen(e->etag);               /* "abc" -> "abc-gz": the same with -gz before the quote */
+    memcpy(etag, e->etag, el + 1);
+    if (gz && el >= 2 && el + 3 < sizeof etag)
+        memcpy(etag + el - 1, "-gz\"", 5);
     if (strcmp(how, "hit") == 0)
         snprintf(timing, sizeof timing, "cache;desc=\"hit\"");
     else
@@ -1416,13 +1416,17 @@ static enum MHD_Result h_solve(ctx *x)
         return send_answer(r, x->method, x->full_url, &a, "refused");
     }
 
-    /* the validator first: a matching ETag needs no answer at all */
-    char etag[MM_ETAG_SIZE];
-    mm_api_answer_etag(sv->key.p, sv->key.len, etag);
-    if (mm_etag_matches(header(r, MHD_HTTP_HEADER_IF_NONE_MATCH), etag)) {
-        mm_solve_free(sv);
-        free(sv);
-        return send_not_modified(r, x->method, x->full_url, etag, "no-cache", 1);
+    /* the validator first: a matching ETag needs no answer at all (hashed
+     * only when asked: an answer carries its entry's own copy) */
+    const char *inm = header(r, MHD_HTTP_HEADER_IF_NONE_MATCH);
+    if (inm) {
+        char etag[MM_ETAG_SIZE];
+        mm_api_answer_etag(sv->key.p, sv->key.len, etag);
+        if (mm_etag_matches(inm, etag)) {
+            mm_solve_free(sv);
+            free(sv);
+            return send_not_modified(r, x->method, x->full_url, etag, "no-cache", 1);
+        }
     }
     mm_entry *e = mm_cache_lookup(s->cache, sv->key.p, sv->key.len);
     if (e) {

@@ -26,7 +26,7 @@ start() {  # $1 name, then the command; sets ${name}_pid, ${name}_port
 }
 start bare "$BUILD/bench/bare_mhd" pool
 start srv "$BUILD/mechmat-server" --port 0 --quiet --threads 2
-trap 'kill $bare_pid $srv_pid 2>/dev/null; rm -rf "$work"' EXIT
+trap 'kill $bare_pid $srv_pid ${bp_pid:-} ${bz_pid:-} 2>/dev/null; rm -rf "$work"' EXIT
 hz=$(getconf CLK_TCK)
 cpu() { awk '{print $14 + $15}' "/proc/$1/stat"; }
 # req/s and the server's CPU per request (us): the first is what a class
@@ -42,17 +42,26 @@ rps() {  # $1 pid, $2 url, further args to wrk -> "req/s us"
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END{print a[int((NR+1)/2)]}'; }
 solve="http://127.0.0.1:$srv_port/api/exercises/vib-sdof-forced/solve"
 curl -s -o /dev/null "$solve"; curl -s -o /dev/null -H 'Accept-Encoding: gzip' "$solve"      # cached, both forms
+size=$(curl -s "$solve" | wc -c); zsize=$(curl -s -H 'Accept-Encoding: gzip' "$solve" | wc -c)
+# the same bare endpoint answering as many bytes as the answer, plain and
+# compressed: the ceiling for moving those bytes, so that what the server
+# adds to them is seen apart from what the bytes cost
+start bp "$BUILD/bench/bare_mhd" pool "$size"
+start bz "$BUILD/bench/bare_mhd" pool "$zsize"
 wrk -t2 -c16 -d1s "http://127.0.0.1:$bare_port/" > /dev/null 2>&1                           # warm-up
-b=() h=() r=() z=() bc=() hc=() rc=() zc=()
+b=() h=() r=() z=() bc=() hc=() rc=() zc=() p=() q=() pc=() qc=()
 for round in 1 2 3; do
   read -r x y <<< "$(rps "$bare_pid" "http://127.0.0.1:$bare_port/")"; b+=("$x"); bc+=("$y")
   read -r x y <<< "$(rps "$srv_pid" "http://127.0.0.1:$srv_port/api/health")"; h+=("$x"); hc+=("$y")
+  read -r x y <<< "$(rps "$bp_pid" "http://127.0.0.1:$bp_port/")"; p+=("$x"); pc+=("$y")
   read -r x y <<< "$(rps "$srv_pid" "$solve")"; r+=("$x"); rc+=("$y")
+  read -r x y <<< "$(rps "$bz_pid" "http://127.0.0.1:$bz_port/")"; q+=("$x"); qc+=("$y")
   read -r x y <<< "$(rps "$srv_pid" "$solve" -H 'Accept-Encoding: gzip')"; z+=("$x"); zc+=("$y")
 done
+kill "$bp_pid" "$bz_pid" 2>/dev/null; wait "$bp_pid" "$bz_pid" 2>/dev/null
 B=$(median "${b[@]}") H=$(median "${h[@]}") R=$(median "${r[@]}") Z=$(median "${z[@]}")
 BC=$(median "${bc[@]}") HC=$(median "${hc[@]}") RC=$(median "${rc[@]}") ZC=$(median "${zc[@]}")
-size=$(curl -s "$solve" | wc -c); zsize=$(curl -s -H 'Accept-Encoding: gzip' "$solve" | wc -c)
+P=$(median "${p[@]}") Q=$(median "${q[@]}") PC=$(median "${pc[@]}") QC=$(median "${qc[@]}")
 line() {  # label rps cpu
   printf "%-52s %9s req/s ratio %.2f | %6.1f us CPU ratio %.2f\n" "$1" "$2" \
     "$(awk -v a="$2" -v b="$B" 'BEGIN{print a/b}')" "$3" "$(awk -v a="$3" -v b="$BC" 'BEGIN{print b/a}')"
@@ -62,7 +71,16 @@ line "/api/health" "$H" "$HC"
 line "repeated vib-sdof-forced, plain ($size B)" "$R" "$RC"
 line "repeated vib-sdof-forced, gzip as browsers ($zsize B)" "$Z" "$ZC"
 echo "   (ratios: req/s against the bare endpoint's, and its CPU per request over ours; goal >= 0.8)"
-echo "   rounds req/s: bare ${b[*]} | health ${h[*]} | plain ${r[*]} | gzip ${z[*]}"
+same() {  # label rps cpu bare-rps bare-cpu
+  printf "%-52s %9s req/s ratio %.2f | %6.1f us CPU ratio %.2f\n" "$1" "$2" \
+    "$(awk -v a="$2" -v b="$4" 'BEGIN{print a/b}')" "$3" "$(awk -v a="$3" -v b="$5" 'BEGIN{print b/a}')"
+}
+echo "   the same answers against the bare endpoint answering as many bytes (what the server adds to the bytes):"
+printf "%-52s %9s req/s             | %6.1f us CPU\n" "bare endpoint, $size B" "$P" "$PC"
+same "repeated vib-sdof-forced, plain ($size B)" "$R" "$RC" "$P" "$PC"
+printf "%-52s %9s req/s             | %6.1f us CPU\n" "bare endpoint, $zsize B" "$Q" "$QC"
+same "repeated vib-sdof-forced, gzip as browsers ($zsize B)" "$Z" "$ZC" "$Q" "$QC"
+echo "   rounds req/s: bare ${b[*]} | health ${h[*]} | bare $size B ${p[*]} | plain ${r[*]} | bare $zsize B ${q[*]} | gzip ${z[*]}"
 echo "   load average: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
 
 # distinct requests: every one a miss (omega moves by 1e-9 each time), so
