@@ -33,10 +33,15 @@ for name in "${names[@]}"; do
   work="build/fuzz/corpus-$name"
   log="build/fuzz/long/$name.log"
   mkdir -p "$work"
-  nice -n 19 "$bin" -max_total_time=1000000 -timeout=300 -report_slow_units=300 -rss_limit_mb=2048 -max_len=4096 \
+  setsid nice -n 19 "$bin" -max_total_time=1000000 -timeout=300 -report_slow_units=300 -rss_limit_mb=2048 -max_len=4096 \
     -artifact_prefix="build/fuzz/crash-$name-" -print_final_stats=1 \
     "$work" "tests/fuzz/corpus/$name" > "$log" 2>&1 &
   pid=$!
+  # nice 19 holds only inside a session: with the kernel's autogroups a
+  # session competes as a whole at nice 0.  So the fuzzer gets a session of
+  # its own (setsid) and that session is made nice 19 as well (where the
+  # kernel has autogroups), leaving the caller's session as it was
+  echo 19 > "/proc/$pid/autogroup" 2>/dev/null || true
   used=0
   while kill -0 "$pid" 2>/dev/null; do
     sleep 20

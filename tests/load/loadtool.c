@@ -269,6 +269,21 @@ static double pct(const double *v, int n, double p)
     return v[k < n ? k : n - 1];
 }
 
+/* This thread's time on a CPU and time waiting for one, in ms (Linux
+ * schedstat): a client that waited long measured its own starvation. */
+static void cpu_times(double *run_ms, double *wait_ms)
+{
+    unsigned long long run = 0, wait = 0;
+    FILE *f = fopen("/proc/thread-self/schedstat", "r");
+    if (f) {
+        if (fscanf(f, "%llu %llu", &run, &wait) != 2)
+            run = wait = 0;
+        fclose(f);
+    }
+    *run_ms = (double)run * 1e-6;
+    *wait_ms = (double)wait * 1e-6;
+}
+
 /* What a page links: href="/x.y" and src="/x.y" (files, not pages). */
 static int page_links(const char *html, char links[][200], int max)
 {
@@ -352,8 +367,9 @@ static int class_start(const char *base, int n_clients, double spread, const cha
     double *pages = malloc(sizeof(double) * (size_t)n_clients);
     int n_lat = 0, n_pages = 0, started = 0, failed = 0, running = 0, done = 0;
     double bytes = 0;
-    double t0 = now_s(), slowest = 0;
+    double t0 = now_s(), slowest = 0, run0, wait0, run1, wait1;
     char slowest_url[300] = "";
+    cpu_times(&run0, &wait0);
     /* until every page is complete: curl's running count misses the
      * requests a page's HTML added after curl_multi_perform (the last
      * browser's six, and with one browser, the instructor's, whose visit
@@ -416,6 +432,7 @@ static int class_start(const char *base, int n_clients, double spread, const cha
         curl_multi_poll(m, NULL, 0, 1, NULL);
     }
     double wall = now_s() - t0;
+    cpu_times(&run1, &wait1);
     qsort(lat, (size_t)n_lat, sizeof *lat, cmp_double);
     qsort(pages, (size_t)n_pages, sizeof *pages, cmp_double);
     printf("class: %d browsers over %.1f s (%s), %d requests each, %d requests in %.2f s: %d failed; "
@@ -425,6 +442,7 @@ static int class_start(const char *base, int n_clients, double spread, const cha
            pct(lat, n_lat, 90), pct(lat, n_lat, 99), lat[n_lat - 1], slowest_url);
     printf("class: whole page ms:      p50 %.1f  p90 %.1f  p99 %.1f  max %.1f\n", pct(pages, n_pages, 50),
            pct(pages, n_pages, 90), pct(pages, n_pages, 99), n_pages ? pages[n_pages - 1] : 0);
+    printf("class: the client ran %.0f ms and waited %.0f ms for a CPU\n", run1 - run0, wait1 - wait0);
     printf("class-figures: answered=%d failed=%d p99_ms=%.1f page_p99_ms=%.1f\n", n_lat - failed, failed,
            pct(lat, n_lat, 99), pct(pages, n_pages, 99));
     for (int i = 0; i < n_clients; i++)

@@ -26,7 +26,11 @@ stack_instance() {
   local -n pid_var=$1 port_var=$2
   shift 2
   local out="$work/instance-$RANDOM.out"
-  "$server_bin" --host 127.0.0.1 --port 0 --quiet "$@" > "$out" 2>&1 &
+  # setsid: each instance in a session of its own, as a service is (systemd
+  # gives each its own cgroup), not in the load generator's: with the
+  # kernel's autogroups a shared session shares one CPU slice against
+  # every other session of the machine, which no deployment does
+  setsid "$server_bin" --host 127.0.0.1 --port 0 --quiet "$@" > "$out" 2>&1 &
   pid_var=$!
   stack_pids+=("$pid_var")
   for _ in $(seq 200); do grep -q listening "$out" && break; sleep 0.05; done
@@ -72,7 +76,7 @@ http {
 CONF
   nginx -t -p "$work/nginx" -c "$work/nginx/nginx.conf" > "$work/nginx/test.log" 2>&1 \
     || { cat "$work/nginx/test.log"; echo "stack: nginx refuses the configuration"; return 1; }
-  nginx -p "$work/nginx" -c "$work/nginx/nginx.conf" -g 'daemon off;' > "$work/nginx/out.log" 2>&1 &
+  setsid nginx -p "$work/nginx" -c "$work/nginx/nginx.conf" -g 'daemon off;' > "$work/nginx/out.log" 2>&1 &
   nginx_pid=$!
   stack_pids+=("$nginx_pid")
   for _ in $(seq 200); do curl -s -o /dev/null "http://127.0.0.1:$nginx_port/api/health" && break; sleep 0.05; done
