@@ -3,8 +3,6 @@
 
 #include <complex.h>
 #include <math.h>
-#include <stdint.h>
-#include <string.h>
 
 const char *mm_sdof_regime_name(int regime)
 {
@@ -189,69 +187,6 @@ void mm_sdof_x_many(const mm_sdof *s, const mm_sdof_props *p, int n, const doubl
     }
 }
 
-/* sin x and cos x for the forcing of mm_sdof_rhs, called at every stage of
- * an integration (a quarter of a default vib-sdof-forced request's time went
- * to libm's cos).  To within an ulp or two of libm's values, which is far
- * below any tolerance an integration is run at; the closed form (mm_sdof_x)
- * keeps libm's.  The argument is reduced by x - q pi/2 with pi/2 in three
- * parts (Cody and Waite): q pio2_1 and q pio2_2 are exact products for
- * |q| < 2^20 (33-bit parts), and x - q pio2_1 is exact (Sterbenz), so the
- * reduced r is accurate to an ulp of pi/4; beyond |x| = 1e6 (no request comes
- * near: the work limit is 2e4 radians) libm does it.  The polynomials on
- * |r| <= pi/4 are fdlibm's __kernel_sin and __kernel_cos (error < 1 ulp):
- *   Copyright (C) 1993 by Sun Microsystems, Inc. All rights reserved.
- *   Developed at SunPro, a Sun Microsystems, Inc. business.  Permission to
- *   use, copy, modify, and distribute this software is freely granted,
- *   provided that this notice is preserved. */
-static void __attribute__((noinline)) libm_sincos(double x, double *sn, double *cs)
-{
-    *sn = sin(x);
-    *cs = cos(x);
-}
-
-static inline void forcing_sincos(double x, double *sn, double *cs)
-{
-    if (!(fabs(x) <= 1e6)) {
-        libm_sincos(x, sn, cs);
-        return;
-    }
-    static const double pio2_1 = 1.57079632673412561417e+00,   /* first 33 bits of pi/2 */
-                        pio2_2 = 6.07710050630396597660e-11,   /* next 33 bits */
-                        pio2_2t = 2.02226624879595063154e-21,  /* pi/2 - pio2_1 - pio2_2 */
-                        invpio2 = 6.36619772367581382433e-01,  /* 2/pi */
-                        toint = 6755399441055744.0;            /* 1.5 2^52: rounds to an integer */
-    double q = (x * invpio2 + toint) - toint;
-    double r = ((x - q * pio2_1) - q * pio2_2) - q * pio2_2t;
-    long n = (long)q;
-    double z = r * r, w = z * z;
-    /* __kernel_sin(r, 0, 0) */
-    double ps = 8.33333333332248946124e-03 + z * (-1.98412698298579493134e-04 + z * 2.75573137070700676789e-06)
-                + z * w * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10);
-    double s = r + z * r * (-1.66666666666666324348e-01 + z * ps);
-    /* __kernel_cos(r, 0) */
-    double pc = z * (4.16666666666666019037e-02 + z * (-1.38888888888741095749e-03 + z * 2.48015872894767294178e-05))
-                + w * w * (-2.75573143513906633035e-07 + z * (2.08757232129817482790e-09
-                                                              + z * -1.13596475577881948265e-11));
-    double hz = 0.5 * z, c1 = 1.0 - hz;
-    double c = c1 + (((1.0 - c1) - hz) + z * pc);
-    /* x = r + n pi/2: sin x = s, c, -s, -c and cos x = c, -s, -c, s for
-     * n = 0, 1, 2, 3 (mod 4), chosen on the bits rather than by a branch:
-     * when a step spans a radian (omega h near 1, as h_max allows) the
-     * quadrant changes from stage to stage and a branch could not guess it */
-    uint64_t sb, cb, swap = -(uint64_t)(n & 1);
-    memcpy(&sb, &s, sizeof sb);
-    memcpy(&cb, &c, sizeof cb);
-    uint64_t rs = ((sb & ~swap) | (cb & swap)) ^ ((uint64_t)(n & 2) << 62);
-    uint64_t rc = ((cb & ~swap) | (sb & swap)) ^ ((uint64_t)((n + 1) & 2) << 62);
-    memcpy(sn, &rs, sizeof rs);
-    memcpy(cs, &rc, sizeof rc);
-}
-
-void mm_sdof_sincos(double x, double *sn, double *cs)
-{
-    forcing_sincos(x, sn, cs);
-}
-
 /* Written as x'' = F/m - (c/m) x' - (k/m) x: the quotients do not depend on
  * y, so they are computed while the integrator forms the stage, and the
  * path from y to dydt is two products and two sums (a division on it made
@@ -259,9 +194,8 @@ void mm_sdof_sincos(double x, double *sn, double *cs)
 int mm_sdof_rhs(double t, const double *y, double *dydt, void *params)
 {
     const mm_sdof *s = params;
-    double sn, cs, im = 1.0 / s->m;
-    forcing_sincos(s->omega * t, &sn, &cs);
-    double F = s->G0 != 0.0 ? s->F0 * cs + s->G0 * sn : s->F0 * cs;
+    double wt = s->omega * t, im = 1.0 / s->m;
+    double F = s->G0 != 0.0 ? s->F0 * cos(wt) + s->G0 * sin(wt) : s->F0 * cos(wt);
     dydt[0] = y[1];
     dydt[1] = (F * im - (s->c * im) * y[1]) - (s->k * im) * y[0];
     return 0;

@@ -84,11 +84,6 @@ void mm_sdof_x_many(const mm_sdof *s, const mm_sdof_props *p, int n, const doubl
  * params a const mm_sdof *.  Returns 0. */
 int mm_sdof_rhs(double t, const double *y, double *dydt, void *params);
 
-/* sin x and cos x as mm_sdof_rhs computes its forcing: within an ulp or two
- * of libm's (fdlibm's kernels after a Cody-Waite reduction, libm itself
- * beyond |x| = 1e6), about a third of libm's time.  Cannot fail. */
-void mm_sdof_sincos(double x, double *sn, double *cs);
-
 /* The mechanical energy 1/2 m v^2 + 1/2 k x^2 [J].  Cannot fail. */
 double mm_sdof_energy(const mm_sdof *s, double x, double v);
 

@@ -218,45 +218,6 @@ static void the_step_gains_should_meet_the_classic_stability_limits(void **state
     check_rel(mm_sdof_verlet_gain(0.5, 0.1), sqrt(1 - 2 * 0.1 * 0.5), 1e-14, "damped: sqrt of the determinant");
 }
 
-/* mm_sdof_rhs's forcing takes sin and cos from mm_sdof_sincos (a reduction
- * by pi/2 in three parts and fdlibm's polynomials) instead of libm: within
- * an ulp of 1 (2.2e-16) of libm's values, which are themselves within half
- * an ulp of the truth, on every range a request reaches (|omega t| <= 2e4
- * radians), near multiples of pi/2 (where the reduction cancels), tiny
- * arguments, and beyond 1e6 (where libm does it: equal). */
-static void the_forcing_sine_and_cosine_should_be_libms_to_an_ulp(void **state)
-{
-    (void)state;
-    unsigned long long x = 88172645463325252ULL;
-    double worst = 0, at = 0;
-    for (int i = 0; i < 3000000; i++) {
-        x ^= x << 13, x ^= x >> 7, x ^= x << 17;           /* xorshift64 */
-        double u = ldexp((double)(x >> 11), -53) * 2 - 1;  /* [-1, 1) */
-        double a;
-        switch (i % 4) {
-        case 0: a = 2e4 * u; break;                                     /* a request's range */
-        case 1: a = u * pow(10, (int)(x % 14) - 8); break;              /* 1e-8 .. 1e5 */
-        case 2: a = (double)((long)(x % 20000) - 10000) * (M_PI / 2) * (1 + 1e-15 * u); break;  /* near k pi/2 */
-        default: a = 2e6 * u; break;                                    /* over 1e6: libm */
-        }
-        double sn, cs;
-        mm_sdof_sincos(a, &sn, &cs);
-        double e = fmax(fabs(sn - sin(a)), fabs(cs - cos(a)));
-        if (e > worst)
-            worst = e, at = a;
-        if (fabs(a) > 1e6 && (sn != sin(a) || cs != cos(a)))
-            fail_msg("beyond 1e6 libm's own values: %.17g", a);
-    }
-    if (worst > DBL_EPSILON)
-        fail_msg("sin/cos %.3g from libm's at %.17g (bound: an ulp of 1, 2.2e-16)", worst, at);
-    double sn, cs;
-    mm_sdof_sincos(0, &sn, &cs);
-    assert_true(sn == 0 && cs == 1);
-    mm_sdof_sincos(M_PI / 2, &sn, &cs);
-    check_abs(sn, 1, DBL_EPSILON / 2, "sin(pi/2)");
-    check_abs(cs, 6.123233995736766e-17, 1e-32, "cos of the double nearest pi/2");
-}
-
 /* mm_sdof_x_many is mm_sdof_x with its constants hoisted: the same numbers,
  * bit for bit, in every regime, forced or free, with a sine force, undamped. */
 static void many_points_should_be_mm_sdof_x_exactly(void **state)
@@ -297,7 +258,6 @@ int main(void)
         cmocka_unit_test(the_dynamic_stiffness_should_keep_its_digits_near_resonance),
         cmocka_unit_test(a_strongly_overdamped_block_should_keep_its_digits),
         cmocka_unit_test(the_step_gains_should_meet_the_classic_stability_limits),
-        cmocka_unit_test(the_forcing_sine_and_cosine_should_be_libms_to_an_ulp),
         cmocka_unit_test(many_points_should_be_mm_sdof_x_exactly),
     };
     return cmocka_run_group_tests_name("sdof", tests, NULL, NULL);
