@@ -22,7 +22,6 @@
 #include <time.h>
 #include <unistd.h>
 #include <libdeflate.h>
-#include <zlib.h>
 
 #include "mm_assign.h"
 #include "mm_cache.h"
@@ -344,30 +343,21 @@ static int gzip_answer(const char *in, size_t n, char **out, size_t *out_len)
     return 0;
 }
 
-/* in compressed (gzip) at a zlib level, or an answer's at GZ_ANSWER (then
- * by gzip_answer); -1 when it does not shrink or on failure. */
+/* in compressed (gzip) at a libdeflate level, an answer's (GZ_ANSWER) by
+ * this thread's compressor, a file's or a document's (once each) by one
+ * made for it; -1 when it does not shrink or on failure. */
 static int gzip_bytes(const char *in, size_t n, int level, char **out, size_t *out_len)
 {
     if (level == GZ_ANSWER)
         return gzip_answer(in, n, out, out_len);
-    z_stream zs, *z = &zs;
-    memset(z, 0, sizeof *z);
-    if (deflateInit2(z, level, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+    struct libdeflate_compressor *c = libdeflate_alloc_compressor(level);
+    if (!c)
         return -1;
-    size_t cap = deflateBound(z, (uLong)n);
+    size_t cap = libdeflate_gzip_compress_bound(c, n);
     char *buf = malloc(cap);
-    if (!buf) {
-        deflateEnd(z);
-        return -1;
-    }
-    z->next_in = (Bytef *)(uintptr_t)in;
-    z->avail_in = (uInt)n;
-    z->next_out = (Bytef *)buf;
-    z->avail_out = (uInt)cap;
-    int rc = deflate(z, Z_FINISH);
-    size_t len = cap - z->avail_out;
-    deflateEnd(z);
-    if (rc != Z_STREAM_END || len >= n) {    /* no gain: send it as it is */
+    size_t len = buf ? libdeflate_gzip_compress(c, in, n, buf, cap) : 0;
+    libdeflate_free_compressor(c);
+    if (len == 0 || len >= n) {              /* no gain (or no memory): send it as it is */
         free(buf);
         return -1;
     }
