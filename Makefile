@@ -25,8 +25,8 @@ DESTDIR  ?=
 CC       := gcc
 CXX      := g++
 
-PKGS     := libmicrohttpd libcjson lapacke fftw3 muparser libcmark zlib nettle
-TESTPKGS := cmocka libcurl
+PKGS     := libmicrohttpd libcjson lapacke fftw3 muparser libcmark libdeflate nettle
+TESTPKGS := cmocka libcurl zlib
 
 WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes \
             -Wmissing-prototypes -Wwrite-strings -Wundef -Wformat=2 \

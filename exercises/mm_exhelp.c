@@ -153,19 +153,18 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
                         const double *t, double *x, double *xi, double *worst, mm_result *res,
                         mm_error *err)
 {
-    for (int i = 0; i < n; i++)
-        x[i] = mm_sdof_x(s, p, t[i], NULL);
+    mm_sdof_x_many(s, p, n, t, x);
     double *xf = mm_res_alloc(res, (size_t)n * sizeof *xf);
     if (!xf)
         return MM_ENOMEM;
-    /* the run shown, and the error estimate: a run at rtol / 100 with at
-     * least 8 steps (a short run may be one step at both tolerances) */
+    /* the run shown, and the error estimate: a run at rtol / MM_EX_SDOF_REF
+     * with at least 8 steps (a short run may be one step at both tolerances) */
     double h_max = 1 / mm_sdof_fastest_rate(s, p);
     mm_ode_result r, rf;
     int rc = mm_ex_sdof_integrate(s, t_end, n, t, xi, NULL, MM_EX_SDOF_RTOL, fmin(h_max, t_end / 4), &r,
                                   res, err);
     if (rc == MM_OK)
-        rc = mm_ex_sdof_integrate(s, t_end, n, t, xf, NULL, MM_EX_SDOF_RTOL / 100, fmin(h_max, t_end / 8),
+        rc = mm_ex_sdof_integrate(s, t_end, n, t, xf, NULL, MM_EX_SDOF_RTOL / MM_EX_SDOF_REF, fmin(h_max, t_end / 8),
                                   &rf, res, err);
     if (rc != MM_OK)
         return rc;
@@ -185,7 +184,7 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
     double terms = fmax(peak, fabs(p->X) + fabs(s->x0) + fabs(s->v0) / p->omega_n);
     double tol = 10 * est + mm_ex_roundoff(radians, terms);
     *worst = mm_check_curve(res, "x(t): DOP853 vs the closed form (worst plotted point), within 10 times "
-                            "its error estimated by a run at rtol/100", n, xi, x,
+                            "its error estimated by a run at rtol/10", n, xi, x,
                             peak > 0 ? tol / peak : 0);
     mm_res_method_stat(res, "max_error", *worst);
     return MM_OK;
@@ -228,7 +227,7 @@ static int steady_once(const mm_sdof *s, const mm_sdof_props *p, int periods, do
     mm_linspace(0, periods * T, n + 1, t);
     mm_ode_result r;
     int rc = mm_ex_sdof_integrate(&st, periods * T, n + 1, t, x, NULL, rtol,
-                                  fmin(1 / mm_sdof_fastest_rate(s, p), T / 8) * (rtol < 1e-10 ? 0.5 : 1),
+                                  fmin(1 / mm_sdof_fastest_rate(s, p), T / 8) * (rtol < MM_EX_SDOF_RTOL ? 0.5 : 1),
                                   &r, res, err);
     if (rc == MM_OK)
         rc = mm_fourier_harmonic(x, (size_t)n, PER, X, lag, err);   /* the last point repeats the first */
@@ -240,9 +239,9 @@ int mm_ex_sdof_steady_measure(const mm_sdof *s, const mm_sdof_props *p, int peri
                               double *lag_est, mm_result *res, mm_error *err)
 {
     double Xf, lagf;
-    int rc = steady_once(s, p, periods, 1e-10, X, lag, res, err);
+    int rc = steady_once(s, p, periods, MM_EX_SDOF_RTOL, X, lag, res, err);
     if (rc == MM_OK)
-        rc = steady_once(s, p, periods, 1e-12, &Xf, &lagf, res, err);
+        rc = steady_once(s, p, periods, MM_EX_SDOF_RTOL / MM_EX_SDOF_REF, &Xf, &lagf, res, err);
     if (rc != MM_OK)
         return rc;
     *lag = lag_near + remainder(*lag - lag_near, 2 * M_PI);      /* compare angles, not numbers */
@@ -283,17 +282,36 @@ int mm_ex_anim_frames(double t_end, double period, int npts, double *t_show)
     return cap;
 }
 
+/* nearbyint(x p) / p, with nearbyint done inline where it can be: below
+ * 2^51, adding and taking away 1.5 2^52 rounds to the nearest integer (ties
+ * to even, as nearbyint in the default mode) and copysign keeps the sign of
+ * a zero; libm's nearbyint is a call through the PLT on this baseline ISA. */
+static double round_scaled(double x, double p)
+{
+    double y = x * p;
+    if (fabs(y) < 0x1p51)
+        y = copysign((y + 0x1.8p52) - 0x1.8p52, y);
+    else
+        y = nearbyint(y);
+    return y / p;
+}
+
+/* 10^decimals, exact for 0 <= decimals <= 22. */
+static double pow10_exact(int decimals)
+{
+    double p = 1;
+    for (int i = 0; i < decimals; i++)
+        p *= 10;
+    return p;
+}
+
 /* x rounded to `decimals` digits after the point, as the double nearest
  * that short decimal (so that the answer prints it short): an integer over
  * an exact power of ten is correctly rounded. */
 static double round_decimals(double x, int decimals)
 {
-    if (decimals >= 0 && decimals <= 22) {
-        double p = 1;
-        for (int i = 0; i < decimals; i++)
-            p *= 10;
-        return nearbyint(x * p) / p;
-    }
+    if (decimals >= 0 && decimals <= 22)
+        return round_scaled(x, pow10_exact(decimals));
     char buf[64];
     snprintf(buf, sizeof buf, "%.*f", decimals, x);
     return strtod(buf, NULL);
@@ -334,6 +352,14 @@ void mm_ex_round_sig(double *y, int n, int digits)
 static void round_shape(mm_shape *s, int decimals)
 {
     size_t n = (size_t)s->frames * (size_t)s->npts;
+    if (decimals >= 0 && decimals <= 22) {
+        double p = pow10_exact(decimals);
+        for (size_t i = 0; i < n; i++) {
+            s->x[i] = round_scaled(s->x[i], p);
+            s->y[i] = round_scaled(s->y[i], p);
+        }
+        return;
+    }
     for (size_t i = 0; i < n; i++) {
         s->x[i] = round_decimals(s->x[i], decimals);
         s->y[i] = round_decimals(s->y[i], decimals);

@@ -57,6 +57,16 @@ int mm_ex_sdof_work_check(const mm_sdof *s, double t_end, mm_error *err);
 /* The relative tolerance of the DOP853 runs of the 1-DOF exercises. */
 #define MM_EX_SDOF_RTOL 1e-10
 
+/* Their errors are estimated by a second run at MM_EX_SDOF_RTOL /
+ * MM_EX_SDOF_REF: its error is about a tenth of the first run's, so the
+ * difference of the two is 0.8-1.0 times the first run's error (over 1000
+ * random draws of the 1-DOF exercises the checks built on it used at most
+ * a quarter of their tolerance of 10 estimates).  At rtol / 100 the
+ * estimate was a little closer and the second run cost 1.78 times the
+ * first instead of 1.33 (DOP853's steps grow as tol^(-1/8)): it was half
+ * of a vib-sdof-forced request's integration. */
+#define MM_EX_SDOF_REF 10
+
 /* Integrate the 1-DOF oscillator s (mm_sdof_rhs) from 0 to t_end by DOP853
  * at rtol (atol rtol times the size of the motion, found by a first run
  * when the guess was far off), steps at most h_max (0: one radian of the
@@ -71,7 +81,7 @@ int mm_ex_sdof_integrate(const mm_sdof *s, double t_end, int n, const double *t,
  * (the answer that is plotted), DOP853 (mm_ex_sdof_integrate at
  * MM_EX_SDOF_RTOL) into xi (shown beside it), the method and its counters
  * on res, and the check of xi against x (mm_check_curve) within ten times
- * DOP853's error estimated by a second run at MM_EX_SDOF_RTOL / 100 (plus
+ * DOP853's error estimated by a second run at MM_EX_SDOF_RTOL / MM_EX_SDOF_REF (plus
  * round-off, mm_ex_roundoff).  *worst receives the largest |xi - x|.
  * Returns MM_OK or the solver's code. */
 int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, int n,
@@ -92,12 +102,12 @@ int mm_ex_sdof_plot(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_s
  * carry eps of their argument; an integrator adds eps a step). */
 double mm_ex_roundoff(double radians, double peak);
 
-/* The steady state of s measured in the time domain: DOP853 (rtol 1e-10)
+/* The steady state of s measured in the time domain: DOP853 (MM_EX_SDOF_RTOL)
  * started on the steady orbit X cos(omega t + psi - phase) (mm_sdof_props)
  * for `periods` forcing periods, 64 samples a period, projected on cos and
  * sin (mm_fourier_harmonic).  *X and *lag receive the amplitude and the lag
  * behind cos(omega t), the lag put within pi of lag_near; *X_est and
- * *lag_est their errors estimated by a second run at rtol 1e-12.  A check
+ * *lag_est their errors estimated by a second run at rtol / MM_EX_SDOF_REF.  A check
  * of the steady-state formulas that does not use them beyond the start. */
 int mm_ex_sdof_steady_measure(const mm_sdof *s, const mm_sdof_props *p, int periods,
                               double lag_near, double *X, double *lag, double *X_est,

@@ -11,7 +11,7 @@ debs=(
   gcc g++ make pkg-config
   libmicrohttpd-dev libcjson-dev liblapacke-dev libopenblas-serial-dev
   libfftw3-dev libmuparser-dev libcmark-dev libfmt-dev
-  zlib1g-dev nettle-dev
+  zlib1g-dev libdeflate-dev nettle-dev
   libcmocka-dev libcurl4-openssl-dev curl
   libgsl-dev wrk valgrind
   chromium

@@ -215,13 +215,7 @@ static void write_hints(mm_buf *b, const mm_output *o)
 
 static void write_nums(mm_buf *b, const double *v, int n, const char *where)
 {
-    mm_buf_char(b, '[');
-    for (int i = 0; i < n; i++) {
-        if (i)
-            mm_buf_char(b, ',');
-        mm_buf_num(b, v[i], where);
-    }
-    mm_buf_char(b, ']');
+    mm_buf_nums(b, v, n > 0 ? (size_t)n : 0, where);
 }
 
 /* one array of point coordinates per frame */
@@ -249,9 +243,10 @@ static void anim_bounds(const mm_result *r, double bb[4])
             continue;
         size_t m = (size_t)n->s.frames * (size_t)n->s.npts;
         double rad = n->kind == MM_SHAPE_CIRCLE ? n->s.radius : 0;
-        for (size_t k = 0; k < m; k++) {
-            lo[0] = fmin(lo[0], n->s.x[k] - rad), hi[0] = fmax(hi[0], n->s.x[k] + rad);
-            lo[1] = fmin(lo[1], n->s.y[k] - rad), hi[1] = fmax(hi[1], n->s.y[k] + rad);
+        for (size_t k = 0; k < m; k++) {      /* finite (the writer refuses others): no fmin/fmax calls */
+            double xl = n->s.x[k] - rad, xh = n->s.x[k] + rad, yl = n->s.y[k] - rad, yh = n->s.y[k] + rad;
+            lo[0] = xl < lo[0] ? xl : lo[0], hi[0] = xh > hi[0] ? xh : hi[0];
+            lo[1] = yl < lo[1] ? yl : lo[1], hi[1] = yh > hi[1] ? yh : hi[1];
         }
     }
     if (!(lo[0] <= hi[0])) {
@@ -349,19 +344,11 @@ static void write_answer(mm_buf *b, const mm_exercise *ex, const mm_value *vals,
         field_str(b, "x_unit", s->x_unit);
         field_str(b, "unit", s->unit);
         write_hints(b, s->decl);
-        mm_buf_puts(b, ",\"x\":[");
-        for (int i = 0; i < s->s.n; i++) {
-            if (i)
-                mm_buf_char(b, ',');
-            mm_buf_num(b, s->s.x[i], s->name);
-        }
-        mm_buf_puts(b, "],\"y\":[");
-        for (int i = 0; i < s->s.n; i++) {
-            if (i)
-                mm_buf_char(b, ',');
-            mm_buf_num(b, s->s.y[i], s->name);
-        }
-        mm_buf_puts(b, "]}");
+        mm_buf_puts(b, ",\"x\":");
+        write_nums(b, s->s.x, s->s.n, s->name);
+        mm_buf_puts(b, ",\"y\":");
+        write_nums(b, s->s.y, s->s.n, s->name);
+        mm_buf_char(b, '}');
     }
 
     mm_buf_puts(b, "],\"tables\":[");

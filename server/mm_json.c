@@ -149,22 +149,61 @@ void mm_buf_str(mm_buf *b, const char *s)
         mm_buf_strn(b, s, strlen(s));
 }
 
+static void nonfinite(mm_buf *b, const char *where)
+{
+    if (!b->nonfinite)
+        snprintf(b->where, sizeof b->where, "%s", where ? where : "");
+    b->nonfinite = 1;
+}
+
+/* mm_dtoa writes straight into the buffer (room reserved first): the copy
+ * from a temporary and its length-dependent memcpy call were a fifth of
+ * the writing of a number. */
 void mm_buf_num(mm_buf *b, double v, const char *where)
 {
-    char tmp[MM_DTOA_BUFSIZE];
     if (!isfinite(v)) {
-        if (!b->nonfinite)
-            snprintf(b->where, sizeof b->where, "%s", where ? where : "");
-        b->nonfinite = 1;
+        nonfinite(b, where);
         mm_buf_char(b, '0');
         return;
     }
     if (!reserve(b, MM_DTOA_BUFSIZE))
         return;
-    int n = mm_dtoa(v, tmp);
-    memcpy(b->p + b->len, tmp, (size_t)n);
-    b->len += (size_t)n;
-    b->p[b->len] = '\0';
+    b->len += (size_t)mm_dtoa(v, b->p + b->len);     /* NUL-terminated by mm_dtoa */
+}
+
+void mm_buf_nums(mm_buf *b, const double *v, size_t n, const char *where)
+{
+    enum { CHUNK = 256 };                            /* room reserved for this many at a time */
+    mm_buf_char(b, '[');
+    for (size_t i = 0; i < n; i += CHUNK) {
+        size_t m = n - i < CHUNK ? n - i : CHUNK;
+        if (b->failed)
+            return;
+        if (b->len + m * (MM_DTOA_BUFSIZE + 1) + 1 > b->max) {   /* near the end: one at a time, */
+            for (size_t j = i; j < i + m; j++) {                  /* to fail where mm_buf_num would */
+                if (j)
+                    mm_buf_char(b, ',');
+                mm_buf_num(b, v[j], where);
+            }
+            continue;
+        }
+        if (!reserve(b, m * (MM_DTOA_BUFSIZE + 1)))
+            return;
+        char *w = b->p + b->len;
+        for (size_t j = i; j < i + m; j++) {
+            if (j)
+                *w++ = ',';
+            if (isfinite(v[j])) {
+                w += mm_dtoa(v[j], w);
+            } else {
+                nonfinite(b, where);
+                *w++ = '0';
+            }
+        }
+        *w = '\0';
+        b->len = (size_t)(w - b->p);
+    }
+    mm_buf_char(b, ']');
 }
 
 void mm_buf_int(mm_buf *b, long long v)

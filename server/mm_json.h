@@ -34,6 +34,8 @@ void mm_buf_str(mm_buf *b, const char *s);
 void mm_buf_strn(mm_buf *b, const char *s, size_t n);
 /* A JSON number; non-finite sets nonfinite (with `where`) and writes 0. */
 void mm_buf_num(mm_buf *b, double v, const char *where);
+/* [v0,v1,...] as mm_buf_num writes each, in one pass. */
+void mm_buf_nums(mm_buf *b, const double *v, size_t n, const char *where);
 void mm_buf_int(mm_buf *b, long long v);
 /* "key": */
 void mm_buf_key(mm_buf *b, const char *key);

@@ -196,9 +196,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (rc != MM_OK)
             return rc;
         mm_res_check_abs(res, "X: measured on the steady orbit vs T Y, eq. (3), within 10 times DOP853's "
-                              "error estimated at rtol/100", Xm, T * Y, 10 * Xe + rnd * T * Y);
+                              "error estimated at rtol/10", Xm, T * Y, 10 * Xe + rnd * T * Y);
         mm_res_check_abs(res, "phase: measured on the steady orbit vs eq. (4), within 10 times DOP853's "
-                              "error estimated at rtol/100", phm, phase, 10 * phe + rnd);
+                              "error estimated at rtol/10", phm, phase, 10 * phe + rnd);
     }
 
     if ((rc = curves(w / p.omega_n, p.zeta, res)) != MM_OK || (rc = crossing(p.zeta, res, err)) != MM_OK)

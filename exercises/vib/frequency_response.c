@@ -307,11 +307,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             return rc;
         if (j == 0)
             mm_res_check_abs(res, "|H| measured by time integration vs eq. (1), first zeta, within 10 times "
-                                  "DOP853's error estimated at rtol/100", Hm, amp(r, z0), 10 * He + rnd * Hm);
+                                  "DOP853's error estimated at rtol/10", Hm, amp(r, z0), 10 * He + rnd * Hm);
         mm_res_check_abs(res, j ? "phase at r = 1 measured by time integration vs pi/2, eq. (4), within 10 times "
-                                  "DOP853's error estimated at rtol/100"
+                                  "DOP853's error estimated at rtol/10"
                                 : "phase measured by time integration vs eq. (2), first zeta, within 10 times "
-                                  "DOP853's error estimated at rtol/100",
+                                  "DOP853's error estimated at rtol/10",
                          phm, phase(r, z0), 10 * phe + rnd);
     }
 

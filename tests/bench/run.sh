@@ -90,8 +90,11 @@ local n = 0
 function setup(thread) thread:set("base", math.random(1, 1000000) * 1000) end
 function request()
   n = n + 1
-  return wrk.format("GET", string.format("/api/exercises/vib-sdof-forced/solve?omega=%.9f", 8 + (base + n) * 1e-9),
-                    { Host = "127.0.0.1" })
+  -- wrk.format takes the given headers instead of wrk.headers (-H): merge
+  -- them, or "gzip, as browsers" would ask for the plain answer
+  local h = { Host = "127.0.0.1" }
+  for k, v in pairs(wrk.headers) do h[k] = v end
+  return wrk.format("GET", string.format("/api/exercises/vib-sdof-forced/solve?omega=%.9f", 8 + (base + n) * 1e-9), h)
 end
 LUA
 distinct() {  # $1 label, more wrk args

@@ -142,11 +142,103 @@ static void the_buffer_should_stop_at_its_limit(void **state)
     mm_buf_free(&b);
 }
 
+/* The numbers an animation is made of: coordinates rounded to q decimals
+ * (nearbyint(x 10^q) / 10^q, as mm_exhelp's round_shape makes them) of
+ * every size the fast path sees, and their neighbours one ulp away (which
+ * are not short): written as Dragonbox writes them, and read back. */
+static void rounded_coordinates_should_be_written_as_dragonbox_writes_them(void **state)
+{
+    (void)state;
+    char fast[MM_DTOA_BUFSIZE], ref[MM_DTOA_BUFSIZE];
+    unsigned long long x = 0x9E3779B97F4A7C15ULL;
+    long short_ones = 0;
+    for (int i = 0; i < 3000000; i++) {
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;           /* xorshift64 */
+        int q = (int)(x % 8);                              /* 0..7 decimals: 7 is past the fast path */
+        double p = 1;
+        for (int k = 0; k < q; k++)
+            p *= 10;
+        double y = ldexp((double)(x >> 11), -53) * pow(10, (int)((x >> 3) % 14) - 5);   /* 1e-5 .. 1e9 */
+        double v = nearbyint(y * p) / p;
+        if (x & 0x10000)
+            v = -v;
+        if (i % 5 == 0)
+            v = nextafter(v, 0);
+        int n = mm_dtoa(v, fast);
+        mm_dtoa_fmt(v, ref);
+        if (strcmp(fast, ref) != 0)
+            fail_msg("%.17g: %s, Dragonbox %s", v, fast, ref);
+        if (strtod(fast, NULL) != (v == 0 ? 0 : v))
+            fail_msg("%.17g printed as %s", v, fast);
+        short_ones += n <= 8;
+    }
+    assert_true(short_ones > 1000000);                    /* the fast path was exercised */
+}
+
+/* mm_buf_nums writes an array as mm_buf_num writes its numbers one by one,
+ * commas between, non-finite numbers flagged (the first's owner kept); and
+ * near the buffer's limit it fails where they would. */
+static void an_array_should_be_written_as_its_numbers_one_by_one(void **state)
+{
+    (void)state;
+    double v[700];
+    for (int i = 0; i < 700; i++)
+        v[i] = i % 7 == 0 ? i * 0.02 : i % 7 == 1 ? -1.0 / (i + 3) : i % 7 == 2 ? 1e300 / (i + 1) : round(i * 13.7) / 100;
+    mm_buf a, b;
+    mm_buf_init(&a, 1 << 20);
+    mm_buf_init(&b, 1 << 20);
+    mm_buf_nums(&a, v, 700, "v");
+    mm_buf_char(&b, '[');
+    for (int i = 0; i < 700; i++) {
+        if (i)
+            mm_buf_char(&b, ',');
+        mm_buf_num(&b, v[i], "v");
+    }
+    mm_buf_char(&b, ']');
+    assert_int_equal(a.len, b.len);
+    assert_string_equal(a.p, b.p);
+    assert_int_equal(strlen(a.p), a.len);
+    mm_buf_reset(&a);
+    mm_buf_nums(&a, v, 0, "none");
+    assert_string_equal(a.p, "[]");
+    v[3] = NAN, v[500] = INFINITY;
+    mm_buf_reset(&a);
+    mm_buf_nums(&a, v, 700, "series y");
+    assert_true(a.nonfinite);
+    assert_string_equal(a.where, "series y");
+    assert_null(strstr(a.p, "nan"));
+    cJSON *j = cJSON_Parse(a.p);
+    assert_non_null(j);
+    assert_int_equal(cJSON_GetArraySize(j), 700);
+    cJSON_Delete(j);
+    mm_buf_free(&a);
+    mm_buf_free(&b);
+    /* a buffer that holds part of the array: failed, as one at a time */
+    for (size_t max = 200; max < 9000; max += 997) {
+        mm_buf_init(&a, max);
+        mm_buf_init(&b, max);
+        mm_buf_nums(&a, v + 4, 400, "v");
+        mm_buf_char(&b, '[');
+        for (int i = 4; i < 404; i++) {
+            if (i > 4)
+                mm_buf_char(&b, ',');
+            mm_buf_num(&b, v[i], "v");
+        }
+        mm_buf_char(&b, ']');
+        assert_int_equal(a.failed, b.failed);
+        assert_true(a.len < max);
+        mm_buf_free(&a);
+        mm_buf_free(&b);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(short_decimals_should_be_written_as_dragonbox_writes_them),
         cmocka_unit_test(numbers_should_read_back_exactly_in_the_shortest_form),
+        cmocka_unit_test(rounded_coordinates_should_be_written_as_dragonbox_writes_them),
+        cmocka_unit_test(an_array_should_be_written_as_its_numbers_one_by_one),
         cmocka_unit_test(strings_should_be_escaped_into_valid_json),
         cmocka_unit_test(a_nonfinite_number_should_be_flagged_not_written),
         cmocka_unit_test(the_buffer_should_stop_at_its_limit),

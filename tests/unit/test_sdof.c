@@ -3,6 +3,7 @@
 #include "mm_test.h"
 
 #include <float.h>
+#include <string.h>
 
 #include "mm_sdof.h"
 
@@ -217,6 +218,34 @@ static void the_step_gains_should_meet_the_classic_stability_limits(void **state
     check_rel(mm_sdof_verlet_gain(0.5, 0.1), sqrt(1 - 2 * 0.1 * 0.5), 1e-14, "damped: sqrt of the determinant");
 }
 
+/* mm_sdof_x_many is mm_sdof_x with its constants hoisted: the same numbers,
+ * bit for bit, in every regime, forced or free, with a sine force, undamped. */
+static void many_points_should_be_mm_sdof_x_exactly(void **state)
+{
+    (void)state;
+    const mm_sdof cases[] = {
+        {.m = 1, .c = 2, .k = 100, .F0 = 1, .omega = 8},                   /* the default: under */
+        {.m = 1, .c = 20, .k = 100, .F0 = 1, .omega = 8, .x0 = 0.1},       /* critical */
+        {.m = 1, .c = 1000, .k = 1, .F0 = 2, .omega = 3, .v0 = -1},        /* over */
+        {.m = 2, .c = 3, .k = 50, .F0 = 1, .G0 = 0.5, .omega = 4},         /* a sine force too */
+        {.m = 1, .c = 0, .k = 100, .F0 = 1, .omega = 9.5},                 /* undamped: its own branch */
+        {.m = 1, .c = 0.5, .k = 4, .x0 = 1, .v0 = 2},                      /* free */
+    };
+    double t[300], x[300];
+    for (int i = 0; i < 300; i++)
+        t[i] = 0.037 * i;
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        mm_sdof_props p;
+        mm_sdof_props_get(&cases[c], &p);
+        mm_sdof_x_many(&cases[c], &p, 300, t, x);
+        for (int i = 0; i < 300; i++) {
+            double one = mm_sdof_x(&cases[c], &p, t[i], NULL);
+            if (memcmp(&one, &x[i], sizeof one) != 0)
+                fail_msg("case %zu, t = %g: %.17g against mm_sdof_x's %.17g", c, t[i], x[i], one);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -229,6 +258,7 @@ int main(void)
         cmocka_unit_test(the_dynamic_stiffness_should_keep_its_digits_near_resonance),
         cmocka_unit_test(a_strongly_overdamped_block_should_keep_its_digits),
         cmocka_unit_test(the_step_gains_should_meet_the_classic_stability_limits),
+        cmocka_unit_test(many_points_should_be_mm_sdof_x_exactly),
     };
     return cmocka_run_group_tests_name("sdof", tests, NULL, NULL);
 }
