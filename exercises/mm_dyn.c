@@ -34,8 +34,14 @@ void mm_dyn_round_shape(mm_shape *s, double q)
 
 void mm_dyn_frame_times(mm_anim *a, double t_show)
 {
+    /* the last frame is t_show itself: t_show (nf - 1) / (nf - 1) rounds
+     * to one ulp above it as often as not, and an integration to t_show
+     * then refuses the frame (dyn-slider-crank answered 400 naming its
+     * solver's t_out on 2-5 % of valid requests) */
     for (int f = 0; f < a->nframes; f++)
         a->t[f] = a->nframes > 1 ? t_show * f / (a->nframes - 1) : 0;
+    if (a->nframes > 1)
+        a->t[a->nframes - 1] = t_show;
 }
 
 /* ---- dyn-robot-2link: the planned move of the two-link arm ----------------- */
