@@ -576,6 +576,22 @@ int mm_api_run(mm_solve *s)
     }
     if (rc != MM_OK && s->err.code == MM_OK)
         s->err.code = rc;
+    /* a refusal from inside the solve that names no parameter of the
+     * exercise (a solver's own argument: "t_out") is the exercise's fault,
+     * not the request's: a 500 that says so, never a 400 blaming the user */
+    if (rc != MM_OK && s->err.param[0] && mm_http_status(rc) == 400) {
+        int known = 0;
+        for (int k = 0; k < s->ex->n_params && !known; k++)
+            known = strcmp(s->ex->params[k].name, s->err.param) == 0;
+        if (!known) {
+            char param[sizeof s->err.param], msg[sizeof s->err.msg];
+            snprintf(param, sizeof param, "%s", s->err.param);
+            snprintf(msg, sizeof msg, "%s", s->err.msg);
+            mm_error_set(&s->err, MM_EINTERNAL, "", "the exercise failed inside (%s: %.120s); please report it",
+                         param, msg);
+            rc = MM_EINTERNAL;
+        }
+    }
     s->rc = rc;
     s->ran = 1;
     return rc;

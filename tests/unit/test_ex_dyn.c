@@ -449,12 +449,11 @@ static void slider_crank_energy_tolerance_should_be_within_100x_of_its_error(voi
     cJSON_Delete(d);
 }
 
-/* Sweeps of 200 draws (mdof): each failing draw, answered 200 with every
- * check passed.  dyn-slider-crank: the last animation frame rounded one ulp
- * past the integration's end (400 naming t_out); J_rod 1e-6 next to m_rod
- * 55 made Phi_q M^-1 Phi_q^T ill-conditioned (accelerations 1e-9 off, the
- * 1e-13 reference run hit max_steps: 422; the drift check 1.46x over). */
-static void slider_crank_draws_that_failed_should_answer_with_every_check_passed(void **state)
+/* Two of 200 random draws (helper mdof's sweep) answered 400 naming
+ * "t_out", not a parameter: the last animation frame, t_show (nf - 1) /
+ * (nf - 1), rounded one ulp past the end of the integration that draws it.
+ * A valid request is answered, and every check passes. */
+static void the_last_animation_frame_should_not_overshoot_the_run(void **state)
 {
     (void)state;
     static const char *const draws[] = {
@@ -464,6 +463,19 @@ static void slider_crank_draws_that_failed_should_answer_with_every_check_passed
         "r=0.22968754679978073&l=2.8637099620464417&J_crank=0.003873522130241027&m_rod=0.0376589131474293&"
         "J_rod=0.6447472782719095&m_piston=76.13679194917492&torque=367.26133092909754&omega0=892.2908189117275&"
         "t_end=0.013094741171690051&method=partitioning&alpha=521.712578965639&rtol=3.891020766129639e-08&points=502",
+    };
+    for (size_t k = 0; k < sizeof draws / sizeof draws[0]; k++)
+        cJSON_Delete(solve_ok("dyn-slider-crank", draws[k]));
+}
+
+/* dyn-slider-crank (mdof's sweep): J_rod 1e-6 next to m_rod 55 made
+ * Phi_q M^-1 Phi_q^T ill-conditioned (accelerations 1e-9 off, the 1e-13
+ * reference run hit max_steps: 422; the drift check 1.46x over).  Each is
+ * answered 200 with every check passed. */
+static void slider_crank_draws_that_failed_should_answer_with_every_check_passed(void **state)
+{
+    (void)state;
+    static const char *const draws[] = {
         "r=0.28067456610545755&l=3.222178156176322&J_crank=0.00015459072620248407&m_rod=55.110509904418166&"
         "J_rod=1.274269237867056e-06&m_piston=0.12498536910087202&torque=-822.3991554464627&"
         "omega0=973.9072262242914&t_end=0.5227145816858115&method=baumgarte&alpha=577.473320609295&"
@@ -550,6 +562,7 @@ int main(void)
         cmocka_unit_test(dyn_slider_crank_energy_bound_should_bound_the_energy_difference),
         cmocka_unit_test(dyn_extreme_error_should_find_the_vertex_of_a_sampled_parabola),
         cmocka_unit_test(slider_crank_should_coast_through_its_dead_centres),
+        cmocka_unit_test(the_last_animation_frame_should_not_overshoot_the_run),
         cmocka_unit_test(slider_crank_with_a_torque_should_gain_its_work),
         cmocka_unit_test(slider_crank_energy_tolerance_should_be_within_100x_of_its_error),
         cmocka_unit_test(slider_crank_draws_that_failed_should_answer_with_every_check_passed),

@@ -126,6 +126,36 @@ static int solve_too_big(const mm_value *in, mm_result *res, mm_error *err)
     return MM_OK;
 }
 
+static int solve_inner_refusal(const mm_value *in, mm_result *res, mm_error *err)
+{
+    (void)in, (void)res;
+    return mm_error_set(err, MM_ERANGE, "t_out", "output time outside the interval");  /* a solver's own name */
+}
+
+static int solve_param_refusal(const mm_value *in, mm_result *res, mm_error *err)
+{
+    (void)in, (void)res;
+    return mm_error_set(err, MM_ERANGE, "p", "p is too large for this model");           /* the exercise's */
+}
+
+/* A refusal from inside a solve is the request's fault only when it names
+ * a parameter of the exercise: naming a solver's own argument (as
+ * dyn-slider-crank's "t_out" did) it is a 500, never a 400 blaming the user. */
+static void an_inner_refusal_should_not_blame_the_request(void **state)
+{
+    (void)state;
+    mm_exercise ex = demo;
+    mm_buf out;
+    mm_buf_init(&out, 1 << 20);
+    ex.solve = solve_inner_refusal;
+    assert_int_equal(mm_api_solve(&ex, NULL, 0, &out), 500);
+    assert_null(strstr(out.p, "t_out"));               /* the details go to the log */
+    ex.solve = solve_param_refusal;
+    assert_int_equal(mm_api_solve(&ex, NULL, 0, &out), 400);
+    assert_non_null(strstr(out.p, "\"param\":\"p\""));
+    mm_buf_free(&out);
+}
+
 static void failed_builders_should_refuse_the_answer(void **state)
 {
     (void)state;
@@ -178,6 +208,7 @@ int main(void)
         cmocka_unit_test(families_should_name_every_member),
         cmocka_unit_test(an_answer_should_carry_declared_names_accuracy_and_animation),
         cmocka_unit_test(failed_builders_should_refuse_the_answer),
+        cmocka_unit_test(an_inner_refusal_should_not_blame_the_request),
         cmocka_unit_test(check_helpers_should_measure_against_the_reference),
         cmocka_unit_test(the_registry_should_be_well_formed),
     };
