@@ -130,10 +130,27 @@ static void state_at(const mm_slider_crank *s, int partition, const double *y, d
     }
 }
 
+/* The largest step of every run: 1/16 of a turn at the highest speed the
+ * energy balance allows (eq. 6: J_min w^2 / 2 <= T0 + |torque| W t_end with
+ * W the highest |w|, solved for W).  At a loose rtol DOP853 lets the step
+ * grow to a tenth of a turn and more; the right-hand side is smooth (it
+ * agrees with the closed form J(phi), J'(phi) to 4e-13), but h w J'/J then
+ * nears the edge of DOP853's stability region, the error estimate no
+ * longer sees the error, the run leaves its energy level and
+ * w' = -J'/(2J) w^2 carries it to infinity: "step size below round-off"
+ * (422) at rtol 1.3e-4 on a draw that rtol 1e-12 integrates in 20000
+ * steps.  0 (no cap) when nothing moves. */
+static double step_cap(const mm_slider_crank *s, double w0, double t_end, double Jmin)
+{
+    double T0 = 0.5 * mm_sc_inertia(s, 0, NULL) * w0 * w0, a = fabs(s->torque) * t_end;
+    double W = (a + sqrt(a * a + 2 * Jmin * T0)) / Jmin;
+    return W > 0 ? 2 * M_PI / (16 * W) : 0;
+}
+
 /* ---- the animation -------------------------------------------------------------- */
 
 static int animate(const mm_slider_crank *s, int partition, int ny, double t_end, double wmax, double rtol,
-                   const double *y0, mm_sc_system *sys, mm_result *res, mm_error *err)
+                   double h_max, const double *y0, mm_sc_system *sys, mm_result *res, mm_error *err)
 {
     /* 24 frames a turn, over the first 4 turns at most: the turns that follow
      * look the same, and the answer stays small */
@@ -147,6 +164,7 @@ static int animate(const mm_slider_crank *s, int partition, int ny, double t_end
     mm_ode_problem prob = {.n = (size_t)ny, .f = partition ? mm_sc_rhs_reduced : mm_sc_rhs_baumgarte,
                            .params = sys, .t0 = 0, .t_end = t_show > 0 ? t_show : t_end, .y0 = y0};
     mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol, 1000000);
+    opt.h_max = h_max;
     mm_ode_result r = {.t_out = a->t, .nout = (size_t)nf, .y_out = yf};
     int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)
@@ -225,6 +243,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_ode_problem prob = {.n = (size_t)ny, .f = partition ? mm_sc_rhs_reduced : mm_sc_rhs_baumgarte,
                            .params = &sys, .t0 = 0, .t_end = t_end, .y0 = y0};
     mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, RTOL, RTOL, 1000000);
+    opt.h_max = step_cap(&s, w0, t_end, Jmin);
     mm_ode_result r = {.t_out = so->x, .nout = (size_t)n, .y_out = y};
     int rc = mm_ode_run(&prob, &opt, &r, err);
     if (rc != MM_OK)
@@ -310,6 +329,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     mm_ode_options oalt = opt;
     oalt.rtol = oalt.atol = 0.5 * RTOL;
+    /* the run at half the tolerance needs about 1.1 times the run's steps
+     * (DOP853: rtol^(1/8)); a budget of 4 times them plus 1000 ends a run
+     * that went astray before it costs seconds (its failure is not the
+     * answer's: the reference's sample stands in) */
+    oalt.max_steps = 4 * (r.n_accepted + r.n_rejected) + 1000;
     mm_ode_result ralt = {.t_out = so->x, .nout = (size_t)n, .y_out = yalt};
     mm_error ealt = {0};
     rc = mm_ode_run(&pr, &oalt, &ralt, &ealt);
@@ -415,7 +439,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_warn(res, "the crank stopped and turned back: the torque could not carry it through");
     if (!partition && alpha == 0)
         mm_res_warn(res, "alpha = 0: nothing pulls the constraints back, and the drift grows with time");
-    return animate(&s, partition, ny, t_end, fmax(fabs(whi), fabs(wlo)), RTOL, y0, &sys, res, err);
+    return animate(&s, partition, ny, t_end, fmax(fabs(whi), fabs(wlo)), RTOL, opt.h_max, y0, &sys, res, err);
 }
 
 static const char *const references[] = {
