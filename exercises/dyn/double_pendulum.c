@@ -118,7 +118,7 @@ static int check(const mm_value *in, mm_error *err)
 
 /* The energy error one DOP853 step may make at state y (relative to Es):
  * its local error is held to atol + rtol |y_j| in each component (atol =
- * rtol), and the energy moves by the gradient of E times that, eq. (4):
+ * rtol), and the energy moves by the gradient of E times that, eq. (7):
  *   dE <= sum_j |dE/dy_j| rtol (1 + |y_j|).
  * The unwrapped angles' |y_j| is in it on purpose: DOP853 loosens its hold
  * on an angle that has turned many times, and so does this allowance. */
@@ -138,7 +138,7 @@ static double step_allowance(const mm_dpend *s, const double *y, double rtol, do
 }
 
 /* The reference run's watch over its own steps: the energy error and the
- * allowance of eq. (4) at the end of every accepted step.  mm_ode calls an
+ * allowance of eq. (7) at the end of every accepted step.  mm_ode calls an
  * event function there (and only there while it never changes sign), so a
  * g that stays 1 is an observer.  The grid points between steps are DOP853's
  * dense output, a 7th-order interpolant whose error the step control does
@@ -415,7 +415,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* checks */
     /* the energy is a first integral: its error at t is the sum of the
      * energy errors of the steps before, without amplification, each at
-     * most the allowance of eq. (4).  The first steps (the trial step, the
+     * most the allowance of eq. (7).  The first steps (the trial step, the
      * controller settling) err up to it each; the many that follow have
      * errors of both signs that add like a random walk (its excursion
      * about 0.75 sqrt(steps) of them).  So the tolerance is the allowance
