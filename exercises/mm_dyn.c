@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "mm_elliptic.h"
+#include "mm_scene.h"
 
 double mm_dyn_quantum(double size)
 {
@@ -418,4 +419,136 @@ double mm_dyn_sc_energy_bound(const mm_slider_crank *s, const double *q, const d
     double e_ref = tol_ref * ((fabs(0.5 * dJ * w * w) + fabs(s->torque)) * (1 + fabs(qr[0])) + Jb * w * (1 + w));
     *bJ += e_ref;
     return b + e_ref;
+}
+
+/* ---- dyn-double-pendulum: the animation of the twins ------------------------- */
+
+int mm_dyn_dpend_animate(const mm_dpend *s, double t_end, const double *y0, const double *y0b, double rtol,
+                         mm_result *res, mm_error *err)
+{
+    double ws, wf, t_show;
+    mm_dpend_linear(s, &ws, &wf);
+    int nf = mm_scene_frames(t_end, 2 * M_PI / mm_dyn_dpend_rate(s, y0), &t_show);
+    if (nf > 120) {                            /* 5 s of play at 24 frames a second is enough to see */
+        t_show *= 119.0 / (nf - 1);            /* the twins part; the answer stays small */
+        nf = 120;
+    }
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    double *ya = mm_res_alloc(res, (size_t)nf * 4 * sizeof *ya), *yb = mm_res_alloc(res, (size_t)nf * 4 * sizeof *yb);
+    if (!a || !ya || !yb)
+        return MM_ENOMEM;
+    mm_dyn_frame_times(a, t_show);
+    mm_ode_result r;
+    double te = a->t[nf - 1] > 0 ? a->t[nf - 1] : t_end;
+    int rc = mm_dyn_dpend_run(s, y0, te, nf, a->t, MM_ODE_DOP853, rtol, ya, &r, err);
+    if (rc == MM_OK)
+        rc = mm_dyn_dpend_run(s, y0b, te, nf, a->t, MM_ODE_DOP853, rtol, yb, &r, err);
+    if (rc != MM_OK)
+        return rc;
+    enum { NPATH = 400 };
+    int np = nf < NPATH ? nf : NPATH;
+    double L = s->l1 + s->l2, q = mm_dyn_quantum(2 * L);
+    mm_shape *pivot = mm_anim_shape(res, "pivot", MM_SHAPE_POLYGON, 1, 3);
+    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, np);
+    mm_shape *twin = mm_anim_shape(res, "twin", MM_SHAPE_LINE, nf, 3);
+    mm_shape *rods = mm_anim_shape(res, "rods", MM_SHAPE_LINE, nf, 3);
+    mm_shape *bob1 = mm_anim_shape(res, "bob1", MM_SHAPE_CIRCLE, nf, 1);
+    mm_shape *bob2 = mm_anim_shape(res, "bob2", MM_SHAPE_CIRCLE, nf, 1);
+    if (!pivot || !path || !twin || !rods || !bob1 || !bob2)
+        return MM_ENOMEM;
+    pivot->style = "ground";
+    const double tri[3][2] = {{0, 0}, {-0.04, 0.05}, {0.04, 0.05}};
+    for (int k = 0; k < 3; k++)
+        pivot->x[k] = tri[k][0] * L, pivot->y[k] = tri[k][1] * L;
+    twin->style = "highlight";
+    bob1->radius = 0.04 * L * cbrt(s->m1 / fmax(s->m1, s->m2));
+    bob2->radius = 0.04 * L * cbrt(s->m2 / fmax(s->m1, s->m2));
+    for (int f = 0; f < nf; f++) {
+        double x1, y1, x2, y2;
+        mm_dpend_points(s, ya[4 * f], ya[4 * f + 1], &x1, &y1, &x2, &y2);
+        rods->x[3 * f] = 0, rods->y[3 * f] = 0, rods->x[3 * f + 1] = x1, rods->y[3 * f + 1] = y1;
+        rods->x[3 * f + 2] = x2, rods->y[3 * f + 2] = y2;
+        bob1->x[f] = x1, bob1->y[f] = y1, bob2->x[f] = x2, bob2->y[f] = y2;
+        if (f < np)
+            path->x[f] = x2, path->y[f] = y2;
+        mm_dpend_points(s, yb[4 * f], yb[4 * f + 1], &x1, &y1, &x2, &y2);
+        twin->x[3 * f] = 0, twin->y[3 * f] = 0, twin->x[3 * f + 1] = x1, twin->y[3 * f + 1] = y1;
+        twin->x[3 * f + 2] = x2, twin->y[3 * f + 2] = y2;
+    }
+    mm_dyn_round_shape(path, q);
+    mm_dyn_round_shape(twin, q);
+    mm_dyn_round_shape(rods, q);
+    mm_dyn_round_shape(bob1, q);
+    mm_dyn_round_shape(bob2, q);
+    a->bounds[0] = a->bounds[1] = -1.1 * L;
+    a->bounds[2] = a->bounds[3] = 1.1 * L;
+    return MM_OK;
+}
+
+/* ---- dyn-slider-crank: the state and the animation ------------------------------ */
+
+void mm_dyn_sc_state(const mm_slider_crank *s, int partition, const double *y, double *q, double *qd)
+{
+    if (partition) {
+        mm_sc_assemble(s, y[0], y[1], q, qd);
+    } else {
+        for (int j = 0; j < MM_SC_NQ; j++)
+            q[j] = y[j], qd[j] = y[MM_SC_NQ + j];
+    }
+}
+
+int mm_dyn_sc_animate(const mm_slider_crank *s, int partition, int ny, double t_end, double wmax, double rtol,
+                      double h_max, const double *y0, mm_sc_system *sys, mm_result *res, mm_error *err)
+{
+    /* 24 frames a turn, over the first 4 turns at most: the turns that follow
+     * look the same, and the answer stays small */
+    double t_show, per = wmax > 0 ? 2 * M_PI / wmax : 0;
+    int nf = mm_scene_frames(fmin(t_end, per > 0 ? 4 * per : t_end), per, &t_show);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    double *yf = mm_res_alloc(res, (size_t)nf * (size_t)ny * sizeof *yf);
+    if (!a || !yf)
+        return MM_ENOMEM;
+    mm_dyn_frame_times(a, t_show);
+    mm_ode_problem prob = {.n = (size_t)ny, .f = partition ? mm_sc_rhs_reduced : mm_sc_rhs_baumgarte,
+                           .params = sys, .t0 = 0, .t_end = t_show > 0 ? t_show : t_end, .y0 = y0};
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol, 1000000);
+    opt.h_max = h_max;
+    mm_ode_result r = {.t_out = a->t, .nout = (size_t)nf, .y_out = yf};
+    int rc = mm_ode_run(&prob, &opt, &r, err);
+    if (rc != MM_OK)
+        return rc;
+    double R = s->r, L = s->l, q = mm_dyn_quantum(10 * (R + L));
+    mm_shape *guide = mm_anim_shape(res, "guide", MM_SHAPE_LINE, 1, 4);
+    mm_shape *fly = mm_anim_shape(res, "flywheel", MM_SHAPE_CIRCLE, 1, 1);
+    mm_shape *crank = mm_anim_shape(res, "crank", MM_SHAPE_LINE, nf, 2);
+    mm_shape *mark = mm_anim_shape(res, "rim mark", MM_SHAPE_CIRCLE, nf, 1);
+    mm_shape *rod = mm_anim_shape(res, "rod", MM_SHAPE_LINE, nf, 2);
+    mm_shape *piston = mm_anim_shape(res, "piston", MM_SHAPE_POLYGON, nf, MM_SCENE_BOX_POINTS);
+    if (!guide || !fly || !crank || !mark || !rod || !piston)
+        return MM_ENOMEM;
+    double hp = 0.5 * R, wp = 0.7 * R;                         /* piston height and width */
+    guide->style = "ground";
+    const double gx[4] = {L - R - 0.5 * wp, L + R + 0.5 * wp, L + R + 0.5 * wp, L - R - 0.5 * wp};
+    const double gy[4] = {0.5 * hp, 0.5 * hp, -0.5 * hp, -0.5 * hp};
+    for (int k = 0; k < 4; k++)
+        guide->x[k] = gx[k], guide->y[k] = gy[k] * 1.15;
+    fly->x[0] = fly->y[0] = 0;
+    fly->radius = 1.3 * R;
+    mark->radius = 0.12 * R;
+    for (int f = 0; f < nf; f++) {
+        double qq[MM_SC_NQ], qd[MM_SC_NQ];
+        mm_dyn_sc_state(s, partition, yf + (size_t)f * (size_t)ny, qq, qd);
+        double ax = R * cos(qq[0]), ay = R * sin(qq[0]);
+        crank->x[2 * f] = 0, crank->y[2 * f] = 0, crank->x[2 * f + 1] = ax, crank->y[2 * f + 1] = ay;
+        mark->x[f] = -1.1 * R * cos(qq[0]), mark->y[f] = -1.1 * R * sin(qq[0]);
+        rod->x[2 * f] = ax, rod->y[2 * f] = ay, rod->x[2 * f + 1] = qq[4], rod->y[2 * f + 1] = 0;
+        mm_scene_box(piston, f, qq[4], 0, wp, hp, 0);
+    }
+    mm_dyn_round_shape(guide, q);
+    mm_dyn_round_shape(crank, q);
+    mm_dyn_round_shape(mark, q);
+    mm_dyn_round_shape(rod, q);
+    mm_dyn_round_shape(piston, q);
+    a->bounds[0] = -1.45 * R, a->bounds[1] = -1.45 * R, a->bounds[2] = L + R + 0.6 * wp, a->bounds[3] = 1.45 * R;
+    return MM_OK;
 }

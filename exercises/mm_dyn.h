@@ -135,4 +135,21 @@ int mm_dyn_dpend_run(const mm_dpend *s, const double *y0, double t_end, int n, c
  * units of wf.  Cannot fail. */
 double mm_dyn_dpend_distance(const double *a, const double *b, double wf);
 
+/* dyn-double-pendulum's animation: the pendulum from y0 and its twin from
+ * y0b (DOP853 at rtol), the lower bob's path, over about one slow period
+ * or 120 frames at most. */
+int mm_dyn_dpend_animate(const mm_dpend *s, double t_end, const double *y0, const double *y0b, double rtol,
+                         mm_result *res, mm_error *err);
+
+/* dyn-slider-crank's state at one grid point y as (q, qd), whatever the
+ * method: the five coordinates themselves (Baumgarte), or assembled from
+ * the crank's angle and speed (partitioning).  Cannot fail. */
+void mm_dyn_sc_state(const mm_slider_crank *s, int partition, const double *y, double *q, double *qd);
+
+/* dyn-slider-crank's animation: the system sys integrated again from y0
+ * (ny states, DOP853 at rtol, steps up to h_max) on 24 frames a turn at
+ * the speed wmax, over the first 4 turns at most. */
+int mm_dyn_sc_animate(const mm_slider_crank *s, int partition, int ny, double t_end, double wmax, double rtol,
+                      double h_max, const double *y0, mm_sc_system *sys, mm_result *res, mm_error *err);
+
 #endif

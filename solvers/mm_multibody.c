@@ -360,3 +360,58 @@ int mm_sc_rhs_reduced(double t, const double *y, double *dy, void *params)
     dy[1] = qdd[0];
     return rc;
 }
+
+/* The energy error one DOP853 step may make at state y (see mm_multibody.h):
+ * its local error is held to atol + rtol |y_j| in each component (atol =
+ * rtol), and the energy moves by the gradient of E times that, eq. (7):
+ *   dE <= sum_j |dE/dy_j| rtol (1 + |y_j|).
+ * The unwrapped angles' |y_j| is in it on purpose: DOP853 loosens its hold
+ * on an angle that has turned many times, and so does this allowance. */
+double mm_dpend_energy_allowance(const mm_dpend *s, const double *y, double rtol)
+{
+    double M = s->m1 + s->m2, k = s->m2 * s->l1 * s->l2, d = y[0] - y[1], w1 = y[2], w2 = y[3];
+    double g[4] = {
+        -k * w1 * w2 * sin(d) + M * s->g * s->l1 * sin(y[0]),
+        k * w1 * w2 * sin(d) + s->m2 * s->g * s->l2 * sin(y[1]),
+        M * s->l1 * s->l1 * w1 + k * w2 * cos(d),
+        s->m2 * s->l2 * s->l2 * w2 + k * w1 * cos(d),
+    };
+    double a = 0;
+    for (int j = 0; j < 4; j++)
+        a += fabs(g[j]) * rtol * (1 + fabs(y[j]));
+    return a;
+}
+
+/* The exponential regime of a separation d(t) on the grid x (from 1e3 d0,
+ * past the start's transient, to 1e-3, before saturation) and the least
+ * squares of ln d = a + lambda t over it; se: the slope's standard error.
+ * Returns 0 when there is no regime to fit (then only *i_lo, *i_hi set). */
+int mm_growth_fit(const double *x, const double *d, int n, double d0, int *i_lo, int *i_hi, double *lam,
+                  double *a0, double *se)
+{
+    *i_lo = *i_hi = -1;
+    for (int i = 0; i < n; i++) {
+        if (*i_lo < 0 && d[i] > 1e3 * d0)
+            *i_lo = i;
+        if (*i_hi < 0 && d[i] > 1e-3)
+            *i_hi = i;
+    }
+    if (*i_lo > 0 && *i_hi < 0)
+        *i_hi = n;                                 /* still growing at the end of the window */
+    if (!(*i_lo > 0 && *i_hi > *i_lo + 8))
+        return 0;
+    double st = 0, sl = 0, stt = 0, stl = 0;
+    int m = *i_hi - *i_lo;
+    for (int i = *i_lo; i < *i_hi; i++) {
+        double t = x[i], l = log(d[i]);
+        st += t, sl += l, stt += t * t, stl += t * l;
+    }
+    double den = m * stt - st * st, ss = 0;
+    *lam = (m * stl - st * sl) / den, *a0 = (sl - *lam * st) / m;
+    for (int i = *i_lo; i < *i_hi; i++) {
+        double e = log(d[i]) - *a0 - *lam * x[i];
+        ss += e * e;
+    }
+    *se = sqrt(ss / (m - 2) * m / den);
+    return 1;
+}

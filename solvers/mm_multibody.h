@@ -168,4 +168,18 @@ typedef struct mm_sc_system {
 int mm_sc_rhs_baumgarte(double t, const double *y, double *dy, void *params);
 int mm_sc_rhs_reduced(double t, const double *y, double *dy, void *params);
 
+/* The energy error one DOP853 step at relative tolerance rtol (atol = rtol)
+ * may make at state y = (theta1, theta2, w1, w2): the gradient of E times
+ * the per-component error allowance, sum_j |dE/dy_j| rtol (1 + |y_j|) [J].
+ * Cannot fail. */
+double mm_dpend_energy_allowance(const mm_dpend *s, const double *y, double rtol);
+
+/* The exponential regime of a separation d(t) sampled on x[0..n) (from
+ * 1e3 d0, past the start's transient, to 1e-3, before saturation) and the
+ * least-squares line ln d = a0 + lam t over it, se the slope's standard
+ * error.  Returns 1 with all set, or 0 when there is no regime of more than
+ * 8 points to fit (only *i_lo, *i_hi set; -1 when not reached). */
+int mm_growth_fit(const double *x, const double *d, int n, double d0, int *i_lo, int *i_hi, double *lam,
+                  double *a0, double *se);
+
 #endif

@@ -116,27 +116,6 @@ static int check(const mm_value *in, mm_error *err)
 
 /* ---- runs ---------------------------------------------------------------------- */
 
-/* The energy error one DOP853 step may make at state y (relative to Es):
- * its local error is held to atol + rtol |y_j| in each component (atol =
- * rtol), and the energy moves by the gradient of E times that, eq. (7):
- *   dE <= sum_j |dE/dy_j| rtol (1 + |y_j|).
- * The unwrapped angles' |y_j| is in it on purpose: DOP853 loosens its hold
- * on an angle that has turned many times, and so does this allowance. */
-static double step_allowance(const mm_dpend *s, const double *y, double rtol, double Es)
-{
-    double M = s->m1 + s->m2, k = s->m2 * s->l1 * s->l2, d = y[0] - y[1], w1 = y[2], w2 = y[3];
-    double g[4] = {
-        -k * w1 * w2 * sin(d) + M * s->g * s->l1 * sin(y[0]),
-        k * w1 * w2 * sin(d) + s->m2 * s->g * s->l2 * sin(y[1]),
-        M * s->l1 * s->l1 * w1 + k * w2 * cos(d),
-        s->m2 * s->l2 * s->l2 * w2 + k * w1 * cos(d),
-    };
-    double a = 0;
-    for (int j = 0; j < 4; j++)
-        a += fabs(g[j]) * rtol * (1 + fabs(y[j]));
-    return a / Es;
-}
-
 /* The reference run's watch over its own steps: the energy error and the
  * allowance of eq. (7) at the end of every accepted step.  mm_ode calls an
  * event function there (and only there while it never changes sign), so a
@@ -154,7 +133,7 @@ static int watch_step(double t, const double *y, double *g, void *p)
     (void)t;
     ref_watch *w = p;
     w->drift = fmax(w->drift, fabs(mm_dpend_energy(&w->s, y, NULL) - w->E0) / w->Es);
-    w->allow = fmax(w->allow, step_allowance(&w->s, y, RTOL_REF, w->Es));
+    w->allow = fmax(w->allow, mm_dpend_energy_allowance(&w->s, y, RTOL_REF) / w->Es);   /* eq. (7) */
     *g = 1;
     return 0;
 }
@@ -186,104 +165,6 @@ static int observe(long step, double t, const double *y, void *ctx)
         o->k++;
     }
     return 0;
-}
-
-/* The exponential regime of a separation d(t) on the grid x (from 1e3 d0,
- * past the start's transient, to 1e-3, before saturation) and the least
- * squares of ln d = a + lambda t over it; se: the slope's standard error.
- * Returns 0 when there is no regime to fit (then only *i_lo, *i_hi set). */
-static int fit_growth(const double *x, const double *d, int n, double d0, int *i_lo, int *i_hi, double *lam,
-                      double *a0, double *se)
-{
-    *i_lo = *i_hi = -1;
-    for (int i = 0; i < n; i++) {
-        if (*i_lo < 0 && d[i] > 1e3 * d0)
-            *i_lo = i;
-        if (*i_hi < 0 && d[i] > 1e-3)
-            *i_hi = i;
-    }
-    if (*i_lo > 0 && *i_hi < 0)
-        *i_hi = n;                                 /* still growing at the end of the window */
-    if (!(*i_lo > 0 && *i_hi > *i_lo + 8))
-        return 0;
-    double st = 0, sl = 0, stt = 0, stl = 0;
-    int m = *i_hi - *i_lo;
-    for (int i = *i_lo; i < *i_hi; i++) {
-        double t = x[i], l = log(d[i]);
-        st += t, sl += l, stt += t * t, stl += t * l;
-    }
-    double den = m * stt - st * st, ss = 0;
-    *lam = (m * stl - st * sl) / den, *a0 = (sl - *lam * st) / m;
-    for (int i = *i_lo; i < *i_hi; i++) {
-        double e = log(d[i]) - *a0 - *lam * x[i];
-        ss += e * e;
-    }
-    *se = sqrt(ss / (m - 2) * m / den);
-    return 1;
-}
-
-/* ---- the animation ------------------------------------------------------------- */
-
-static int animate(const mm_dpend *s, double t_end, const double *y0, const double *y0b, mm_result *res,
-                   mm_error *err)
-{
-    double ws, wf, t_show;
-    mm_dpend_linear(s, &ws, &wf);
-    int nf = mm_scene_frames(t_end, 2 * M_PI / mm_dyn_dpend_rate(s, y0), &t_show);
-    if (nf > 120) {                            /* 5 s of play at 24 frames a second is enough to see */
-        t_show *= 119.0 / (nf - 1);            /* the twins part; the answer stays small */
-        nf = 120;
-    }
-    mm_anim *a = mm_res_animation(res, nf, "t", "s");
-    double *ya = mm_res_alloc(res, (size_t)nf * 4 * sizeof *ya), *yb = mm_res_alloc(res, (size_t)nf * 4 * sizeof *yb);
-    if (!a || !ya || !yb)
-        return MM_ENOMEM;
-    mm_dyn_frame_times(a, t_show);
-    mm_ode_result r;
-    double te = a->t[nf - 1] > 0 ? a->t[nf - 1] : t_end;
-    int rc = mm_dyn_dpend_run(s, y0, te, nf, a->t, MM_ODE_DOP853, RTOL_TWIN, ya, &r, err);
-    if (rc == MM_OK)
-        rc = mm_dyn_dpend_run(s, y0b, te, nf, a->t, MM_ODE_DOP853, RTOL_TWIN, yb, &r, err);
-    if (rc != MM_OK)
-        return rc;
-    enum { NPATH = 400 };
-    int np = nf < NPATH ? nf : NPATH;
-    double L = s->l1 + s->l2, q = mm_dyn_quantum(2 * L);
-    mm_shape *pivot = mm_anim_shape(res, "pivot", MM_SHAPE_POLYGON, 1, 3);
-    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, np);
-    mm_shape *twin = mm_anim_shape(res, "twin", MM_SHAPE_LINE, nf, 3);
-    mm_shape *rods = mm_anim_shape(res, "rods", MM_SHAPE_LINE, nf, 3);
-    mm_shape *bob1 = mm_anim_shape(res, "bob1", MM_SHAPE_CIRCLE, nf, 1);
-    mm_shape *bob2 = mm_anim_shape(res, "bob2", MM_SHAPE_CIRCLE, nf, 1);
-    if (!pivot || !path || !twin || !rods || !bob1 || !bob2)
-        return MM_ENOMEM;
-    pivot->style = "ground";
-    const double tri[3][2] = {{0, 0}, {-0.04, 0.05}, {0.04, 0.05}};
-    for (int k = 0; k < 3; k++)
-        pivot->x[k] = tri[k][0] * L, pivot->y[k] = tri[k][1] * L;
-    twin->style = "highlight";
-    bob1->radius = 0.04 * L * cbrt(s->m1 / fmax(s->m1, s->m2));
-    bob2->radius = 0.04 * L * cbrt(s->m2 / fmax(s->m1, s->m2));
-    for (int f = 0; f < nf; f++) {
-        double x1, y1, x2, y2;
-        mm_dpend_points(s, ya[4 * f], ya[4 * f + 1], &x1, &y1, &x2, &y2);
-        rods->x[3 * f] = 0, rods->y[3 * f] = 0, rods->x[3 * f + 1] = x1, rods->y[3 * f + 1] = y1;
-        rods->x[3 * f + 2] = x2, rods->y[3 * f + 2] = y2;
-        bob1->x[f] = x1, bob1->y[f] = y1, bob2->x[f] = x2, bob2->y[f] = y2;
-        if (f < np)
-            path->x[f] = x2, path->y[f] = y2;
-        mm_dpend_points(s, yb[4 * f], yb[4 * f + 1], &x1, &y1, &x2, &y2);
-        twin->x[3 * f] = 0, twin->y[3 * f] = 0, twin->x[3 * f + 1] = x1, twin->y[3 * f + 1] = y1;
-        twin->x[3 * f + 2] = x2, twin->y[3 * f + 2] = y2;
-    }
-    mm_dyn_round_shape(path, q);
-    mm_dyn_round_shape(twin, q);
-    mm_dyn_round_shape(rods, q);
-    mm_dyn_round_shape(bob1, q);
-    mm_dyn_round_shape(bob2, q);
-    a->bounds[0] = a->bounds[1] = -1.1 * L;
-    a->bounds[2] = a->bounds[3] = 1.1 * L;
-    return MM_OK;
 }
 
 /* ---- solve ------------------------------------------------------------------------ */
@@ -485,7 +366,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     for (int i = 0; i < n; i++)
         dsep[i] = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
-    if (fit_growth(ssep->x, dsep, n, d0, &i_lo, &i_hi, &lam, &a0, &se)) {
+    if (mm_growth_fit(ssep->x, dsep, n, d0, &i_lo, &i_hi, &lam, &a0, &se)) {
         double y0c[4] = {y0[0] + sep, y0[1], y0[2], y0[3]};
         rc = mm_dyn_dpend_run(&s, y0c, t_ly, n, ssep->x, MM_ODE_DOP853, RTOL_TWIN, yb, &rb, err);
         if (rc != MM_OK)
@@ -494,7 +375,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         for (int i = 0; i < n; i++)
             dsep[i] = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
         double e_lam = 2 * se;
-        if (fit_growth(ssep->x, dsep, n, d0c, &jl, &jh, &lam_c, &a0_c, &se_c))
+        if (mm_growth_fit(ssep->x, dsep, n, d0c, &jl, &jh, &lam_c, &a0_c, &se_c))
             e_lam = fmax(e_lam, fabs(lam - lam_c));
         mm_res_scalar_err(res, O_LYAP, lam, e_lam, MM_ERR_ESTIMATE);
         mm_series *sf = mm_res_series(res, O_SEP_FIT, 2);
@@ -520,7 +401,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (dp_drift > 10 * sy_drift && t_end * wf > 200)
         mm_res_warn(res, "over this run Dormand-Prince's energy error (%.2g) grew past the symplectic "
                          "method's (%.2g), which stays bounded", dp_drift, sy_drift);
-    return animate(&s, t_end, y0, y0b, res, err);
+    return mm_dyn_dpend_animate(&s, t_end, y0, y0b, RTOL_TWIN, res, err);
 }
 
 static const char *const references[] = {

@@ -119,20 +119,8 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* The state at grid point i as (q, qd), whatever the method. */
-static void state_at(const mm_slider_crank *s, int partition, const double *y, double *q, double *qd)
-{
-    if (partition) {
-        mm_sc_assemble(s, y[0], y[1], q, qd);
-    } else {
-        for (int j = 0; j < MM_SC_NQ; j++)
-            q[j] = y[j], qd[j] = y[MM_SC_NQ + j];
-    }
-}
-
 /* The largest step of every run: 1/16 of a turn at the highest speed the
- * energy balance allows (eq. 6: J_min w^2 / 2 <= T0 + |torque| W t_end with
- * W the highest |w|, solved for W).  At a loose rtol DOP853 lets the step
+ * energy balance allows (speed_bound, eq. 6).  At a loose rtol DOP853 lets the step
  * grow to a tenth of a turn and more; the right-hand side is smooth (it
  * agrees with the closed form J(phi), J'(phi) to 4e-13), but h w J'/J then
  * nears the edge of DOP853's stability region, the error estimate no
@@ -142,67 +130,8 @@ static void state_at(const mm_slider_crank *s, int partition, const double *y, d
  * steps.  0 (no cap) when nothing moves. */
 static double step_cap(const mm_slider_crank *s, double w0, double t_end, double Jmin)
 {
-    double T0 = 0.5 * mm_sc_inertia(s, 0, NULL) * w0 * w0, a = fabs(s->torque) * t_end;
-    double W = (a + sqrt(a * a + 2 * Jmin * T0)) / Jmin;
+    double W = speed_bound(s, w0, t_end, Jmin);
     return W > 0 ? 2 * M_PI / (16 * W) : 0;
-}
-
-/* ---- the animation -------------------------------------------------------------- */
-
-static int animate(const mm_slider_crank *s, int partition, int ny, double t_end, double wmax, double rtol,
-                   double h_max, const double *y0, mm_sc_system *sys, mm_result *res, mm_error *err)
-{
-    /* 24 frames a turn, over the first 4 turns at most: the turns that follow
-     * look the same, and the answer stays small */
-    double t_show, per = wmax > 0 ? 2 * M_PI / wmax : 0;
-    int nf = mm_scene_frames(fmin(t_end, per > 0 ? 4 * per : t_end), per, &t_show);
-    mm_anim *a = mm_res_animation(res, nf, "t", "s");
-    double *yf = mm_res_alloc(res, (size_t)nf * (size_t)ny * sizeof *yf);
-    if (!a || !yf)
-        return MM_ENOMEM;
-    mm_dyn_frame_times(a, t_show);
-    mm_ode_problem prob = {.n = (size_t)ny, .f = partition ? mm_sc_rhs_reduced : mm_sc_rhs_baumgarte,
-                           .params = sys, .t0 = 0, .t_end = t_show > 0 ? t_show : t_end, .y0 = y0};
-    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol, 1000000);
-    opt.h_max = h_max;
-    mm_ode_result r = {.t_out = a->t, .nout = (size_t)nf, .y_out = yf};
-    int rc = mm_ode_run(&prob, &opt, &r, err);
-    if (rc != MM_OK)
-        return rc;
-    double R = s->r, L = s->l, q = mm_dyn_quantum(10 * (R + L));
-    mm_shape *guide = mm_anim_shape(res, "guide", MM_SHAPE_LINE, 1, 4);
-    mm_shape *fly = mm_anim_shape(res, "flywheel", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *crank = mm_anim_shape(res, "crank", MM_SHAPE_LINE, nf, 2);
-    mm_shape *mark = mm_anim_shape(res, "rim mark", MM_SHAPE_CIRCLE, nf, 1);
-    mm_shape *rod = mm_anim_shape(res, "rod", MM_SHAPE_LINE, nf, 2);
-    mm_shape *piston = mm_anim_shape(res, "piston", MM_SHAPE_POLYGON, nf, MM_SCENE_BOX_POINTS);
-    if (!guide || !fly || !crank || !mark || !rod || !piston)
-        return MM_ENOMEM;
-    double hp = 0.5 * R, wp = 0.7 * R;                         /* piston height and width */
-    guide->style = "ground";
-    const double gx[4] = {L - R - 0.5 * wp, L + R + 0.5 * wp, L + R + 0.5 * wp, L - R - 0.5 * wp};
-    const double gy[4] = {0.5 * hp, 0.5 * hp, -0.5 * hp, -0.5 * hp};
-    for (int k = 0; k < 4; k++)
-        guide->x[k] = gx[k], guide->y[k] = gy[k] * 1.15;
-    fly->x[0] = fly->y[0] = 0;
-    fly->radius = 1.3 * R;
-    mark->radius = 0.12 * R;
-    for (int f = 0; f < nf; f++) {
-        double qq[MM_SC_NQ], qd[MM_SC_NQ];
-        state_at(s, partition, yf + (size_t)f * (size_t)ny, qq, qd);
-        double ax = R * cos(qq[0]), ay = R * sin(qq[0]);
-        crank->x[2 * f] = 0, crank->y[2 * f] = 0, crank->x[2 * f + 1] = ax, crank->y[2 * f + 1] = ay;
-        mark->x[f] = -1.1 * R * cos(qq[0]), mark->y[f] = -1.1 * R * sin(qq[0]);
-        rod->x[2 * f] = ax, rod->y[2 * f] = ay, rod->x[2 * f + 1] = qq[4], rod->y[2 * f + 1] = 0;
-        mm_scene_box(piston, f, qq[4], 0, wp, hp, 0);
-    }
-    mm_dyn_round_shape(guide, q);
-    mm_dyn_round_shape(crank, q);
-    mm_dyn_round_shape(mark, q);
-    mm_dyn_round_shape(rod, q);
-    mm_dyn_round_shape(piston, q);
-    a->bounds[0] = -1.45 * R, a->bounds[1] = -1.45 * R, a->bounds[2] = L + R + 0.6 * wp, a->bounds[3] = 1.45 * R;
-    return MM_OK;
 }
 
 /* ---- solve ------------------------------------------------------------------------ */
@@ -265,7 +194,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double fa_max = 0, fb_max = 0, n_max = 0, wE_worst = 0, TJ_worst = 0, mom_worst = 0, mom_scale = 0, wsum = 0;
     for (int i = 0; i < n; i++) {
         double q[MM_SC_NQ], qd[MM_SC_NQ], qdd[MM_SC_NQ], lam[MM_SC_NC], Phi[MM_SC_NC];
-        state_at(&s, partition, y + (size_t)i * (size_t)ny, q, qd);
+        mm_dyn_sc_state(&s, partition, y + (size_t)i * (size_t)ny, q, qd);
         rc = mm_sc_accel(&s, q, qd, partition ? 0 : alpha, partition ? 0 : alpha, qdd, lam);
         if (rc != MM_OK)
             return mm_error_set(err, rc, "l", "the constraints became dependent: the rod stood vertical");
@@ -399,7 +328,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             an = fmax(an, fmax(fabs(fabs(sn->y[i]) - fabs(lam[3])), 2 * fabs(fabs(la[3]) - fabs(lam[3]))));
         }
         double qm[MM_SC_NQ], qdm[MM_SC_NQ], bJ;
-        state_at(&s, partition, y + (size_t)i * (size_t)ny, qm, qdm);
+        mm_dyn_sc_state(&s, partition, y + (size_t)i * (size_t)ny, qm, qdm);
         eb = fmax(eb, mm_dyn_sc_energy_bound(&s, qm, qdm, q, qd, tol_ref, &bJ));
         ebJ = fmax(ebJ, bJ);
         absn[i] = fabs(sn->y[i]);
@@ -439,7 +368,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_warn(res, "the crank stopped and turned back: the torque could not carry it through");
     if (!partition && alpha == 0)
         mm_res_warn(res, "alpha = 0: nothing pulls the constraints back, and the drift grows with time");
-    return animate(&s, partition, ny, t_end, fmax(fabs(whi), fabs(wlo)), RTOL, opt.h_max, y0, &sys, res, err);
+    return mm_dyn_sc_animate(&s, partition, ny, t_end, fmax(fabs(whi), fabs(wlo)), RTOL, opt.h_max, y0, &sys, res, err);
 }
 
 static const char *const references[] = {

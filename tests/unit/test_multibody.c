@@ -175,6 +175,48 @@ static void slider_crank_reduced_speed_should_follow_the_energy(void **state)
     }
 }
 
+/* The energy allowance of one DOP853 step is sum_j |dE/dy_j| rtol (1 + |y_j|):
+ * its gradient against central differences of mm_dpend_energy (error
+ * h^2 E'''/6, about 1e-9 of the gradient at h = 1e-5). */
+static void energy_allowance_should_weigh_the_gradient_of_the_energy(void **state)
+{
+    (void)state;
+    const mm_dpend s = {.m1 = 2, .m2 = 0.7, .l1 = 1.3, .l2 = 0.8, .g = 9.81};
+    const double y[4] = {0.9, -2.1, 1.7, -0.4}, rtol = 1e-8, h = 1e-5;
+    double want = 0;
+    for (int j = 0; j < 4; j++) {
+        double yp[4], ym[4];
+        for (int k = 0; k < 4; k++)
+            yp[k] = ym[k] = y[k];
+        yp[j] += h, ym[j] -= h;
+        double g = (mm_dpend_energy(&s, yp, NULL) - mm_dpend_energy(&s, ym, NULL)) / (2 * h);
+        want += fabs(g) * rtol * (1 + fabs(y[j]));
+    }
+    check_rel(mm_dpend_energy_allowance(&s, y, rtol), want, 1e-8, "allowance against a differenced gradient");
+}
+
+/* The growth fit on an exact exponential d = d0 e^(lam t): the slope to
+ * rounding, a standard error of nothing, the window where d passes 1e3 d0
+ * and 1e-3; no fit when the separation never grows. */
+static void growth_fit_should_recover_an_exact_exponential(void **state)
+{
+    (void)state;
+    enum { N = 400 };
+    double x[N], d[N], d0 = 1e-12, lam_true = 1.7, lam, a0, se;
+    for (int i = 0; i < N; i++)
+        x[i] = 0.05 * i, d[i] = d0 * exp(lam_true * x[i]);
+    int lo, hi;
+    assert_int_equal(mm_growth_fit(x, d, N, d0, &lo, &hi, &lam, &a0, &se), 1);
+    check_rel(lam, lam_true, 1e-12, "slope of ln d");
+    check_rel(a0, log(d0), 1e-12, "intercept");
+    assert_true(se < 1e-10);
+    assert_true(d[lo] > 1e3 * d0 && d[lo - 1] <= 1e3 * d0 && d[hi] > 1e-3 && d[hi - 1] <= 1e-3);
+    for (int i = 0; i < N; i++)
+        d[i] = d0;                                         /* no growth: nothing to fit */
+    assert_int_equal(mm_growth_fit(x, d, N, d0, &lo, &hi, &lam, &a0, &se), 0);
+    assert_int_equal(lo, -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -185,6 +227,8 @@ int main(void)
         cmocka_unit_test(robot_static_torque_should_match_the_moment_of_gravity),
         cmocka_unit_test(slider_crank_assembly_should_satisfy_the_constraints),
         cmocka_unit_test(slider_crank_reduced_speed_should_follow_the_energy),
+        cmocka_unit_test(energy_allowance_should_weigh_the_gradient_of_the_energy),
+        cmocka_unit_test(growth_fit_should_recover_an_exact_exponential),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
