@@ -118,12 +118,47 @@ static double homogeneous(double a, double lambda, double wn2, double A, double 
     return e * (A * (C + a * S) + dv * S);
 }
 
+/* The damped (or free) response: the steady state X cos(w t - lag) plus
+ * the homogeneous part that meets the initial conditions.  What does not
+ * depend on t is computed once (damped_form), so that a plot of n points
+ * and one point give the same numbers. */
+typedef struct damped_form {
+    double a, lambda, wn2, w, X, lag, x0h, v0h;
+    int forced;
+} damped_form;
+
+static damped_form damped_prep(const mm_sdof *s, const mm_sdof_props *p)
+{
+    double wn = p->omega_n;
+    damped_form d = {.a = p->zeta * wn,                          /* decay rate c / 2m */
+                     .lambda = p->regime == MM_SDOF_CRITICAL ? 0.0 : wn * wn * (1 - p->zeta) * (1 + p->zeta),
+                     .wn2 = wn * wn, .w = s->omega, .X = p->X, .x0h = s->x0, .v0h = s->v0,
+                     .forced = s->F0 != 0.0 || s->G0 != 0.0};
+    if (d.forced) {
+        d.lag = p->phase - atan2(-s->G0, s->F0);               /* x_p = X cos(w t - lag) */
+        d.x0h -= d.X * cos(-d.lag);
+        d.v0h -= -d.X * d.w * sin(-d.lag);
+    }
+    return d;
+}
+
+static double damped_x(const damped_form *d, double t, double *v)
+{
+    double xp = 0, vp = 0;
+    if (d->forced) {
+        xp = d->X * cos(d->w * t - d->lag);
+        if (v)                                     /* a plot asks for x alone */
+            vp = -d->X * d->w * sin(d->w * t - d->lag);
+    }
+    double vh, xh = homogeneous(d->a, d->lambda, d->wn2, d->x0h, d->v0h, t, &vh);
+    if (v)
+        *v = vh + vp;
+    return xh + xp;
+}
+
 double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
 {
     double wn = p->omega_n, w = s->omega;
-    double a = p->zeta * wn;                                   /* decay rate c / 2m */
-    double lambda = p->regime == MM_SDOF_CRITICAL ? 0.0 : wn * wn * (1 - p->zeta) * (1 + p->zeta);
-
     if (s->c == 0.0 && (s->F0 != 0.0 || s->G0 != 0.0)) {
         /* undamped: x = x0 C + v0 S + F0/m g(t) + G0/m h(t), with
          *   g = (cos w t - cos wn t)/(wn^2 - w^2) = t sin(sm t) sinc(d t) / (2 sm),
@@ -145,46 +180,20 @@ double mm_sdof_x(const mm_sdof *s, const mm_sdof_props *p, double t, double *v)
         return xh + (s->F0 * g + s->G0 * h) / s->m;
     }
 
-    /* damped (or free): steady state plus the homogeneous part that meets the
-     * initial conditions */
-    double xp0 = 0, vp0 = 0, xp = 0, vp = 0;
-    if (s->F0 != 0.0 || s->G0 != 0.0) {
-        double lag = p->phase - atan2(-s->G0, s->F0);  /* x_p = X cos(w t - lag) */
-        xp0 = p->X * cos(-lag);
-        vp0 = -p->X * w * sin(-lag);
-        xp = p->X * cos(w * t - lag);
-        if (v)                                     /* a plot asks for x alone */
-            vp = -p->X * w * sin(w * t - lag);
-    }
-    double vh, xh = homogeneous(a, lambda, wn * wn, s->x0 - xp0, s->v0 - vp0, t, &vh);
-    if (v)
-        *v = vh + vp;
-    return xh + xp;
+    damped_form d = damped_prep(s, p);
+    return damped_x(&d, t, v);
 }
 
 void mm_sdof_x_many(const mm_sdof *s, const mm_sdof_props *p, int n, const double *t, double *x)
 {
-    int forced = s->F0 != 0.0 || s->G0 != 0.0;
-    if (s->c == 0.0 && forced) {
+    if (s->c == 0.0 && (s->F0 != 0.0 || s->G0 != 0.0)) {
         for (int i = 0; i < n; i++)
             x[i] = mm_sdof_x(s, p, t[i], NULL);
         return;
     }
-    /* mm_sdof_x's damped branch, its constants once: the same operations,
-     * so the same numbers */
-    double wn = p->omega_n, w = s->omega;
-    double a = p->zeta * wn;
-    double lambda = p->regime == MM_SDOF_CRITICAL ? 0.0 : wn * wn * (1 - p->zeta) * (1 + p->zeta);
-    double xp0 = 0, vp0 = 0, lag = 0;
-    if (forced) {
-        lag = p->phase - atan2(-s->G0, s->F0);
-        xp0 = p->X * cos(-lag);
-        vp0 = -p->X * w * sin(-lag);
-    }
-    for (int i = 0; i < n; i++) {
-        double xp = forced ? p->X * cos(w * t[i] - lag) : 0;
-        x[i] = homogeneous(a, lambda, wn * wn, s->x0 - xp0, s->v0 - vp0, t[i], NULL) + xp;
-    }
+    damped_form d = damped_prep(s, p);
+    for (int i = 0; i < n; i++)
+        x[i] = damped_x(&d, t[i], NULL);
 }
 
 /* Written as x'' = F/m - (c/m) x' - (k/m) x: the quotients do not depend on
