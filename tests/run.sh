@@ -42,6 +42,8 @@ if [[ -z "${ASAN:-}" && -z "${MM_NO_BROWSER:-}" && -f tests/web/run.mjs ]]; then
   log=test-output/browser.log
   node tests/web/run.mjs > "$log" 2>&1
   rc=$?
+  # a failure is named wherever it falls in the log, not only in its tail
+  grep -E -A8 '^FAIL ' "$log" | head -60 | sed 's/^/   /'
   tail -n 5 "$log" | sed 's/^/   /'
   p=$(grep -Eo '^browser: [0-9]+ passed' "$log" | awk '{print $2}' | tail -1)
   f=$(grep -Eo '^browser: [0-9]+ passed, [0-9]+ failed' "$log" | awk '{print $4}' | tail -1)

@@ -40,7 +40,14 @@ for name in "${names[@]}"; do
   # nice 19 holds only inside a session: with the kernel's autogroups a
   # session competes as a whole at nice 0.  So the fuzzer gets a session of
   # its own (setsid) and that session is made nice 19 as well (where the
-  # kernel has autogroups), leaving the caller's session as it was
+  # kernel has autogroups), leaving the caller's session as it was.  The
+  # autogroup is the one of the session the process is in when it is
+  # written: wait until setsid has made the fuzzer a session of its own
+  # (its session id is its pid), or the caller's session is reniced instead
+  for _ in $(seq 100); do
+    [[ "$(awk '{print $6}' "/proc/$pid/stat" 2>/dev/null)" == "$pid" ]] && break
+    sleep 0.05
+  done
   echo 19 > "/proc/$pid/autogroup" 2>/dev/null || true
   used=0
   while kill -0 "$pid" 2>/dev/null; do
