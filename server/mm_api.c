@@ -221,13 +221,7 @@ static void write_nums(mm_buf *b, const double *v, int n, const char *where)
 /* one array of point coordinates per frame */
 static void write_frames(mm_buf *b, const double *v, const mm_shape *s, const char *where)
 {
-    mm_buf_char(b, '[');
-    for (int f = 0; f < s->frames; f++) {
-        if (f)
-            mm_buf_char(b, ',');
-        write_nums(b, v + (size_t)f * (size_t)s->npts, s->npts, where);
-    }
-    mm_buf_char(b, ']');
+    mm_buf_rows(b, v, s->frames > 0 ? (size_t)s->frames : 0, s->npts > 0 ? (size_t)s->npts : 0, where);
 }
 
 /* bounds from the shapes when the exercise gave none: every point, every

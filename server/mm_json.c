@@ -171,38 +171,76 @@ void mm_buf_num(mm_buf *b, double v, const char *where)
     b->len += (size_t)mm_dtoa(v, b->p + b->len);     /* NUL-terminated by mm_dtoa */
 }
 
-void mm_buf_nums(mm_buf *b, const double *v, size_t n, const char *where)
+/* [v0,...] the general way: room for CHUNK numbers at a time, and near the
+ * buffer's end one number at a time, to fail where mm_buf_num would */
+static void nums_chunked(mm_buf *b, const double *v, size_t n, const char *where)
 {
-    enum { CHUNK = 256 };                            /* room reserved for this many at a time */
+    enum { CHUNK = 256 };
     mm_buf_char(b, '[');
     for (size_t i = 0; i < n; i += CHUNK) {
         size_t m = n - i < CHUNK ? n - i : CHUNK;
         if (b->failed)
             return;
-        if (b->len + m * (MM_DTOA_BUFSIZE + 1) + 1 > b->max) {   /* near the end: one at a time, */
-            for (size_t j = i; j < i + m; j++) {                  /* to fail where mm_buf_num would */
+        if (b->len + m * (MM_DTOA_BUFSIZE + 1) + MM_DTOA_SLACK + 1 > b->max) {
+            for (size_t j = i; j < i + m; j++) {
                 if (j)
                     mm_buf_char(b, ',');
                 mm_buf_num(b, v[j], where);
             }
             continue;
         }
-        if (!reserve(b, m * (MM_DTOA_BUFSIZE + 1)))
+        if (!reserve(b, m * (MM_DTOA_BUFSIZE + 1) + MM_DTOA_SLACK))
             return;
-        char *w = b->p + b->len;
-        for (size_t j = i; j < i + m; j++) {
-            if (j)
-                *w++ = ',';
-            if (isfinite(v[j])) {
-                w += mm_dtoa(v[j], w);
-            } else {
-                nonfinite(b, where);
-                *w++ = '0';
-            }
-        }
-        *w = '\0';
+        int bad = 0;
+        char *w = mm_dtoa_list(v + i, m, i == 0, b->p + b->len, &bad);
+        if (bad)
+            nonfinite(b, where);
         b->len = (size_t)(w - b->p);
     }
+    mm_buf_char(b, ']');
+}
+
+/* lead (a ',' or nothing) then [v0,...].  An answer is mostly short
+ * arrays (an animation's frames: a few to a few dozen coordinates each, a
+ * thousand arrays), so the usual array is written with one reservation,
+ * brackets and comma included; what would come near the buffer's limit
+ * goes the general way, which gives the same text and fails where it
+ * always did. */
+static void nums_lead(mm_buf *b, const double *v, size_t n, const char *where, int lead)
+{
+    enum { SHORT = 256 };
+    size_t need = n * (MM_DTOA_BUFSIZE + 1) + MM_DTOA_SLACK + 3;
+    if (n > SHORT || b->failed || b->len + need + 1 > b->max) {
+        if (lead)
+            mm_buf_char(b, ',');
+        nums_chunked(b, v, n, where);
+        return;
+    }
+    if (!reserve(b, need))
+        return;
+    char *w = b->p + b->len;
+    *w = ',';
+    w += lead != 0;
+    *w++ = '[';
+    int bad = 0;
+    w = mm_dtoa_list(v, n, 1, w, &bad);
+    *w++ = ']';
+    *w = '\0';
+    if (bad)
+        nonfinite(b, where);
+    b->len = (size_t)(w - b->p);
+}
+
+void mm_buf_nums(mm_buf *b, const double *v, size_t n, const char *where)
+{
+    nums_lead(b, v, n, where, 0);
+}
+
+void mm_buf_rows(mm_buf *b, const double *v, size_t rows, size_t cols, const char *where)
+{
+    mm_buf_char(b, '[');
+    for (size_t r = 0; r < rows; r++)
+        nums_lead(b, v + r * cols, cols, where, r > 0);
     mm_buf_char(b, ']');
 }
 

@@ -36,6 +36,9 @@ void mm_buf_strn(mm_buf *b, const char *s, size_t n);
 void mm_buf_num(mm_buf *b, double v, const char *where);
 /* [v0,v1,...] as mm_buf_num writes each, in one pass. */
 void mm_buf_nums(mm_buf *b, const double *v, size_t n, const char *where);
+/* [[row 0],[row 1],...] of a rows x cols array stored row after row, each
+ * row as mm_buf_nums writes it. */
+void mm_buf_rows(mm_buf *b, const double *v, size_t rows, size_t cols, const char *where);
 void mm_buf_int(mm_buf *b, long long v);
 /* "key": */
 void mm_buf_key(mm_buf *b, const char *key);

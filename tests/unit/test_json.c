@@ -3,6 +3,8 @@
 #include "mm_test.h"
 
 #include <cJSON.h>
+#include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -175,6 +177,137 @@ static void rounded_coordinates_should_be_written_as_dragonbox_writes_them(void 
     assert_true(short_ones > 1000000);                    /* the fast path was exercised */
 }
 
+/* mm_dtoa lays out Dragonbox's digits itself (fixed or exponent notation,
+ * the point inside, before or after the digits): it must write what
+ * {fmt}'s own "{}" writes for every finite double.  Random bit patterns
+ * (every exponent, subnormals included), every power of two and ten and
+ * their neighbours, integers around 2^53, the switch points of the layout
+ * (1e-5 / 1e-4: exponent below -4; 1e16: exponent 16 or more), the fast
+ * path's edges (1e-4, 4.5e9, 2^32 10^-6 steps) and decimals of 1 to 17
+ * digits at every scale. */
+static uint64_t next_bits(uint64_t *x)
+{
+    *x ^= *x << 13, *x ^= *x >> 7, *x ^= *x << 17;         /* xorshift64 */
+    return *x;
+}
+
+static long compare_with_fmt(double v, long *bad)
+{
+    char fast[MM_DTOA_BUFSIZE], ref[MM_DTOA_BUFSIZE];
+    int n = mm_dtoa(v, fast);
+    mm_dtoa_fmt(v, ref);
+    if ((strcmp(fast, ref) != 0 || n != (int)strlen(ref)) && (*bad)++ < 10)
+        print_message("%.17g (%a): %s, {fmt} %s\n", v, v, fast, ref);
+    return 1;
+}
+
+static void every_double_should_be_laid_out_as_fmt_lays_it_out(void **state)
+{
+    (void)state;
+    long bad = 0, n = 0;
+    uint64_t x = 0x2545F4914F6CDD1DULL;
+    for (int i = 0; i < 1500000; i++) {                   /* any bits */
+        uint64_t bits = next_bits(&x);
+        double v;
+        memcpy(&v, &bits, sizeof v);
+        if (isfinite(v))
+            n += compare_with_fmt(v, &bad);
+    }
+    for (int e = -1075; e < 1024; e++) {                   /* powers of two, neighbours */
+        double v = ldexp(1, e);
+        n += compare_with_fmt(v, &bad) + compare_with_fmt(-v, &bad);
+        n += compare_with_fmt(nextafter(v, 0), &bad) + compare_with_fmt(nextafter(v, INFINITY), &bad);
+    }
+    for (int e = -325; e <= 308; e++) {                    /* powers of ten, neighbours, multiples */
+        double p = pow(10, e);
+        for (int k = 1; k < 20; k++)
+            n += compare_with_fmt(k * p, &bad) + compare_with_fmt(-k * p, &bad);
+        double up = p, down = p;
+        for (int k = 0; k < 3; k++) {
+            up = nextafter(up, INFINITY), down = nextafter(down, 0);
+            n += compare_with_fmt(up, &bad) + compare_with_fmt(down, &bad);
+        }
+    }
+    static const double edge[] = {1e-5, 9.999999999999999e-06, 1.0000000000000001e-05, 1e-4,
+                                  9.9999999999999991e-05, 1.0000000000000002e-04, 1e15, 1e16,
+                                  9999999999999998, 1.0000000000000002e16, 123456789012345678.0,
+                                  4.5e9, 4294967296e-6, 4294.967296, 4294967295.999999, 4499999999.999999,
+                                  5e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
+                                  0.1, 0.2, 0.30000000000000004, 1.0 / 3.0, 2.0 / 3.0, -0.0, 0.0};
+    for (size_t i = 0; i < sizeof edge / sizeof edge[0]; i++)
+        n += compare_with_fmt(edge[i], &bad) + compare_with_fmt(-edge[i], &bad);
+    for (long long i = -30000; i <= 30000; i++) {          /* integers near 0 and 2^53 */
+        n += compare_with_fmt((double)i, &bad);
+        n += compare_with_fmt((double)((1LL << 53) + i), &bad);
+        n += compare_with_fmt((double)((1LL << 53) + i) * 1e-6, &bad);   /* near the fast path's top */
+        n += compare_with_fmt((double)i * 1e-7, &bad);                  /* 1e-7 steps: fast path and not */
+    }
+    static const double p10[] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10,
+                                 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18};
+    for (int i = 0; i < 1500000; i++) {                   /* d digits at scale 10^s */
+        uint64_t r = next_bits(&x);
+        int d = 1 + (int)(r % 17), sc = (int)((r >> 5) % 19);
+        long long m = (long long)((r >> 11) % (uint64_t)p10[d]);
+        double v = (r >> 10 & 1) ? (double)m / p10[sc] : (double)m * p10[sc] * 1e-20 * 1e12;
+        if (r >> 9 & 1)
+            v = -v;
+        n += compare_with_fmt(v, &bad);
+    }
+    print_message("%ld doubles, %ld written otherwise than {fmt} writes them\n", n, bad);
+    assert_int_equal(bad, 0);
+}
+
+/* An animation's coordinates are written one frame a row: mm_buf_rows
+ * gives what the rows one by one give, brackets and commas between, empty
+ * rows and a missing array included, flags a non-finite number, and fails
+ * near the buffer's limit where mm_buf_nums would. */
+static void rows_should_be_written_as_their_arrays_one_by_one(void **state)
+{
+    (void)state;
+    double v[6 * 7];
+    for (int i = 0; i < 42; i++)
+        v[i] = i % 3 ? round(i * 1234.5) / 1e4 : -1.0 / (i + 7);
+    for (size_t cols = 0; cols <= 7; cols += 7) {
+        for (size_t max = 64; max < 2000; max += 37) {
+            mm_buf a, b;
+            mm_buf_init(&a, max);
+            mm_buf_init(&b, max);
+            mm_buf_puts(&a, "x:");
+            mm_buf_puts(&b, "x:");
+            mm_buf_rows(&a, v, 6, cols, "r");
+            mm_buf_char(&b, '[');
+            for (size_t r = 0; r < 6; r++) {
+                if (r)
+                    mm_buf_char(&b, ',');
+                mm_buf_nums(&b, v + r * cols, cols, "r");
+            }
+            mm_buf_char(&b, ']');
+            assert_int_equal(a.failed, b.failed);
+            if (!a.failed) {
+                assert_int_equal(a.len, b.len);
+                assert_string_equal(a.p, b.p);
+            }
+            mm_buf_free(&a);
+            mm_buf_free(&b);
+        }
+    }
+    mm_buf a;
+    mm_buf_init(&a, 1 << 16);
+    mm_buf_rows(&a, v, 0, 7, "r");
+    assert_string_equal(a.p, "[]");
+    mm_buf_reset(&a);
+    v[9] = NAN;
+    mm_buf_rows(&a, v, 6, 7, "rows");
+    assert_true(a.nonfinite);
+    assert_string_equal(a.where, "rows");
+    cJSON *j = cJSON_Parse(a.p);
+    assert_non_null(j);
+    assert_int_equal(cJSON_GetArraySize(j), 6);
+    assert_int_equal(cJSON_GetArraySize(cJSON_GetArrayItem(j, 1)), 7);
+    cJSON_Delete(j);
+    mm_buf_free(&a);
+}
+
 /* mm_buf_nums writes an array as mm_buf_num writes its numbers one by one,
  * commas between, non-finite numbers flagged (the first's owner kept); and
  * near the buffer's limit it fails where they would. */
@@ -238,7 +371,9 @@ int main(void)
         cmocka_unit_test(short_decimals_should_be_written_as_dragonbox_writes_them),
         cmocka_unit_test(numbers_should_read_back_exactly_in_the_shortest_form),
         cmocka_unit_test(rounded_coordinates_should_be_written_as_dragonbox_writes_them),
+        cmocka_unit_test(every_double_should_be_laid_out_as_fmt_lays_it_out),
         cmocka_unit_test(an_array_should_be_written_as_its_numbers_one_by_one),
+        cmocka_unit_test(rows_should_be_written_as_their_arrays_one_by_one),
         cmocka_unit_test(strings_should_be_escaped_into_valid_json),
         cmocka_unit_test(a_nonfinite_number_should_be_flagged_not_written),
         cmocka_unit_test(the_buffer_should_stop_at_its_limit),
