@@ -24,9 +24,8 @@ extern "C" int mm_dtoa_fmt(double v, char *buf)
 }
 
 namespace {
-#ifndef MM_INL
+// inlined into mm_dtoa_list's loop whatever the compiler's estimate
 #define MM_INL inline __attribute__((always_inline))
-#endif
 
 const char digit_pairs[] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
@@ -75,31 +74,43 @@ inline void put_digits(char *w, uint64_t x, int n)
 
 // Most numbers of an answer are short decimals: plot abscissae (0.02 k),
 // animation coordinates rounded to a few places (0.0195).  Such a v is
-// m 10^-k with m an integer not ending in 0, k <= 6.  It is found in one
-// product: M = |v| 10^6 (below 4.5e15, so an int64 holds it exactly) must
-// be a whole number, and M / 10^6, the correctly rounded value of the
-// decimal (M and 10^6 are exact), must equal |v|, so that the decimal reads
-// back to v; M's trailing zeros then leave the fraction (m = M / 10^(6-k)).
-// It is then the shortest text: another decimal as short or shorter lies on
-// the grid 10^-6 too, at least 10^-6 from this one, which is more than an
-// ulp of v when |v| < 2^52 10^-6 (4.5e9), so it cannot read back to v.
-// {fmt} writes such numbers in fixed notation when 1e-4 <= |v| < 1e16, as
-// here, so the text is the one Dragonbox would give (the tests compare the
-// two on millions of numbers).  When |v| 10^6 rounds off a whole number
-// although v is a short decimal (possible when 10^6 crosses fewer binades
-// than it spans) the number simply goes to Dragonbox.
+// m 10^-k with m an integer not ending in 0, k <= 6, i.e. M 10^-6 with M
+// whole.  It is found in one product: M = |v| 10^6 rounded to a whole
+// number, and then M / 10^6, the correctly rounded value of the decimal
+// M 10^-6 (M below 4.5e15 < 2^52 and 10^6 are exact), must equal |v|: the
+// decimal reads back to v.  M's trailing zeros then leave the fraction.
+// It is then the shortest text, the one Dragonbox gives: every decimal as
+// short or shorter lies on the grid 10^-6 too (one with a digit below
+// 10^-6 has at least 8 digits after |v|'s first, this one at most 7), at
+// least 10^-6 from this one, which is more than an ulp of v when
+// |v| < 2^52 10^-6 (4.5e9), so it cannot read back to v.  {fmt} writes
+// such numbers in fixed notation when 1e-4 <= |v| < 1e16, as here (the
+// tests compare the two on millions of numbers).  Near 4.5e9, |v| 10^6 can
+// round to a neighbour of the M of a short v (its errors add up to 0.73):
+// the check fails and the number simply goes to Dragonbox.
 //
 // A list of such numbers goes as fast as few instructions a number allow
 // (the processor overlaps the numbers), so: one unsigned comparison of the
 // bits for 1e-4 <= |v| < 4.5e9 (which also turns away 0, infinities and
-// NaN), the sign from the sign bit, the whole-number test without
-// conversions to and from int64 (adding 2^52 and taking it off again
-// changes nothing; M is then in the low bits of m + 2^52), the fraction's
-// six digits in one word and their count from its last non-zero byte, no
-// branch on the digits.  Returns NULL, having written nothing, when the
-// fast path does not apply; else the end.  Writes up to 20 bytes from w.
+// NaN), the sign from the sign bit, M rounded by adding 2^52 (M is then in
+// the low bits; no conversions to and from int64), the fraction's six
+// digits as two table entries of three in one word and their count from
+// its last non-zero byte, no branch on the digits.  Returns NULL, having
+// written nothing, when the fast path does not apply; else the end.
+// Writes up to 20 bytes from w.
 const uint64_t lo_bits = 0x3F1A36E2EB1C432DULL;      // 1e-4
 const uint64_t hi_bits = 0x41F0C388D0000000ULL;      // 4.5e9
+
+// "000" to "999" as the low three bytes of a word, first digit lowest
+struct digit_triples {
+    uint32_t t[1000];
+    constexpr digit_triples() : t()
+    {
+        for (uint32_t i = 0; i < 1000; i++)
+            t[i] = ('0' + i / 100) | ('0' + i / 10 % 10) << 8 | ('0' + i % 10) << 16;
+    }
+};
+constexpr digit_triples triples;
 
 MM_INL char *short_decimal(double v, char *w)
 {
@@ -110,10 +121,8 @@ MM_INL char *short_decimal(double v, char *w)
         return nullptr;
     double a;
     std::memcpy(&a, &abits, sizeof a);
-    // M / 10^6 is the same number as m / 10^k, so the same correctly
-    // rounded quotient: checked before the zeros are known
-    double m = a * 1e6, big = m + 0x1p52;
-    if (big - 0x1p52 != m || m / 1e6 != a)
+    double big = a * 1e6 + 0x1p52;           // M + 2^52, M = |v| 10^6 rounded
+    if ((big - 0x1p52) / 1e6 != a)
         return nullptr;
     uint64_t M;
     std::memcpy(&M, &big, sizeof M);
@@ -134,18 +143,15 @@ MM_INL char *short_decimal(double v, char *w)
     }
     if (fr == 0)
         return w;
-    // the fraction as six digits (three pairs), cut after the last non-zero one
-    uint32_t h = fr / 100, p0 = fr / 10000, p1 = h - 100 * p0, p2 = fr - 100 * h;
+    // the fraction as six digits, cut after the last non-zero one
     w[0] = '.';
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-    uint16_t q0, q1, q2;                      // first digit in the low byte
-    std::memcpy(&q0, digit_pairs + 2 * p0, 2);
-    std::memcpy(&q1, digit_pairs + 2 * p1, 2);
-    std::memcpy(&q2, digit_pairs + 2 * p2, 2);
-    uint64_t six = q0 | static_cast<uint64_t>(q1) << 16 | static_cast<uint64_t>(q2) << 32;
+    uint32_t hi = fr / 1000;
+    uint64_t six = triples.t[hi] | static_cast<uint64_t>(triples.t[fr - 1000 * hi]) << 24;
     std::memcpy(w + 1, &six, 8);
     int k = (71 - __builtin_clzll(six ^ 0x303030303030ULL)) / 8;   // six != "000000": fr > 0
 #else
+    uint32_t h = fr / 100, p0 = fr / 10000, p1 = h - 100 * p0, p2 = fr - 100 * h;
     int k = 6 - (fr % 10 == 0) - (p2 == 0) - (fr % 1000 == 0) - (p1 == 0 && p2 == 0) - (fr % 100000 == 0);
     put2(w + 1, p0), put2(w + 3, p1), put2(w + 5, p2);
 #endif
