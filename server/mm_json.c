@@ -28,7 +28,8 @@ void mm_buf_reset(mm_buf *b)
     b->where[0] = '\0';
 }
 
-static int reserve(mm_buf *b, size_t extra)
+/* the growth, out of line: reserve's common case is the one comparison */
+static int grow(mm_buf *b, size_t extra)
 {
     if (b->failed)
         return 0;
@@ -52,6 +53,15 @@ static int reserve(mm_buf *b, size_t extra)
     b->p = p;
     b->cap = cap;
     return 1;
+}
+
+/* Room for extra bytes and a NUL; 0 (and failed set) when there is none.
+ * Inline: most calls are a few bytes into room already there. */
+static inline int reserve(mm_buf *b, size_t extra)
+{
+    if (!b->failed && b->len + extra + 1 <= b->cap)
+        return 1;
+    return grow(b, extra);
 }
 
 void mm_buf_put(mm_buf *b, const char *s, size_t n)
