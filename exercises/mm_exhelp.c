@@ -190,6 +190,41 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
     return MM_OK;
 }
 
+int mm_ex_sdof_flow_check(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_result *res)
+{
+    enum { J = 64 };
+    if (p->resonant)
+        return MM_OK;
+    double w = mm_sdof_fastest_rate(s, p), tau = t_end / J, Phi[4];
+    int q;
+    mm_sdof_flow(s, w, tau, Phi, &q);
+    double lg = p->phase - atan2(-s->G0, s->F0);          /* x_p = X cos(omega t - lg) */
+    double worst = 0, big = 0, x0 = 0, u0 = 0;
+    for (int j = 0; j <= J; j++) {
+        double t = tau * j, v, x = mm_sdof_x(s, p, t, &v), arg = s->omega * t - lg;
+        double hx = x - p->X * cos(arg), hu = (v + p->X * s->omega * sin(arg)) / w;   /* y - y_p, scaled */
+        big = fmax(big, fabs(x) + fabs(v) / w + fabs(p->X) * (1 + s->omega / w));
+        if (j > 0) {
+            double ex = hx - (Phi[0] * x0 + Phi[1] * u0), eu = hu - (Phi[2] * x0 + Phi[3] * u0);
+            worst = fmax(worst, fabs(ex) + fabs(eu));
+        }
+        x0 = hx, u0 = hu;
+    }
+    /* the closed form's own rounding: its cosines carry about an eps of
+     * their argument, up to t_end w radians, and its sums a few eps of the
+     * terms' sizes; carried by Phi (norm at most ~1 for a damped motion)
+     * and Phi's rounding, an eps of ||Phi|| a squaring (over 1000 random
+     * draws the worst used 0.2 of this) */
+    double nphi = fmax(fabs(Phi[0]) + fabs(Phi[1]), fabs(Phi[2]) + fabs(Phi[3]));
+    double tol = (1 + nphi) * 4 * DBL_EPSILON * (1 + t_end * w) * big + (q + 25) * DBL_EPSILON * nphi * big;
+    mm_res_check_abs(res, "closed form vs the flow of eq. (1): x - x_p carried over each of 64 steps by "
+                          "exp(tau A), worst |dx| + |dv|/w [m]", worst, 0, tol);
+    double v, x = mm_sdof_x(s, p, 0, &v);
+    return mm_res_check_abs(res, "closed form at t = 0 vs x0, v0: |dx| + |dv|/w [m]",
+                            fabs(x - s->x0) + fabs(v - s->v0) / w, 0,
+                            mm_ex_roundoff(0, fabs(s->x0) + fabs(s->v0) / w + 2 * fabs(p->X)));
+}
+
 int mm_ex_sdof_plot(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_series *sx, mm_series *se,
                     mm_result *res, mm_error *err)
 {

@@ -97,6 +97,17 @@ int mm_ex_sdof_response(const mm_sdof *s, const mm_sdof_props *p, double t_end, 
 int mm_ex_sdof_plot(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_series *sx, mm_series *se,
                     mm_result *res, mm_error *err);
 
+/* The closed form of s checked against eq. (1) without an integrator, at
+ * J + 1 = 65 equally spaced times over [0, t_end] (J intervals of tau):
+ * (x, v) from mm_sdof_x less the steady state (x_p, v_p) of mm_sdof_props
+ * must be carried from each time to the next by the flow of the free
+ * equation over tau (mm_sdof_flow, a matrix exponential that uses none of
+ * the closed form's formulas), and x(0), v(0) must be x0, v0: two checks
+ * at round-off (mm_ex_roundoff over the span, of the terms' sizes).  Not
+ * at undamped resonance (no steady state; nothing is checked).  Returns
+ * MM_OK or MM_ENOMEM (recorded in res). */
+int mm_ex_sdof_flow_check(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_result *res);
+
 /* Round-off in a time response over `radians` of the fastest motion of
  * largest size peak: 16 eps (1 + radians) peak (the closed form's cosines
  * carry eps of their argument; an integrator adds eps a step). */

@@ -210,6 +210,42 @@ int mm_sdof_rhs(double t, const double *y, double *dydt, void *params)
     return 0;
 }
 
+void mm_sdof_flow(const mm_sdof *s, double w, double tau, double Phi[4], int *squarings)
+{
+    /* B = tau A / 2^q with ||B||_inf <= 1/2; its Taylor series to the term
+     * below eps of the sum (at most 25 terms: 2^-25 / 25! is far below),
+     * then squared q times */
+    double A[4] = {0, tau * w, -tau * (s->k / s->m) / w, -tau * s->c / s->m};
+    double norm = fmax(fabs(A[1]), fabs(A[2]) + fabs(A[3]));
+    int q = 0;
+    if (norm > 0.5)
+        q = (int)ceil(log2(norm / 0.5));
+    double sc = ldexp(1.0, -q);
+    for (int i = 0; i < 4; i++)
+        A[i] *= sc;
+    double E[4] = {1, 0, 0, 1}, T[4] = {1, 0, 0, 1};
+    for (int j = 1; j <= 25; j++) {
+        double U[4] = {(T[0] * A[0] + T[1] * A[2]) / j, (T[0] * A[1] + T[1] * A[3]) / j,
+                       (T[2] * A[0] + T[3] * A[2]) / j, (T[2] * A[1] + T[3] * A[3]) / j};
+        for (int i = 0; i < 4; i++) {
+            T[i] = U[i];
+            E[i] += U[i];
+        }
+        if (fabs(T[0]) + fabs(T[1]) + fabs(T[2]) + fabs(T[3]) <= 1e-17 * (fabs(E[0]) + fabs(E[3])))
+            break;
+    }
+    for (int r = 0; r < q; r++) {
+        double U[4] = {E[0] * E[0] + E[1] * E[2], E[0] * E[1] + E[1] * E[3], E[2] * E[0] + E[3] * E[2],
+                       E[2] * E[1] + E[3] * E[3]};
+        for (int i = 0; i < 4; i++)
+            E[i] = U[i];
+    }
+    for (int i = 0; i < 4; i++)
+        Phi[i] = E[i];
+    if (squarings)
+        *squarings = q;
+}
+
 double mm_sdof_energy(const mm_sdof *s, double x, double v)
 {
     return 0.5 * s->m * v * v + 0.5 * s->k * x * x;

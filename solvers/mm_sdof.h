@@ -84,6 +84,16 @@ void mm_sdof_x_many(const mm_sdof *s, const mm_sdof_props *p, int n, const doubl
  * params a const mm_sdof *.  Returns 0. */
 int mm_sdof_rhs(double t, const double *y, double *dydt, void *params);
 
+/* The flow of the free equation m x'' + c x' + k x = 0 over a time tau >= 0,
+ * in the scaled state u = (x, v/w) (w > 0 a rate, e.g. mm_sdof_fastest_rate,
+ * so that both entries are lengths): u(t + tau) = Phi u(t), Phi row-major
+ * 2 x 2.  Computed as exp(tau A) of A = [[0, w], [-k/(m w), -c/m]] by
+ * scaling and squaring of its Taylor series, using none of the regime
+ * formulas of mm_sdof_x: a second route to the same motion.  *squarings
+ * (may be NULL) receives the number of squarings (each may add an eps of
+ * ||Phi|| to its rounding).  Cannot fail. */
+void mm_sdof_flow(const mm_sdof *s, double w, double tau, double Phi[4], int *squarings);
+
 /* The mechanical energy 1/2 m v^2 + 1/2 k x^2 [J].  Cannot fail. */
 double mm_sdof_energy(const mm_sdof *s, double x, double v);
 

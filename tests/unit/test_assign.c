@@ -262,7 +262,7 @@ static void the_instructor_should_get_a_class_csv_and_an_answer_key(void **state
     for (const char *p = csv.p; (p = strstr(p, "\r\n")); p += 2)
         rows++;
     assert_int_equal(rows, 4);
-    assert_non_null(strstr(csv.p, "student,m,k,c,F0,omega,x0,v0,t_end,points,X [mm],phase [deg],omega_n [rad/s]\r\n"));
+    assert_non_null(strstr(csv.p, "student,m,k,c,F0,omega,x0,v0,t_end,points,integrator,X [mm],phase [deg],omega_n [rad/s]\r\n"));
     assert_int_equal(mm_assign_key_json(a, "bob", &key), 200);
     cJSON *k = cJSON_Parse(key.p);
     double X = cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(k, "expected"), 0), "value")->valuedouble;

@@ -3,6 +3,7 @@
 #include "mm_test.h"
 
 #include <cJSON.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -189,6 +190,39 @@ static void check_helpers_should_measure_against_the_reference(void **state)
     mm_result_release(&r);
 }
 
+/* the flow check of the 1-DOF closed form passes on the true motion and
+ * fails when the closed form's free part is wrong by a little: a natural
+ * frequency or a damping ratio off by 1e-9, or a model whose k is 2e-9
+ * stiffer than the one the closed form was built for.  (A wrong steady
+ * state is not its business: the closed form is built on it, so the
+ * residual of X cos(wt - phase) in eq. (1), a check of its own, finds it.) */
+static void the_flow_check_should_catch_a_closed_form_off_by_1e_9(void **state)
+{
+    (void)state;
+    mm_sdof s = {.m = 1, .c = 2, .k = 100, .F0 = 1, .omega = 8, .x0 = 0.003, .v0 = -0.2};
+    mm_sdof_props p;
+    mm_sdof_props_get(&s, &p);
+    for (int bad = 0; bad < 4; bad++) {
+        mm_result r;
+        mm_result_init(&r, 1 << 20);
+        mm_sdof_props q = p;
+        mm_sdof t = s;
+        if (bad == 1)
+            q.omega_n *= 1 + 1e-9;
+        if (bad == 2)
+            q.zeta *= 1 + 1e-9;
+        if (bad == 3)
+            t.k *= 1 + 2e-9;
+        assert_int_equal(mm_ex_sdof_flow_check(&t, &q, 10, &r), MM_OK);
+        const mm_check_node *c = r.checks.head;
+        assert_non_null(c);
+        assert_int_equal(fabs(c->value - c->reference) <= c->tolerance, bad == 0);
+        if (bad > 0)
+            assert_true(c->value > 30 * c->tolerance);
+        mm_result_release(&r);
+    }
+}
+
 static void the_registry_should_be_well_formed(void **state)
 {
     (void)state;
@@ -210,6 +244,7 @@ int main(void)
         cmocka_unit_test(failed_builders_should_refuse_the_answer),
         cmocka_unit_test(an_inner_refusal_should_not_blame_the_request),
         cmocka_unit_test(check_helpers_should_measure_against_the_reference),
+        cmocka_unit_test(the_flow_check_should_catch_a_closed_form_off_by_1e_9),
         cmocka_unit_test(the_registry_should_be_well_formed),
     };
     return cmocka_run_group_tests_name("result", tests, NULL, NULL);

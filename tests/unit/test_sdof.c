@@ -63,6 +63,49 @@ static void critical_damping_should_match_its_textbook_form(void **state)
     }
 }
 
+/* the flow over tau against the textbook motions in every regime, written
+ * here from their formulas: undamped rotation, critical damping's
+ * (1 + w t) e^(-w t), overdamped two exponentials; far past one radian
+ * (many squarings) and at tau = 0 */
+static void the_flow_should_carry_the_free_motion_in_every_regime(void **state)
+{
+    (void)state;
+    for (int pass = 0; pass < 3; pass++) {
+        double tau = pass == 0 ? 0.0137 : pass == 1 ? 1.7 : 300;   /* 0.137, 17 and 3000 rad */
+        double Phi[4], w = 10;
+        int q;
+        /* undamped, wn = 10 = w: a rotation by wn tau */
+        mm_sdof s = {.m = 1, .c = 0, .k = 100};
+        mm_sdof_flow(&s, w, tau, Phi, &q);
+        double c = cos(10 * tau), sn = sin(10 * tau), e = 64 * DBL_EPSILON * (q + 1) * (1 + 10 * tau / 64);
+        check_abs(Phi[0], c, e, "undamped Phi_xx");
+        check_abs(Phi[1], sn, e, "undamped Phi_xv");
+        check_abs(Phi[2], -sn, e, "undamped Phi_vx");
+        check_abs(Phi[3], c, e, "undamped Phi_vv");
+        /* critical, wn = 10, w = 20: x = (x0 + (v0 + wn x0) t) e^(-wn t) */
+        s.c = 20;
+        mm_sdof_flow(&s, 20, tau, Phi, &q);
+        double E = exp(-10 * tau), ee = 64 * DBL_EPSILON * (q + 1);
+        check_abs(Phi[0], (1 + 10 * tau) * E, ee, "critical Phi_xx");
+        check_abs(Phi[1], 20 * tau * E, ee, "critical Phi_xv (v0 = 20 u0)");
+        check_abs(Phi[2], -100 * tau * E / 20, ee, "critical Phi_vx: v = -wn^2 t e^(-wn t) x0");
+        check_abs(Phi[3], (1 - 10 * tau) * E, ee, "critical Phi_vv");
+        /* overdamped: roots -2 and -50 (c/m = 52, k/m = 100), w = 50 */
+        s.c = 52;
+        mm_sdof_flow(&s, 50, tau, Phi, &q);
+        double a = exp(-2 * tau), b = exp(-50 * tau);
+        /* x = (50 x0 + v0) e^(-2t)/48 - (2 x0 + v0) e^(-50t)/48 */
+        check_abs(Phi[0], (50 * a - 2 * b) / 48, ee, "overdamped Phi_xx");
+        check_abs(Phi[1], 50 * (a - b) / 48, ee, "overdamped Phi_xv");
+        check_abs(Phi[2], (-100 * a + 100 * b) / 48 / 50, ee, "overdamped Phi_vx");
+        check_abs(Phi[3], (-2 * a + 50 * b) / 48, ee, "overdamped Phi_vv");
+    }
+    double Phi[4];
+    mm_sdof s = {.m = 2, .c = 3, .k = 5};
+    mm_sdof_flow(&s, 1, 0, Phi, NULL);
+    check_abs(Phi[0] - 1 + Phi[1] + Phi[2] + Phi[3] - 1, 0, 0, "tau = 0: the identity");
+}
+
 static void undamped_resonance_should_grow_like_t_sin_t(void **state)
 {
     (void)state;
@@ -251,6 +294,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(response_should_satisfy_the_equation_in_every_regime),
         cmocka_unit_test(critical_damping_should_match_its_textbook_form),
+        cmocka_unit_test(the_flow_should_carry_the_free_motion_in_every_regime),
         cmocka_unit_test(undamped_resonance_should_grow_like_t_sin_t),
         cmocka_unit_test(steady_state_should_follow_the_dynamic_stiffness),
         cmocka_unit_test(bad_models_should_be_refused_with_the_field_named),
