@@ -3,9 +3,11 @@
  * Uses {fmt} (Debian libfmt), whose Dragonbox algorithm writes the
  * shortest decimal that reads back to the same double, e.g. 0.1 -> "0.1",
  * 1e21 -> "1e+21", 1e-7 -> "1e-07", 1/3 -> "0.3333333333333333", at about
- * 40 ns a number here by {fmt}'s own formatting (25 by ours, 3-4 for a
- * short decimal) (double-conversion: 84 ns, printf %.17g: 170 ns,
- * which is not even shortest).  Valid JSON for every finite value.
+ * 40 ns a number here with {fmt}'s own layout (double-conversion: 84 ns,
+ * printf %.17g: 170 ns, which is not even shortest); mm_dtoa takes only
+ * the digits from {fmt} and lays them out itself, about 25 ns, and writes
+ * a short decimal (0.0234) by its fast path in about 5.  Valid JSON for
+ * every finite value.
  */
 #ifndef MM_DTOA_H
 #define MM_DTOA_H
