@@ -418,7 +418,8 @@ int mm_ex_animate_oscillator(mm_result *res, int nf, const double *t, const doub
     int q = 3 - (int)floor(log10(L));                  /* decimals: 1e-3 of the drawing's size */
     mm_shape *wall = mm_anim_shape(res, y ? "support" : "wall", MM_SHAPE_LINE, y ? nf : 1, 2);
     mm_shape *spring = mm_anim_shape(res, "spring", MM_SHAPE_LINE, nf, MM_SCENE_SPRING_POINTS);
-    mm_shape *cup = damper ? mm_anim_shape(res, "damper", MM_SHAPE_LINE, nf, MM_SCENE_CUP_POINTS) : NULL;
+    /* the damper's cylinder is fixed to the support: one frame when that stands still */
+    mm_shape *cup = damper ? mm_anim_shape(res, "damper", MM_SHAPE_LINE, y ? nf : 1, MM_SCENE_CUP_POINTS) : NULL;
     mm_shape *piston = damper ? mm_anim_shape(res, "piston", MM_SHAPE_LINE, nf, MM_SCENE_PISTON_POINTS)
                               : NULL;
     mm_shape *mass = mm_anim_shape(res, "mass", MM_SHAPE_POLYGON, nf, MM_SCENE_BOX_POINTS);

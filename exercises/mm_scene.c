@@ -32,14 +32,17 @@ void mm_scene_damper(mm_shape *cup, mm_shape *piston, int f, double x0, double y
     double ux = len > 0 ? dx / len : 1, uy = len > 0 ? dy / len : 0, nx = -uy, ny = ux;
     double h = 0.5 * width, c0 = 0.15 * rest, cl = 0.45 * rest;   /* cup bottom, cup length */
     double bx = x0 + c0 * ux, by = y0 + c0 * uy;
-    /* the cup: rod to its bottom, one wall, back, the other wall */
-    put(cup, f, 0, x0, y0);
-    put(cup, f, 1, bx, by);
-    put(cup, f, 2, bx + h * nx, by + h * ny);
-    put(cup, f, 3, bx + h * nx + cl * ux, by + h * ny + cl * uy);
-    put(cup, f, 4, bx + h * nx, by + h * ny);
-    put(cup, f, 5, bx - h * nx, by - h * ny);
-    put(cup, f, 6, bx - h * nx + cl * ux, by - h * ny + cl * uy);
+    /* the cup: rod to its bottom, one wall, back, the other wall (a cup of
+     * fewer frames than f stands still: drawn at its frames only) */
+    if (f < cup->frames) {
+        put(cup, f, 0, x0, y0);
+        put(cup, f, 1, bx, by);
+        put(cup, f, 2, bx + h * nx, by + h * ny);
+        put(cup, f, 3, bx + h * nx + cl * ux, by + h * ny + cl * uy);
+        put(cup, f, 4, bx + h * nx, by + h * ny);
+        put(cup, f, 5, bx - h * nx, by - h * ny);
+        put(cup, f, 6, bx - h * nx + cl * ux, by - h * ny + cl * uy);
+    }
     /* the piston: its plate inside the cup, 0.4 of the rest length from the far end */
     double p = len - 0.4 * rest, px = x0 + p * ux, py = y0 + p * uy, ph = 0.8 * h;
     put(piston, f, 0, x1, y1);

@@ -27,7 +27,9 @@ void mm_scene_spring(mm_shape *s, int f, double x0, double y0, double x1, double
 /* A damper from (x0, y0) (the cylinder's end) to (x1, y1) (the piston's
  * end), width across: cup gets MM_SCENE_CUP_POINTS, piston
  * MM_SCENE_PISTON_POINTS.  The cylinder is 0.45 of the rest length rest,
- * so the piston stays inside while |length - rest| < 0.35 rest. */
+ * so the piston stays inside while |length - rest| < 0.35 rest.  A cup
+ * with fewer frames than f is left as it is: a cylinder whose end and
+ * direction do not move needs one frame. */
 void mm_scene_damper(mm_shape *cup, mm_shape *piston, int f, double x0, double y0, double x1,
                      double y1, double width, double rest);
 
