@@ -213,8 +213,8 @@ int mm_ex_sdof_flow_check(const mm_sdof *s, const mm_sdof_props *p, double t_end
     /* the closed form's own rounding: its cosines carry about an eps of
      * their argument, up to t_end w radians, and its sums a few eps of the
      * terms' sizes; carried by Phi (norm at most ~1 for a damped motion)
-     * and Phi's rounding, an eps of ||Phi|| a squaring (over 1000 random
-     * draws the worst used 0.2 of this) */
+     * and Phi's rounding, an eps of ||Phi|| a squaring (over 927 random
+     * draws of vib-sdof-forced the worst used 0.14 of this, the median 0.04) */
     double nphi = fmax(fabs(Phi[0]) + fabs(Phi[1]), fabs(Phi[2]) + fabs(Phi[3]));
     double tol = (1 + nphi) * 4 * DBL_EPSILON * (1 + t_end * w) * big + (q + 25) * DBL_EPSILON * nphi * big;
     mm_res_check_abs(res, "closed form vs the flow of eq. (1): x - x_p carried over each of 64 steps by "
