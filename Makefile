@@ -12,6 +12,8 @@
 #                 browser packages and deploy files (README "Hosting it for a class")
 #   make failover nginx in front of two instances, one killed under load
 #   make fuzz-long every libFuzzer target for FUZZ_CPU_SECONDS (3600) of CPU
+#   make answers every exercise's answers (defaults + ANSWERS_N draws) to diff
+#                 before and after a refactoring
 #   make ref      chapter 1's printed numbers against 60-digit references (tests/ref)
 
 # ---- settings ---------------------------------------------------------------
@@ -79,7 +81,7 @@ FUZZ_SECONDS ?= 60
 ALL_OBJ := $(call obj,$(SOLVER_SRC) $(EX_SRC) $(SERVER_SRC) $(SERVER_CXX) server/main.c)
 
 .PHONY: all run test asan bench deps flags clean tests loadtest fuzz fuzz-bins valgrind tsan install \
-        failover fuzz-long a11y ref
+        failover fuzz-long a11y ref answers
 .DEFAULT_GOAL := all
 
 all: $(SERVER_BIN)
@@ -148,6 +150,17 @@ $(BUILD)/obj/tests/unit/test_readme.o: CPPFLAGS += -I$(BUILD)/readme
 $(BUILD)/load/loadtool: $(BUILD)/obj/tests/load/loadtool.o $(LIBS)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS) $(TEST_LIBS)
+
+# every exercise's answers at its defaults and ANSWERS_N draws, timings
+# blanked (tests/tools/answers.c): run before and after a refactoring, diff
+ANSWERS_N ?= 20
+$(BUILD)/tools/answers: $(BUILD)/obj/tests/tools/answers.o $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDSAN) -o $@ $^ $(LDLIBS)
+
+answers: $(BUILD)/tools/answers
+	@$(BUILD)/tools/answers -n $(ANSWERS_N) > $(BUILD)/answers.txt
+	@echo "answers: $$(wc -l < $(BUILD)/answers.txt) lines in $(BUILD)/answers.txt ($$(md5sum < $(BUILD)/answers.txt | cut -c1-12))"
 
 # the reference harness's draws (tests/ref/num_ref.py; make ref)
 $(BUILD)/ref/num_draws: $(BUILD)/obj/tests/ref/num_draws.o $(LIBS)
