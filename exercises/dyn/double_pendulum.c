@@ -413,19 +413,11 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_dyn_double_pendulum = {
-    .id = "dyn-double-pendulum",
-    .chapter = 4,
-    .section = "4.3",
+    .id = "dyn-double-pendulum", .chapter = 4, .section = "4.3",
     .title = "The double pendulum: Lagrange's equations, energy and chaos",
     .summary = "Equations of motion by Lagrange's method; the energy error of Dormand-Prince against a "
                "symplectic Gauss method; two starts 1e-9 apart and the Lyapunov exponent.",
     .tags = "dynamics, Lagrange, Hamilton, symplectic, energy drift, chaos, Lyapunov",
-    .theory = "exercises/dyn/double_pendulum.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/dyn/double_pendulum.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

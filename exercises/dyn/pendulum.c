@@ -370,19 +370,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_dyn_pendulum = {
-    .id = "dyn-pendulum",
-    .chapter = 4,
-    .section = "4.2",
-    .title = "The pendulum at large amplitude",
+    .id = "dyn-pendulum", .chapter = 4, .section = "4.2", .title = "The pendulum at large amplitude",
     .summary = "Period against amplitude by the elliptic integral (AGM), the exact motion in Jacobi "
                "functions, the separatrix and rotation over the top.",
-    .tags = "dynamics, pendulum, nonlinear, elliptic integral, separatrix",
-    .theory = "exercises/dyn/pendulum.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "dynamics, pendulum, nonlinear, elliptic integral, separatrix", .theory = "exercises/dyn/pendulum.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

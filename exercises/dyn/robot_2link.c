@@ -365,19 +365,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_dyn_robot_2link = {
-    .id = "dyn-robot-2link",
-    .chapter = 4,
-    .section = "4.4.2",
-    .title = "Dynamics of a two-link robot arm",
+    .id = "dyn-robot-2link", .chapter = 4, .section = "4.4.2", .title = "Dynamics of a two-link robot arm",
     .summary = "Joint torques of a planned quintic move (inverse dynamics), checked by a forward simulation "
                "driven by them; singular configurations and the reach.",
-    .tags = "dynamics, robot, inverse dynamics, trajectory, multibody",
-    .theory = "exercises/dyn/robot_2link.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "dynamics, robot, inverse dynamics, trajectory, multibody", .theory = "exercises/dyn/robot_2link.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -381,19 +381,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_dyn_slider_crank = {
-    .id = "dyn-slider-crank",
-    .chapter = 4,
-    .section = "4.4.3",
-    .title = "Dynamics of a slider-crank mechanism",
+    .id = "dyn-slider-crank", .chapter = 4, .section = "4.4.3", .title = "Dynamics of a slider-crank mechanism",
     .summary = "The constrained equations with Lagrange multipliers (Baumgarte or coordinate partitioning), "
                "joint forces, the flywheel's speed through the dead centres, energy balance and drift.",
     .tags = "dynamics, mechanism, slider-crank, constraints, Lagrange multipliers, flywheel",
-    .theory = "exercises/dyn/slider_crank.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/dyn/slider_crank.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

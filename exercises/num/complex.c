@@ -239,18 +239,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_complex = {
-    .id = "num-complex",
-    .chapter = 1,
-    .section = "1.4.1",
-    .title = "Complex numbers: rectangular and polar form",
+    .id = "num-complex", .chapter = 1, .section = "1.4.1", .title = "Complex numbers: rectangular and polar form",
     .summary = "Square, multiply, divide, raise to a power or take roots of complex numbers, on the Argand plane.",
-    .tags = "complex numbers, polar form, de Moivre, Argand plane",
-    .theory = "exercises/num/complex.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "complex numbers, polar form, de Moivre, Argand plane", .theory = "exercises/num/complex.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

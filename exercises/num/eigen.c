@@ -234,18 +234,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_eigen = {
-    .id = "num-eigen",
-    .chapter = 1,
-    .section = "1.4.2",
-    .title = "Eigenvalues: natural frequencies and mode shapes",
+    .id = "num-eigen", .chapter = 1, .section = "1.4.2", .title = "Eigenvalues: natural frequencies and mode shapes",
     .summary = "Solve K v = lambda M v like MATLAB's eig(K, M): natural frequencies and mode shapes of a spring-mass chain.",
     .tags = "linear algebra, eigenvalues, eigenvectors, natural frequencies, mode shapes",
-    .theory = "exercises/num/eigen.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/num/eigen.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -219,19 +219,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_linear_system = {
-    .id = "num-linear-system",
-    .chapter = 1,
-    .section = "1.4.2",
-    .title = "A linear system A x = b",
+    .id = "num-linear-system", .chapter = 1, .section = "1.4.2", .title = "A linear system A x = b",
     .summary = "Solve A x = b like MATLAB's A\\b; the condition number tells how many digits of x a double-precision "
                "solve keeps.",
-    .tags = "linear algebra, linear system, LU, condition number, residual",
-    .theory = "exercises/num/linear_system.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "linear algebra, linear system, LU, condition number, residual", .theory = "exercises/num/linear_system.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

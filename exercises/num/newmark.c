@@ -433,18 +433,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_newmark = {
-    .id = "num-newmark",
-    .chapter = 1,
-    .section = "1.4.2",
+    .id = "num-newmark", .chapter = 1, .section = "1.4.2",
     .title = "Equations of motion step by step: the Newmark method",
     .summary = "M q'' + C q' + K q = F(q, q', t) for a small system by Newmark, HHT-alpha or central difference.",
     .tags = "numerical methods, time integration, Newmark, HHT-alpha, central difference, Newton, energy",
-    .theory = "exercises/num/newmark.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/num/newmark.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

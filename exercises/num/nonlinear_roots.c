@@ -322,18 +322,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_nonlinear_roots = {
-    .id = "num-nonlinear-roots",
-    .chapter = 1,
-    .section = "1.4.2",
-    .title = "Roots of a nonlinear function",
+    .id = "num-nonlinear-roots", .chapter = 1, .section = "1.4.2", .title = "Roots of a nonlinear function",
     .summary = "Every root of f(x) = 0 on an interval: subdivide, keep the sign changes, refine each by Brent's method.",
-    .tags = "nonlinear equation, roots, bisection, Brent, sign change",
-    .theory = "exercises/num/nonlinear_roots.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "nonlinear equation, roots, bisection, Brent, sign change", .theory = "exercises/num/nonlinear_roots.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -323,18 +323,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_plot = {
-    .id = "num-plot",
-    .chapter = 1,
-    .section = "1.4.3",
-    .title = "Plotting a function",
+    .id = "num-plot", .chapter = 1, .section = "1.4.3", .title = "Plotting a function",
     .summary = "Plot any f(x) on an interval; read off its extremes and the area under it, and see what sampling hides.",
-    .tags = "plotting, sampling, extrema, quadrature, Gauss-Kronrod, Gauss-Legendre",
-    .theory = "exercises/num/plot.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "plotting, sampling, extrema, quadrature, Gauss-Kronrod, Gauss-Legendre", .theory = "exercises/num/plot.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

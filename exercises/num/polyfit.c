@@ -319,18 +319,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_polyfit = {
-    .id = "num-polyfit",
-    .chapter = 1,
-    .section = "1.4.2",
-    .title = "Least-squares polynomial fit",
+    .id = "num-polyfit", .chapter = 1, .section = "1.4.2", .title = "Least-squares polynomial fit",
     .summary = "The polynomial of a given degree closest to data points in the least-squares sense, like MATLAB's polyfit.",
-    .tags = "least squares, regression, polynomial fit, normal equations",
-    .theory = "exercises/num/polyfit.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "least squares, regression, polynomial fit, normal equations", .theory = "exercises/num/polyfit.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };
