@@ -1,0 +1,37 @@
+/* mm_num.c — helpers of the chapter-1 (numerical methods) exercises (see
+ * mm_num.h). */
+#include "mm_num.h"
+
+#include <math.h>
+
+#include "mm_exhelp.h"
+
+int mm_num_poly_curve(mm_result *res, int out, int ncoef, const double *p, const mm_poly_root *roots, int nr)
+{
+    double lo = roots[0].re, hi = lo;
+    for (int i = 0; i < nr; i++) {
+        lo = fmin(lo, roots[i].re);
+        hi = fmax(hi, roots[i].re);
+    }
+    double span = fmax(hi - lo, fmax(1e-3 * fmax(fabs(lo), fabs(hi)), 1e-3)), m = 0.25 * span;
+    enum { NP = 201 };
+    double xs[NP], ys[NP];
+    int ok = 1;
+    mm_linspace(lo - m, hi + m, NP, xs);
+    for (int i = 0; i < NP && ok; i++) {
+        ys[i] = mm_poly_eval(ncoef, p, xs[i], NULL);
+        ok = isfinite(ys[i]);
+    }
+    if (!ok) {
+        mm_res_warn(res, "p(x) overflows on the plot range; the curve is left out");
+        return MM_OK;
+    }
+    mm_series *s = mm_res_series(res, out, NP);
+    if (!s)
+        return MM_ENOMEM;
+    for (int i = 0; i < NP; i++) {
+        s->x[i] = xs[i];
+        s->y[i] = ys[i];
+    }
+    return MM_OK;
+}

@@ -1,0 +1,17 @@
+/* mm_num.h — helpers of the chapter-1 (numerical methods) exercises that
+ * are not numerics: their standard figures.
+ */
+#ifndef MM_NUM_H
+#define MM_NUM_H
+
+#include "mm_exercise.h"
+#include "mm_poly.h"
+
+/* The series `out`: p (ncoef coefficients, highest power first) on the real
+ * axis at 201 points over the real parts of its nr roots and a quarter of
+ * their span on either side (the span at least 1e-3 of their size, and
+ * 1e-3).  When p overflows somewhere on that range the curve is left out,
+ * with a warning.  Returns MM_OK or MM_ENOMEM. */
+int mm_num_poly_curve(mm_result *res, int out, int ncoef, const double *p, const mm_poly_root *roots, int nr);
+
+#endif
