@@ -6,6 +6,14 @@
 
 #include "mm_exhelp.h"
 
+mm_scalar *mm_num_scalar_i_err(mm_result *res, int out, int i, double value, double error, mm_err_kind kind)
+{
+    mm_scalar *s = mm_res_scalar_i(res, out, i, value);
+    s->error = error;
+    s->error_kind = kind;
+    return s;
+}
+
 int mm_num_poly_curve(mm_result *res, int out, int ncoef, const double *p, const mm_poly_root *roots, int nr)
 {
     double lo = roots[0].re, hi = lo;

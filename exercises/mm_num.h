@@ -7,6 +7,10 @@
 #include "mm_exercise.h"
 #include "mm_poly.h"
 
+/* Member i of the scalar family `out` with its error (mm_res_scalar_i,
+ * then mm_res_scalar_err's error and kind).  Never NULL. */
+mm_scalar *mm_num_scalar_i_err(mm_result *res, int out, int i, double value, double error, mm_err_kind kind);
+
 /* The series `out`: p (ncoef coefficients, highest power first) on the real
  * axis at 201 points over the real parts of its nr roots and a quarter of
  * their span on either side (the span at least 1e-3 of their size, and

@@ -1,0 +1,110 @@
+/* test_errbound.c — mm_errbound against closed forms: the true deviation of
+ * a quotient, a root or a solution worked out by hand must lie within the
+ * bound, and the bound within a few percent of it. */
+#include "mm_test.h"
+
+#include <float.h>
+
+#include "mm_errbound.h"
+
+#define U (DBL_EPSILON / 2)
+
+/* kappa = 4 / 1 with both singular values off by a = 1e-10: the worst
+ * exact quotient is (4 + a) / (1 - a) = 4 + 5a / (1 - a); the bound is
+ * first order, 4 (a / 4 + a / (1 - a)), plus the division's rounding 4u,
+ * which here is far above the second-order term it leaves out (4 a^2) */
+static void cond_bound_should_cover_the_worst_quotient(void **state)
+{
+    (void)state;
+    double a = 1e-10, worst = 5 * a / (1 - a), b = mm_errbound_cond(4, a, 1, a);
+    assert_true(b >= worst);
+    check_rel(b, worst + 4 * U, 1e-10, "first order and the rounding (second order: 2e-11 relative)");
+    /* exact singular values: the division's rounding alone, (1 + 8u) 4 u */
+    check_rel(mm_errbound_cond(4, 0, 1, 0), 4 * U, 1e-14, "rounding of s1 / sn");
+}
+
+/* A = [2 1; 1 3], b = [3 4]: x = [1 1].  sigma_min = (5 - sqrt 5) / 2 */
+static void solve_bound_should_follow_the_residual(void **state)
+{
+    (void)state;
+    const double A[] = {2, 1, 1, 3}, b[] = {3, 4}, x[] = {1, 1}, xc[] = {1 + 0x1p-33, 1};
+    double work[4], omega, smin = (5 - sqrt(5.0)) / 2;
+    double bound = mm_errbound_solve(2, A, b, x, smin, &omega, work);
+    assert_true(omega == 0.0);                          /* the exact solution: r = 0 */
+    /* only the residual's own rounding: 4 eps_dd n ||mag|| / sigma_min = 2.9e-30 */
+    check_rel(bound, 4 * 4.93038065763132e-32 * 2 * 10 / smin, 1e-15, "double-double's rounding");
+    /* xc off by e = 2^-33 in x1: r = -A e = -(2e, e), ||r|| = sqrt 5 e, so the
+     * bound is sqrt 5 e / sigma_min = 1.618 e, above the true error e; the
+     * componentwise backward error is max(2e / 6, e / 7) = e / 3 */
+    double e = 0x1p-33;
+    bound = mm_errbound_solve(2, A, b, xc, smin, &omega, work);
+    check_rel(bound, sqrt(5.0) * e / smin, 1e-15, "||r|| / sigma_min");
+    assert_true(bound >= e);
+    check_rel(omega, (2 * e) / (2 * (1 + e) + 1 + 3), 1e-15, "max |r_i| / (|A||xc| + |b|)_i");
+}
+
+static void rounded_residual_should_be_the_rounding_of_x(void **state)
+{
+    (void)state;
+    const double A[] = {1, -2, 3, 4}, x[] = {1, 2}, xe[] = {0, 1e-20};
+    double work[2];
+    /* |A| (u |x| + xe) = (u + 2 (2u + 1e-20), 3u + 4 (2u + 1e-20)) */
+    double r1 = 5 * U + 2e-20, r2 = 11 * U + 4e-20;
+    check_rel(mm_errbound_rounded_residual(2, A, x, xe, work), sqrt(r1 * r1 + r2 * r2), 4 * U, "by hand");
+}
+
+static void symmetric_extremes_should_bracket_the_eigenvalues(void **state)
+{
+    (void)state;
+    const double a[] = {2, 1, 1, 2};                    /* eigenvalues 1 and 3 */
+    double work[4];
+    mm_errbound_sym b;
+    assert_int_equal(mm_errbound_sym_extremes(2, a, work, &b, NULL), MM_OK);
+    check_abs(b.min, 1, U, "smallest eigenvalue");
+    check_abs(b.max, 3, 2 * U, "largest eigenvalue");
+    /* bounds 3 + e and 1 - e with e at double-double's level (~1e-30): in double, 3 and 1 */
+    assert_true(b.norm_hi == 3.0 && b.min_lo == 1.0);
+    check_abs(work[2], 0, 1e-29, "the bound of the smallest eigenvalue");
+    const double c[] = {1, 2, 2, 1};                    /* eigenvalues -1 and 3: indefinite */
+    assert_int_equal(mm_errbound_sym_extremes(2, c, work, &b, NULL), MM_OK);
+    assert_true(b.min_lo < 0 && b.norm_hi >= 3);
+}
+
+static void sqrt_bound_should_cover_the_interval_of_roots(void **state)
+{
+    (void)state;
+    double e, om = mm_errbound_sqrt(4, 1e-10, &e);
+    assert_true(om == 2.0);
+    /* |sqrt(4 - 1e-10) - 2| = 2.5e-11 (1 + 6e-12): the wider side */
+    double worst = 2 - sqrt(4 - 1e-10);
+    assert_true(e >= worst);
+    check_rel(e, worst + 2 * U, 1e-5, "1e-10 / 4 and u omega");
+    /* lambda = 0 within 1e-10 (a rigid-body mode): omega within sqrt(1e-10) = 1e-5 */
+    om = mm_errbound_sqrt(0, 1e-10, &e);
+    assert_true(om == 0.0);
+    check_rel(e, 1e-5, 1e-15, "the root of the interval's top");
+}
+
+static void trace_tolerance_should_sum_the_bounds(void **state)
+{
+    (void)state;
+    const double MK[] = {2, 0.5, 0, 3}, lam[] = {2, 3}, le[] = {1e-15, 2e-15};
+    double tr, sum, tol = mm_errbound_trace(2, MK, 1e-16, lam, le, &tr, &sum);
+    assert_true(tr == 5.0 && sum == 5.0);
+    /* the eigenvalues' bounds, ferr times each column's largest entry (2, 3),
+     * and 2 n u (|lambda_j| + |MK_jj|) */
+    check_rel(tol, 3e-15 + 1e-16 * 5 + 4 * U * 10, 1e-14, "by hand");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(cond_bound_should_cover_the_worst_quotient),
+        cmocka_unit_test(solve_bound_should_follow_the_residual),
+        cmocka_unit_test(rounded_residual_should_be_the_rounding_of_x),
+        cmocka_unit_test(symmetric_extremes_should_bracket_the_eigenvalues),
+        cmocka_unit_test(sqrt_bound_should_cover_the_interval_of_roots),
+        cmocka_unit_test(trace_tolerance_should_sum_the_bounds),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
