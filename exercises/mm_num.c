@@ -3,6 +3,7 @@
 #include "mm_num.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 #include "mm_exhelp.h"
 
@@ -12,6 +13,40 @@ mm_scalar *mm_num_scalar_i_err(mm_result *res, int out, int i, double value, dou
     s->error = error;
     s->error_kind = kind;
     return s;
+}
+
+void mm_num_scalar_dd(mm_result *res, int out, mm_dd v, double e)
+{
+    double x = mm_dd_val(v);
+    double total = e + mm_dd_abs(mm_dd_sub(v, mm_dd_from(x)));
+    mm_scalar *s = mm_res_scalar_err(res, out, x, total, MM_ERR_BOUND);
+    if (total == 0)
+        s->exact = 1;
+}
+
+int mm_num_arrow(mm_result *res, int out, double x, double y)
+{
+    mm_series *s = mm_res_series(res, out, 2);
+    if (!s)
+        return MM_ENOMEM;
+    s->x[1] = x;
+    s->y[1] = y;
+    return MM_OK;
+}
+
+int mm_num_powers(mm_result *res, int out, mm_cdd a, int n)
+{
+    int m = abs(n) + 1;
+    mm_series *s = mm_res_series(res, out, m);
+    if (!s)
+        return MM_ENOMEM;
+    mm_cdd step = n >= 0 ? a : mm_cdd_div(mm_cdd_exact(1, 0), a), p = mm_cdd_exact(1, 0);
+    for (int j = 0; j < m; j++) {
+        s->x[j] = mm_dd_val(p.re);
+        s->y[j] = mm_dd_val(p.im);
+        p = mm_cdd_mul(p, step);
+    }
+    return MM_OK;
 }
 
 int mm_num_poly_curve(mm_result *res, int out, int ncoef, const double *p, const mm_poly_root *roots, int nr)

@@ -4,12 +4,30 @@
 #ifndef MM_NUM_H
 #define MM_NUM_H
 
+#include "mm_dd.h"
 #include "mm_exercise.h"
 #include "mm_poly.h"
 
 /* Member i of the scalar family `out` with its error (mm_res_scalar_i,
  * then mm_res_scalar_err's error and kind).  Never NULL. */
 mm_scalar *mm_num_scalar_i_err(mm_result *res, int out, int i, double value, double error, mm_err_kind kind);
+
+/* Scalar `out` from a double-double value v known within e: v rounded to
+ * double, its bound e plus the rounding; marked exact when that is 0. */
+void mm_num_scalar_dd(mm_result *res, int out, mm_dd v, double e);
+
+/* ---- the Argand plane ---------------------------------------------------------- */
+
+/* The series `out` as an arrow from the origin to (x, y), the way a
+ * complex number is drawn on the Argand plane.  Returns MM_OK or MM_ENOMEM. */
+int mm_num_arrow(mm_result *res, int out, double x, double y);
+
+/* The series `out`: the powers a^0, a^1, ..., a^n (n < 0: of 1 / a, to
+ * a^n), multiplied out one after the other in double-double: a spiral that
+ * turns by arg a a step.  Returns MM_OK or MM_ENOMEM. */
+int mm_num_powers(mm_result *res, int out, mm_cdd a, int n);
+
+/* ---- polynomials ----------------------------------------------------------------- */
 
 /* The series `out`: p (ncoef coefficients, highest power first) on the real
  * axis at 201 points over the real parts of its nr roots and a quarter of

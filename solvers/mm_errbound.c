@@ -77,3 +77,40 @@ double mm_errbound_trace(int n, const double *MK, double ferr, const double *lam
     *sum = sl;
     return tol;
 }
+
+double mm_errbound_ulp(double x) { return x == 0 ? 0 : ldexp(1, ilogb(x) - 52); }
+
+double mm_errbound_arg(mm_cdd z, double *err)
+{
+    double zre = mm_dd_val(z.re) + 0.0, zim = mm_dd_val(z.im) + 0.0;
+    double mz = sqrt(mm_dd_add(mm_dd_mul(z.re, z.re), mm_dd_mul(z.im, z.im)).hi);
+    if (!(mz > 0)) {
+        *err = z.err > 0 ? M_PI : 0;
+        return 0;
+    }
+    double ang = atan2(zim, zre);
+    double lo = (zre * (z.im.lo + (z.im.hi - zim)) - zim * (z.re.lo + (z.re.hi - zre))) / (mz * mz);
+    double aerr = z.err / (mz - fmin(z.err, 0.5 * mz)) * 2 + mm_errbound_ulp(ang);
+    *err = aerr + fabs(lo) * U;
+    return ang + lo;
+}
+
+void mm_errbound_roots(mm_cdd a, double r, double theta, int n, double *re, double *im, double *back,
+                       double *back_tol, double *sum, double *sum_tol)
+{
+    double bk = 0, bk_tol = 0, sre = 0, sim = 0, stol = 0;
+    for (int k = 0; k < n; k++) {
+        mm_cdd w = mm_cdd_root(a, r, theta, n, k);
+        re[k] = mm_dd_val(w.re), im[k] = mm_dd_val(w.im);
+        mm_cdd wn = mm_cdd_pow(mm_cdd_exact(re[k], im[k]), n);
+        double mw = hypot(re[k], im[k]), dw = w.err + M_SQRT2 * U * mw;
+        bk = fmax(bk, hypot(mm_dd_val(mm_dd_sub(wn.re, a.re)), mm_dd_val(mm_dd_sub(wn.im, a.im))));
+        bk_tol = fmax(bk_tol, 1.01 * n * pow(mw + dw, n - 1) * dw + wn.err);
+        sre += re[k], sim += im[k];
+        stol += dw + 2 * U * (fabs(sre) + fabs(sim));
+    }
+    *back = bk;
+    *back_tol = bk_tol;
+    *sum = hypot(sre, sim);
+    *sum_tol = 1.01 * stol;
+}

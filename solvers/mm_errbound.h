@@ -8,6 +8,7 @@
 #ifndef MM_ERRBOUND_H
 #define MM_ERRBOUND_H
 
+#include "mm_dd.h"
 #include "mm_status.h"
 
 /* A bound of |s1 / sn - kappa| for kappa = S1 / Sn, the singular values
@@ -32,6 +33,29 @@ double mm_errbound_solve(int n, const double *A, const double *b, const double *
  * double leaves: || |A| (u |x| + x_err) ||_2, x_err[i] the bound of x[i]
  * before its rounding.  work: n doubles.  Cannot fail. */
 double mm_errbound_rounded_residual(int n, const double *A, const double *x, const double *x_err, double *work);
+
+/* The spacing of the doubles at x: 2^(e - 52) for 2^e <= |x| < 2^(e + 1)
+ * (0 at 0).  Cannot fail. */
+double mm_errbound_ulp(double x);
+
+/* ---- complex numbers in double-double (mm_cdd) ------------------------------ */
+
+/* The argument of z in (-pi, pi], with its bound in *err: atan2 of z
+ * rounded to double (within 0.52 ulp, measured against 50 digits), moved
+ * by the low parts (x dy - y dx) / |z|^2, z.err turned into an angle at
+ * |z| (twice z.err / |z| while z.err stays under half of |z|).  For z = 0
+ * the argument 0 by convention, within pi if z.err > 0.  Cannot fail. */
+double mm_errbound_arg(mm_cdd z, double *err);
+
+/* The n roots w_k of a (mm_cdd_root with r = |a|, theta = arg a in
+ * double), rounded to double into re[k], im[k], k = 0..n-1, and two checks
+ * of them as printed, in double-double: *back = max |w_k^n - a| with its
+ * bound *back_tol, n |w|^(n-1) times the rounding of w (1.01 of it) plus
+ * the power's own; *sum = |sum of the roots| (0 for n >= 2: the
+ * coefficient of z^(n-1) in z^n - a), *sum_tol the roots' rounding and
+ * that of the running sum (1.01 of it).  Cannot fail. */
+void mm_errbound_roots(mm_cdd a, double r, double theta, int n, double *re, double *im, double *back,
+                       double *back_tol, double *sum, double *sum_tol);
 
 /* ---- symmetric eigenproblems ------------------------------------------------ */
 

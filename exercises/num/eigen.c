@@ -83,7 +83,6 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int n = in[P_K].rows;

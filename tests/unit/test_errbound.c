@@ -96,6 +96,58 @@ static void trace_tolerance_should_sum_the_bounds(void **state)
     check_rel(tol, 3e-15 + 1e-16 * 5 + 4 * U * 10, 1e-14, "by hand");
 }
 
+static void ulp_should_be_the_spacing_of_doubles(void **state)
+{
+    (void)state;
+    assert_true(mm_errbound_ulp(1.0) == DBL_EPSILON);
+    assert_true(mm_errbound_ulp(-3.0) == 2 * DBL_EPSILON);       /* 2 <= 3 < 4 */
+    assert_true(mm_errbound_ulp(0x1p-60) == 0x1p-112);
+    assert_true(mm_errbound_ulp(0.0) == 0.0);
+    assert_true(nextafter(10.0, 11.0) - 10.0 == mm_errbound_ulp(10.0));
+}
+
+static void arg_should_be_atan2_with_its_bound(void **state)
+{
+    (void)state;
+    double e, a = mm_errbound_arg(mm_cdd_exact(1, 1), &e);
+    check_abs(a, M_PI / 4, e, "arg(1 + i) = pi/4 within the bound");
+    assert_true(e <= 2 * mm_errbound_ulp(M_PI / 4));              /* exact input: atan2's rounding */
+    a = mm_errbound_arg(mm_cdd_exact(-2, 0), &e);
+    check_abs(a, M_PI, e, "arg(-2) = pi, not -pi");
+    a = mm_errbound_arg(mm_cdd_exact(0, 0), &e);
+    assert_true(a == 0.0 && e == 0.0);                             /* 0 by convention, exactly */
+    /* the low parts count: 1 + i (1e-10 + 1e-27) has the argument
+     * 1e-10 + 1e-27 - (1e-10)^3 / 3 to 1e-40 */
+    mm_cdd z = {mm_dd_from(1), {1e-10, 1e-27}, 0};
+    a = mm_errbound_arg(z, &e);
+    check_abs(a, 1e-10 + 1e-27 - 1e-30 / 3, e, "arg with the low part of im");
+    /* z within 1e-3 of 1: the angle within about 2e-3 */
+    z.err = 1e-3;
+    a = mm_errbound_arg(z, &e);
+    assert_true(e >= 1e-3 && e <= 2.1e-3);
+    z = mm_cdd_exact(0, 0);
+    z.err = 1e-20;
+    mm_errbound_arg(z, &e);
+    check_abs(e, M_PI, 0, "a zero that may not be zero: any angle");
+}
+
+/* the cube roots of 8: 2 and -1 +- i sqrt 3 */
+static void roots_of_eight_should_be_the_closed_form(void **state)
+{
+    (void)state;
+    double re[3], im[3], back, back_tol, sum, sum_tol, s3 = sqrt(3.0);
+    mm_errbound_roots(mm_cdd_exact(8, 0), 8, 0, 3, re, im, &back, &back_tol, &sum, &sum_tol);
+    const double want[3][2] = {{2, 0}, {-1, s3}, {-1, -s3}};
+    for (int k = 0; k < 3; k++) {
+        check_abs(re[k], want[k][0], U, "real part of a cube root of 8, rounded");
+        check_abs(im[k], want[k][1], 2 * U, "imaginary part, rounded (sqrt 3 within 1/2 ulp of 1.7)");
+    }
+    /* the bounds: 1.01 n |w|^(n-1) |rounding of w| = 1.01 * 3 * 4 * sqrt 2 u 2 = 3.8e-15, and
+     * 1.01 (3 sqrt 2 u 2 + 2u (2 + 1 + 1 + sqrt 3)) = 2.0e-15 */
+    assert_true(back <= back_tol && back_tol < 4e-15);
+    assert_true(sum <= sum_tol && sum_tol < 2.1e-15);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -105,6 +157,9 @@ int main(void)
         cmocka_unit_test(symmetric_extremes_should_bracket_the_eigenvalues),
         cmocka_unit_test(sqrt_bound_should_cover_the_interval_of_roots),
         cmocka_unit_test(trace_tolerance_should_sum_the_bounds),
+        cmocka_unit_test(ulp_should_be_the_spacing_of_doubles),
+        cmocka_unit_test(arg_should_be_atan2_with_its_bound),
+        cmocka_unit_test(roots_of_eight_should_be_the_closed_form),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
