@@ -78,3 +78,24 @@ int mm_num_poly_curve(mm_result *res, int out, int ncoef, const double *p, const
     }
     return MM_OK;
 }
+
+int mm_num_fit_plot(mm_result *res, int data, int curve, int n, const double *x, const double *y, int ncoef,
+                    const double *bt, double mu, double scale)
+{
+    enum { NP = 201 };
+    mm_series *sd = mm_res_series(res, data, n), *sf = mm_res_series(res, curve, NP);
+    if (!sd || !sf)
+        return MM_ENOMEM;
+    double xlo = x[0], xhi = x[0];
+    for (int i = 0; i < n; i++) {
+        sd->x[i] = x[i];
+        sd->y[i] = y[i];
+        xlo = fmin(xlo, x[i]);
+        xhi = fmax(xhi, x[i]);
+    }
+    double margin = xhi > xlo ? 0.05 * (xhi - xlo) : 1;
+    mm_linspace(xlo - margin, xhi + margin, NP, sf->x);
+    for (int i = 0; i < NP; i++)
+        sf->y[i] = mm_poly_eval(ncoef, bt, (sf->x[i] - mu) / scale, NULL);
+    return MM_OK;
+}

@@ -36,4 +36,12 @@ int mm_num_powers(mm_result *res, int out, mm_cdd a, int n);
  * with a warning.  Returns MM_OK or MM_ENOMEM. */
 int mm_num_poly_curve(mm_result *res, int out, int ncoef, const double *p, const mm_poly_root *roots, int nr);
 
+/* The standard figure of a fit: the n data points (x, y) as series
+ * `data`, and as series `curve` the fitted polynomial on 201 points over
+ * their span and 5 % beyond either end (1 when the x are all equal),
+ * evaluated from its ncoef coefficients bt in t = (x - mu) / scale (no
+ * cancellation of powers of x).  Returns MM_OK or MM_ENOMEM. */
+int mm_num_fit_plot(mm_result *res, int data, int curve, int n, const double *x, const double *y, int ncoef,
+                    const double *bt, double mu, double scale);
+
 #endif
