@@ -3,9 +3,86 @@
 #include "mm_num.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "mm_exhelp.h"
+
+int mm_num_f_compile(mm_num_f *f, const char *text, mm_error *err)
+{
+    static const char *const vars[] = {"x"};
+    *f = (mm_num_f){NULL, 0};
+    int rc = mm_expr_compile(text, vars, 1, &f->e, err);
+    if (rc != MM_OK && err)
+        snprintf(err->param, sizeof err->param, "f");
+    return rc;
+}
+
+void mm_num_f_free(mm_num_f *f)
+{
+    mm_expr_free(f->e);
+    f->e = NULL;
+}
+
+int mm_num_f_eval(double x, double *fx, void *ctx)
+{
+    mm_num_f *f = ctx;
+    f->evals++;
+    *fx = mm_expr_eval(f->e, &x);
+    return 0;
+}
+
+double mm_num_f_at(mm_num_f *f, double x)
+{
+    f->evals++;
+    return mm_expr_eval(f->e, &x);
+}
+
+int mm_num_f_eval_err(double x, double *fx, double *err, void *ctx)
+{
+    mm_num_f *f = ctx;
+    *fx = mm_expr_eval_err(f->e, &x, err);
+    return 0;
+}
+
+double mm_num_f_value_err(double x, double *err, void *ctx)
+{
+    mm_num_f *f = ctx;
+    if (err)
+        return mm_expr_eval_err(f->e, &x, err);
+    return mm_num_f_at(f, x);
+}
+
+int mm_num_f_curve(mm_result *res, int out, mm_num_f *f, double a, double b, int np, int *bad,
+                   double *first_bad, int *crossings)
+{
+    double *xs = mm_res_alloc(res, (size_t)np * sizeof *xs), *ys = mm_res_alloc(res, (size_t)np * sizeof *ys);
+    if (!xs || !ys)
+        return MM_ENOMEM;
+    mm_linspace(a, b, np, xs);
+    int m = 0;
+    double prev = NAN;
+    *bad = 0, *first_bad = 0, *crossings = 0;
+    for (int i = 0; i < np; i++) {
+        double y = mm_expr_eval(f->e, &xs[i]);
+        if (isfinite(y) && (y == 0 || (isfinite(prev) && prev != 0 && (prev < 0) != (y < 0))))
+            ++*crossings;
+        prev = y;
+        if (isfinite(y)) {
+            xs[m] = xs[i];
+            ys[m++] = y;
+        } else if (!(*bad)++) {
+            *first_bad = xs[i];
+        }
+    }
+    mm_series *s = mm_res_series(res, out, m);
+    if (!s)
+        return MM_ENOMEM;
+    memcpy(s->x, xs, m * sizeof *xs);
+    memcpy(s->y, ys, m * sizeof *ys);
+    return MM_OK;
+}
 
 mm_scalar *mm_num_scalar_i_err(mm_result *res, int out, int i, double value, double error, mm_err_kind kind)
 {

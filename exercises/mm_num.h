@@ -6,7 +6,46 @@
 
 #include "mm_dd.h"
 #include "mm_exercise.h"
+#include "mm_expr.h"
 #include "mm_poly.h"
+
+/* ---- a function of x typed by the learner ----------------------------------------- */
+
+/* f(x) compiled from the parameter's text, and the number of times it was
+ * evaluated (the method's "evaluations"). */
+typedef struct mm_num_f {
+    mm_expr *e;
+    long evals;
+} mm_num_f;
+
+/* Compile text as f of the variable x; a syntax error names the parameter
+ * "f".  Returns MM_OK or mm_expr_compile's code with err filled. */
+int mm_num_f_compile(mm_num_f *f, const char *text, mm_error *err);
+
+/* Free f's expression.  Cannot fail. */
+void mm_num_f_free(mm_num_f *f);
+
+/* f(x), counted: an mm_roots_fn / mm_quad callback (ctx the mm_num_f),
+ * always 0; and the same as a value. */
+int mm_num_f_eval(double x, double *fx, void *ctx);
+double mm_num_f_at(mm_num_f *f, double x);
+
+/* f(x) with the estimate of its rounding error (mm_expr_eval_err), an
+ * mm_roots_fn_err callback; not counted (an estimate, not the method's
+ * work).  Always 0. */
+int mm_num_f_eval_err(double x, double *fx, double *err, void *ctx);
+
+/* The same for mm_opt_refine_extreme: with err the value and its rounding
+ * error (not counted), without it the value alone (counted). */
+double mm_num_f_value_err(double x, double *err, void *ctx);
+
+/* The series `out`: f at np equally spaced points over [a, b] (not
+ * counted), those where f is not finite left out: *bad of them, the first
+ * at *first_bad.  *crossings receives the zero crossings the plot shows,
+ * between neighbouring finite samples (a zero sample counts once).
+ * Returns MM_OK or MM_ENOMEM. */
+int mm_num_f_curve(mm_result *res, int out, mm_num_f *f, double a, double b, int np, int *bad,
+                   double *first_bad, int *crossings);
 
 /* Member i of the scalar family `out` with its error (mm_res_scalar_i,
  * then mm_res_scalar_err's error and kind).  Never NULL. */
