@@ -552,3 +552,95 @@ int mm_dyn_sc_animate(const mm_slider_crank *s, int partition, int ny, double t_
     a->bounds[0] = -1.45 * R, a->bounds[1] = -1.45 * R, a->bounds[2] = L + R + 0.6 * wp, a->bounds[3] = 1.45 * R;
     return MM_OK;
 }
+
+/* ---- the animations of dyn-robot-2link and dyn-pendulum --------------------- */
+
+int mm_dyn_plan_animate(const mm_dyn_plan *p, mm_result *res)
+{
+    double t_show;
+    int nf = mm_scene_frames(p->T, p->T / 5, &t_show);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    if (!a)
+        return MM_ENOMEM;
+    mm_dyn_frame_times(a, t_show);
+    enum { NP = 161 };
+    double reach = p->arm.l1 + p->arm.l2, q = mm_dyn_quantum(2 * reach);
+    mm_shape *base = mm_anim_shape(res, "base", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, NP);
+    mm_shape *arm = mm_anim_shape(res, "arm", MM_SHAPE_LINE, nf, 3);
+    mm_shape *elbow = mm_anim_shape(res, "elbow", MM_SHAPE_CIRCLE, nf, 1);
+    mm_shape *tip = mm_anim_shape(res, "tip", MM_SHAPE_CIRCLE, nf, 1);
+    if (!base || !path || !arm || !elbow || !tip)
+        return MM_ENOMEM;
+    base->style = "ground";
+    mm_scene_box(base, 0, 0, -0.04 * reach, 0.16 * reach, 0.08 * reach, 0);
+    path->style = "highlight";
+    for (int k = 0; k < NP; k++) {
+        double qq[2], qd[2], qdd[2], x[3], y[3];
+        mm_dyn_plan_at(p, p->T * k / (NP - 1), qq, qd, qdd);
+        mm_robot2_points(&p->arm, qq, x, y);
+        path->x[k] = x[2], path->y[k] = y[2];
+    }
+    elbow->radius = tip->radius = 0.025 * reach;
+    for (int f = 0; f < nf; f++) {
+        double qq[2], qd[2], qdd[2], x[3], y[3];
+        mm_dyn_plan_at(p, a->t[f], qq, qd, qdd);
+        mm_robot2_points(&p->arm, qq, x, y);
+        for (int k = 0; k < 3; k++)
+            arm->x[3 * f + k] = x[k], arm->y[3 * f + k] = y[k];
+        elbow->x[f] = x[1], elbow->y[f] = y[1];
+        tip->x[f] = x[2], tip->y[f] = y[2];
+    }
+    mm_dyn_round_shape(path, q);
+    mm_dyn_round_shape(arm, q);
+    mm_dyn_round_shape(elbow, q);
+    mm_dyn_round_shape(tip, q);
+    a->bounds[0] = a->bounds[1] = -1.1 * reach;
+    a->bounds[2] = a->bounds[3] = 1.1 * reach;
+    return MM_OK;
+}
+
+int mm_dyn_pend_animate(const mm_dyn_pend *p, double t_end, int n, const double *t, const double *th,
+                        mm_result *res)
+{
+    double t_show;
+    double shortest = isfinite(p->T) ? fmin(p->T, p->T0) : p->T0;
+    int nf = mm_scene_frames(t_end, shortest, &t_show);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    if (!a)
+        return MM_ENOMEM;
+    mm_dyn_frame_times(a, t_show);
+    /* the path: the bob's positions over the frames' span, at most 360 points */
+    int np = 0;
+    while (np < n && t[np] <= t_show * (1 + 1e-12))
+        np++;
+    int stride = np > 360 ? (np + 359) / 360 : 1, npath = (np + stride - 1) / stride;
+    mm_shape *pivot = mm_anim_shape(res, "pivot", MM_SHAPE_POLYGON, 1, 3);
+    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, npath);
+    mm_shape *rod = mm_anim_shape(res, "rod", MM_SHAPE_LINE, nf, 2);
+    mm_shape *bob = mm_anim_shape(res, "bob", MM_SHAPE_CIRCLE, nf, 1);
+    if (!pivot || !path || !rod || !bob)
+        return MM_ENOMEM;
+    double L = p->L, q = mm_dyn_quantum(2 * L);
+    pivot->style = "ground";
+    const double tri[3][2] = {{0, 0}, {-0.06, 0.08}, {0.06, 0.08}};
+    for (int k = 0; k < 3; k++)
+        pivot->x[k] = tri[k][0] * L, pivot->y[k] = tri[k][1] * L;
+    for (int j = 0; j < npath; j++) {
+        double a0 = th[j * stride];
+        path->x[j] = L * sin(a0), path->y[j] = -L * cos(a0);
+    }
+    bob->radius = 0.06 * L;
+    for (int f = 0; f < nf; f++) {
+        double w, a0 = mm_dyn_pend_exact(p, a->t[f], &w);    /* frames between grid points: the closed form */
+        double x = L * sin(a0), y = -L * cos(a0);
+        rod->x[2 * f] = 0, rod->y[2 * f] = 0;
+        rod->x[2 * f + 1] = x, rod->y[2 * f + 1] = y;
+        bob->x[f] = x, bob->y[f] = y;
+    }
+    mm_dyn_round_shape(path, q);
+    mm_dyn_round_shape(rod, q);
+    mm_dyn_round_shape(bob, q);
+    a->bounds[0] = -1.15 * L, a->bounds[1] = -1.15 * L, a->bounds[2] = 1.15 * L, a->bounds[3] = 1.15 * L;
+    return MM_OK;
+}

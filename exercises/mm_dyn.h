@@ -59,6 +59,11 @@ double mm_dyn_plan_growth(const mm_dyn_plan *p);
  * mm_ode right-hand side of 16 values (Phi row-major); set p->t_left >= 0. */
 int mm_dyn_plan_variational_rhs(double t, const double *y, double *dy, void *ctx);
 
+/* dyn-robot-2link's animation: the arm over the planned move (24 frames a
+ * fifth of T), its base, and the tip's planned path.  Returns MM_OK or
+ * MM_ENOMEM. */
+int mm_dyn_plan_animate(const mm_dyn_plan *p, mm_result *res);
+
 /* The largest |tau_j| over the move, its time *t_at and an error estimate
  * *err of the value.  Cannot fail. */
 double mm_dyn_plan_peak(const mm_dyn_plan *p, int j, double *t_at, double *err);
@@ -117,6 +122,13 @@ double mm_dyn_pend_energy(const mm_dyn_pend *p, double th, double w);
 /* |dT/dE|, the period's sensitivity to the energy per unit m L^2, by a
  * central difference (~1e-8 relative: it sizes a tolerance).  Cannot fail. */
 double mm_dyn_pend_period_sensitivity(const mm_dyn_pend *p);
+
+/* dyn-pendulum's animation: the pendulum over the frames of t_end (24 a
+ * period, the shorter of T and T0), each frame by the closed form, with the
+ * bob's path from the n integrated angles th at the times t (at most 360
+ * points).  Returns MM_OK or MM_ENOMEM. */
+int mm_dyn_pend_animate(const mm_dyn_pend *p, double t_end, int n, const double *t, const double *th,
+                        mm_result *res);
 
 /* ---- dyn-double-pendulum ------------------------------------------------------ */
 

@@ -154,53 +154,6 @@ static int q2_of(double t, double *f, void *ctx)
     return 0;
 }
 
-/* ---- the animation ------------------------------------------------------------- */
-
-static int animate(const mm_dyn_plan *p, mm_result *res)
-{
-    double t_show;
-    int nf = mm_scene_frames(p->T, p->T / 5, &t_show);
-    mm_anim *a = mm_res_animation(res, nf, "t", "s");
-    if (!a)
-        return MM_ENOMEM;
-    mm_dyn_frame_times(a, t_show);
-    enum { NP = 161 };
-    double reach = p->arm.l1 + p->arm.l2, q = mm_dyn_quantum(2 * reach);
-    mm_shape *base = mm_anim_shape(res, "base", MM_SHAPE_POLYGON, 1, 4);
-    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, NP);
-    mm_shape *arm = mm_anim_shape(res, "arm", MM_SHAPE_LINE, nf, 3);
-    mm_shape *elbow = mm_anim_shape(res, "elbow", MM_SHAPE_CIRCLE, nf, 1);
-    mm_shape *tip = mm_anim_shape(res, "tip", MM_SHAPE_CIRCLE, nf, 1);
-    if (!base || !path || !arm || !elbow || !tip)
-        return MM_ENOMEM;
-    base->style = "ground";
-    mm_scene_box(base, 0, 0, -0.04 * reach, 0.16 * reach, 0.08 * reach, 0);
-    path->style = "highlight";
-    for (int k = 0; k < NP; k++) {
-        double qq[2], qd[2], qdd[2], x[3], y[3];
-        mm_dyn_plan_at(p, p->T * k / (NP - 1), qq, qd, qdd);
-        mm_robot2_points(&p->arm, qq, x, y);
-        path->x[k] = x[2], path->y[k] = y[2];
-    }
-    elbow->radius = tip->radius = 0.025 * reach;
-    for (int f = 0; f < nf; f++) {
-        double qq[2], qd[2], qdd[2], x[3], y[3];
-        mm_dyn_plan_at(p, a->t[f], qq, qd, qdd);
-        mm_robot2_points(&p->arm, qq, x, y);
-        for (int k = 0; k < 3; k++)
-            arm->x[3 * f + k] = x[k], arm->y[3 * f + k] = y[k];
-        elbow->x[f] = x[1], elbow->y[f] = y[1];
-        tip->x[f] = x[2], tip->y[f] = y[2];
-    }
-    mm_dyn_round_shape(path, q);
-    mm_dyn_round_shape(arm, q);
-    mm_dyn_round_shape(elbow, q);
-    mm_dyn_round_shape(tip, q);
-    a->bounds[0] = a->bounds[1] = -1.1 * reach;
-    a->bounds[2] = a->bounds[3] = 1.1 * reach;
-    return MM_OK;
-}
-
 /* ---- solve ------------------------------------------------------------------------ */
 
 #define RTOL 1e-12
@@ -354,7 +307,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     else if (tol > 1e-6)
         mm_res_warn(res, "driven open loop the arm amplifies small errors by about %.2g along this move: the "
                          "simulation can follow the plan only to about %.2g rad", A, tol);
-    return animate(&p, res);
+    return mm_dyn_plan_animate(&p, res);
 }
 
 static const char *const references[] = {
