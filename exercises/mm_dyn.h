@@ -8,6 +8,7 @@
 #include "mm_exercise.h"
 #include "mm_multibody.h"
 #include "mm_ode.h"
+#include "mm_symplectic.h"
 
 /* The decimal quantum of an animation drawn to the size `size` [m]: the
  * power of ten at or below size * 1e-5 (a thousandth of a pixel on a
@@ -146,6 +147,18 @@ int mm_dyn_dpend_run(const mm_dpend *s, const double *y0, double t_end, int n, c
 /* The distance of two states, angles in radians and angular velocities in
  * units of wf.  Cannot fail. */
 double mm_dyn_dpend_distance(const double *a, const double *b, double wf);
+
+/* dyn-double-pendulum's symplectic run: Hamilton's equations in (theta, p)
+ * from y0 = (theta1, theta2, w1, w2) by method m with step h over [0, t_end]
+ * (at most max_steps steps; the Newton scale of p from the fastest rate),
+ * the energy error |E - E0| / Es at every step: its largest over the first
+ * and the second half of the run into *max_first, *max_second, and every
+ * stride-th into the series out (at most n points, floored at eps for a
+ * log axis).  Reports the run's statistics on res.  Returns MM_OK,
+ * MM_ENOMEM or mm_symp_solve's code with err filled. */
+int mm_dyn_dpend_symplectic(const mm_dpend *s, const double *y0, double t_end, double h, mm_symp_method m,
+                            long max_steps, double E0, double Es, int out, int n, double *max_first,
+                            double *max_second, mm_result *res, mm_error *err);
 
 /* dyn-double-pendulum's animation: the pendulum from y0 and its twin from
  * y0b (DOP853 at rtol), the lower bob's path, over about one slow period

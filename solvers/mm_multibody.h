@@ -182,4 +182,15 @@ double mm_dpend_energy_allowance(const mm_dpend *s, const double *y, double rtol
 int mm_growth_fit(const double *x, const double *d, int n, double d0, int *i_lo, int *i_hi, double *lam,
                   double *a0, double *se);
 
+/* ---- chapter 4 (dyn-double-pendulum): Lagrange's equations against Hamilton's ---- */
+
+/* At the state y = (theta1, theta2, w1, w2): dp/dt from Hamilton's
+ * equations (mm_dpend_rhs_hamilton at the momenta of y) against d(M w)/dt
+ * = M w' + M' w from Lagrange's (mm_dpend_rhs_lagrange), and Hamilton's
+ * dtheta/dt against w (times trace M, to be a momentum rate too).  Returns
+ * the larger difference; *scale receives the largest term summed times
+ * cond M ~ trace^2 / det (the Hamiltonian side goes through M^-1): the two
+ * agree to a few eps of it.  Cannot fail. */
+double mm_dpend_lh_residual(const mm_dpend *s, const double *y, double *scale);
+
 #endif

@@ -138,35 +138,6 @@ static int watch_step(double t, const double *y, double *g, void *p)
     return 0;
 }
 
-/* The symplectic run's observer: the energy error at every step, its
- * maximum over each half of the run, and the plotted samples. */
-typedef struct symp_obs {
-    const mm_dpend *s;
-    double E0, scale;
-    long N, stride;
-    double max_first, max_second;
-    mm_series *out;
-    int k;
-} symp_obs;
-
-static int observe(long step, double t, const double *y, void *ctx)
-{
-    symp_obs *o = ctx;
-    double yw[4];
-    mm_dpend_to_velocities(o->s, y, yw);
-    double e = fabs(mm_dpend_energy(o->s, yw, NULL) - o->E0) / o->scale;
-    if (2 * step <= o->N)
-        o->max_first = fmax(o->max_first, e);
-    else
-        o->max_second = fmax(o->max_second, e);
-    if (step % o->stride == 0 && o->k < o->out->n) {
-        o->out->x[o->k] = t;
-        o->out->y[o->k] = fmax(e, DBL_EPSILON);            /* a log axis needs a floor */
-        o->k++;
-    }
-    return 0;
-}
-
 /* ---- solve ------------------------------------------------------------------------ */
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -231,21 +202,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
         /* Lagrange's equations against Hamilton's at this state: dp/dt from
          * Hamilton must equal d(M w)/dt = M w' + M' w from Lagrange */
-        double dl[4], yp[4], dh[4];
-        mm_dpend_rhs_lagrange(0, y, dl, &s);
-        mm_dpend_to_momenta(&s, y, yp);
-        mm_dpend_rhs_hamilton(0, yp, dh, &s);
-        double d = y[0] - y[1], dd = y[2] - y[3], c = cos(d), sn = sin(d), k = s.m2 * s.l1 * s.l2;
-        double M11 = (s.m1 + s.m2) * s.l1 * s.l1, M22 = s.m2 * s.l2 * s.l2;
-        double p1 = M11 * dl[2] + k * (c * dl[3] - sn * dd * y[3]);
-        double p2 = M22 * dl[3] + k * (c * dl[2] - sn * dd * y[2]);
-        double big = fabs(M11 * dl[2]) + fabs(k * dl[3]) + fabs(k * dd * y[3]) + fabs(M22 * dl[3]) +
-                     fabs(k * dl[2]) + fabs(k * dd * y[2]) + fabs(dh[2]) + fabs(dh[3]);
-        lh_worst = fmax(lh_worst, fmax(fabs(p1 - dh[2]), fabs(p2 - dh[3])));
-        lh_worst = fmax(lh_worst, fmax(fabs(dh[0] - y[2]), fabs(dh[1] - y[3])) * (M11 + M22));
-        /* the Hamiltonian side goes through M^-1: its rounding grows with cond M ~ trace^2 / det */
-        double cond = (M11 + M22) * (M11 + M22) / (M11 * M22 - k * k * c * c);
-        lh_scale = fmax(lh_scale, (big + (fabs(y[2]) + fabs(y[3])) * (M11 + M22)) * cond);
+        double sc, r = mm_dpend_lh_residual(&s, y, &sc);
+        lh_worst = fmax(lh_worst, r);
+        lh_scale = fmax(lh_scale, sc);
     }
     sdp->n = nd;
     mm_res_method(res, "Lagrange's equations by dop853 (reference, rtol 1e-10; twins 1e-12) and dopri5; Hamilton's by "
@@ -255,39 +214,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method_stat(res, "dopri5_steps", (double)rd.n_accepted);
     mm_res_method_stat(res, "dopri5_evaluations", (double)rd.n_eval);
 
-    /* the symplectic run on Hamilton's equations, in (theta, p) */
-    double yp0[4], scale[4];
-    mm_dpend_to_momenta(&s, y0, yp0);
-    double pscale = (s.m1 + s.m2) * s.l1 * s.l1 * mm_dyn_dpend_rate(&s, y0);
-    scale[0] = scale[1] = 1, scale[2] = scale[3] = pscale;
-    mm_symp_problem sp = {.n = 4, .f = mm_dpend_rhs_hamilton, .params = &s, .t0 = 0, .t_end = t_end, .y0 = yp0,
-                          .scale = scale};
-    mm_symp_options so;
-    mm_symp_options_init(&so);
-    so.method = sm;
-    so.h = h;
-    so.max_steps = MAX_SYMP_STEPS;
-    so.max_iter = 200;
+    /* the symplectic run on Hamilton's equations, in (theta, p): its energy
+     * error at every step, largest over each half of the run */
     long N = (long)ceil(t_end / h);
-    mm_series *ssy = mm_res_series(res, O_DE_SY, (int)fmin(n, N + 1));
-    if (!ssy)
-        return MM_ENOMEM;
-    symp_obs ob = {.s = &s, .E0 = E0, .scale = Es, .N = N, .stride = (N + ssy->n - 2) / (ssy->n - 1),
-                   .out = ssy};
-    if (ob.stride < 1)
-        ob.stride = 1;
-    mm_symp_work *sw = mm_symp_work_alloc(4);
-    mm_symp_result sres;
-    rc = mm_symp_solve(&sp, &so, sw, observe, &ob, NULL, &sres, err);
-    mm_symp_work_free(sw);
+    double max_first, max_second;
+    rc = mm_dyn_dpend_symplectic(&s, y0, t_end, h, sm, MAX_SYMP_STEPS, E0, Es, O_DE_SY, n, &max_first, &max_second,
+                                 res, err);
     if (rc != MM_OK)
         return rc;
-    ssy->n = ob.k;
-    mm_res_method_stat(res, "symplectic_h", sres.h);
-    mm_res_method_stat(res, "symplectic_steps", (double)sres.n_steps);
-    mm_res_method_stat(res, "symplectic_evaluations", (double)sres.n_eval);
-    mm_res_method_stat(res, "symplectic_iterations_mean", sres.iter_mean);
-    double sy_drift = fmax(ob.max_first, ob.max_second);
+    double sy_drift = fmax(max_first, max_second);
     /* the two drifts are the runs' own (no script or second method can
      * reproduce another integrator's rounding): said in words, plotted */
     mm_res_method_stat(res, "dopri5_largest_energy_error", dp_drift);
@@ -311,10 +246,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                      ref_drift, 0, allow * (4 + 0.75 * sqrt(n_ref)));
     mm_check_residual(res, "Lagrange's equations vs Hamilton's: dp/dt = d(M w)/dt at every plotted state "
                            "(scale: largest term times cond M)", lh_worst, lh_scale, 8);
-    /* a symplectic method's energy error oscillates but does not grow: the
-     * second half of the run may not exceed the first by more than the
-     * variation between regions the motion visits (x4) and round-off */
-
     /* the twins: the reference and a start moved by sep in theta2, DOP853
      * at 1e-12, over at most 40 periods of the fast small oscillation (a
      * chaotic pair parts within a few); their distance on a grid */
@@ -397,7 +328,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * second half, with gauss4's error 1.2 times that of the first) */
     if (i_lo < 0 && t_end * mm_dyn_dpend_rate(&s, y0) > 20 * 2 * M_PI && t_end * ws > 20 * 2 * M_PI)
         mm_res_check_abs(res, "symplectic energy error: largest over the second half vs over the first half",
-                         ob.max_second, 0, 4 * ob.max_first + 64 * DBL_EPSILON * sqrt((double)N));
+                         max_second, 0, 4 * max_first + 64 * DBL_EPSILON * sqrt((double)N));
     if (dp_drift > 10 * sy_drift && t_end * wf > 200)
         mm_res_warn(res, "over this run Dormand-Prince's energy error (%.2g) grew past the symplectic "
                          "method's (%.2g), which stays bounded", dp_drift, sy_drift);
