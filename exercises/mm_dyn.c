@@ -714,3 +714,19 @@ int mm_dyn_dpend_symplectic(const mm_dpend *s, const double *y0, double t_end, d
     *max_second = ob.max_second;
     return MM_OK;
 }
+
+double mm_dyn_dpend_separation(const double *ya, const double *yb, int n, const double *x, double wf, double d0,
+                               double *d, double *plot)
+{
+    double t_h = -1;
+    for (int i = 0; i < n; i++) {
+        d[i] = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
+        plot[i] = fmax(d[i], DBL_EPSILON * d0);
+        if (t_h < 0 && d[i] > 1e-3) {
+            double dp = mm_dyn_dpend_distance(ya + 4 * (i - 1), yb + 4 * (i - 1), wf);
+            /* log-linear interpolation between the two grid points */
+            t_h = x[i - 1] + (x[i] - x[i - 1]) * log(1e-3 / dp) / log(d[i] / dp);
+        }
+    }
+    return t_h;
+}

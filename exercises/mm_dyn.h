@@ -148,6 +148,14 @@ int mm_dyn_dpend_run(const mm_dpend *s, const double *y0, double t_end, int n, c
  * units of wf.  Cannot fail. */
 double mm_dyn_dpend_distance(const double *a, const double *b, double wf);
 
+/* The separation of two runs ya, yb of the double pendulum (n states on
+ * the times x): d[i] by mm_dyn_dpend_distance, and plot[i] the same
+ * floored at eps d0 (a log axis).  Returns the time the two are 1e-3 apart
+ * (log-linear between the grid points), or -1 when they never are.
+ * Cannot fail. */
+double mm_dyn_dpend_separation(const double *ya, const double *yb, int n, const double *x, double wf, double d0,
+                               double *d, double *plot);
+
 /* dyn-double-pendulum's symplectic run: Hamilton's equations in (theta, p)
  * from y0 = (theta1, theta2, w1, w2) by method m with step h over [0, t_end]
  * (at most max_steps steps; the Newton scale of p from the fastest rate),

@@ -266,21 +266,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (rc != MM_OK)
         return rc;
     double d0 = mm_dyn_dpend_distance(y0, y0b, wf);
-    int i_lo = -1, i_hi = -1;
-    double t_h = -1;
-    for (int i = 0; i < n; i++) {
-        double d = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
-        ssep->y[i] = fmax(d, DBL_EPSILON * d0);
-        /* the exponential regime: from 1e3 d0 (past the start's transient) to 1e-3 (before saturation) */
-        if (i_lo < 0 && d > 1e3 * d0)
-            i_lo = i;
-        if (i_hi < 0 && d > 1e-3) {
-            i_hi = i;
-            double dp = mm_dyn_dpend_distance(ya + 4 * (i - 1), yb + 4 * (i - 1), wf);
-            /* log-linear interpolation between the two grid points */
-            t_h = ssep->x[i - 1] + (ssep->x[i] - ssep->x[i - 1]) * log(1e-3 / dp) / log(d / dp);
-        }
-    }
+    double *dsep = mm_res_alloc(res, (size_t)n * sizeof *dsep);
+    if (!dsep)
+        return MM_ENOMEM;
+    double t_h = mm_dyn_dpend_separation(ya, yb, n, ssep->x, wf, d0, dsep, ssep->y);
     if (t_h >= 0)
         mm_res_scalar_err(res, O_THORIZON, t_h, ssep->x[1] - ssep->x[0], MM_ERR_ESTIMATE);
     /* the exponent depends on where the motion goes while the twins part,
@@ -291,12 +280,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * the two exponents is the sensitivity the estimate has, and the stated
      * error is the larger of it and 2 se. */
     double lam, a0, se, lam_c, a0_c, se_c;
-    int jl, jh;
-    double *dsep = mm_res_alloc(res, (size_t)n * sizeof *dsep);
-    if (!dsep)
-        return MM_ENOMEM;
-    for (int i = 0; i < n; i++)
-        dsep[i] = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
+    int i_lo, i_hi, jl, jh;
     if (mm_growth_fit(ssep->x, dsep, n, d0, &i_lo, &i_hi, &lam, &a0, &se)) {
         double y0c[4] = {y0[0] + sep, y0[1], y0[2], y0[3]};
         rc = mm_dyn_dpend_run(&s, y0c, t_ly, n, ssep->x, MM_ODE_DOP853, RTOL_TWIN, yb, &rb, err);
