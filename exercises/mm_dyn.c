@@ -730,3 +730,75 @@ double mm_dyn_dpend_separation(const double *ya, const double *yb, int n, const 
     }
     return t_h;
 }
+
+/* ---- dyn-slider-crank: the reference runs and the comparison with them ----------- */
+
+int mm_dyn_sc_reference_runs(mm_sc_system *sys, double w0, double t_end, int n, const double *x,
+                             const mm_ode_options *opt, const mm_ode_result *r, double **yref, double **yalt,
+                             double *tol_ref, mm_result *res, mm_error *err)
+{
+    double *yr = mm_res_alloc(res, (size_t)n * 2 * sizeof *yr), *ya = mm_res_alloc(res, (size_t)n * 2 * sizeof *ya);
+    if (!yr || !ya)
+        return MM_ENOMEM;
+    double y0r[2] = {0, w0};
+    mm_ode_problem pr = {.n = 2, .f = mm_sc_rhs_reduced, .params = sys, .t0 = 0, .t_end = t_end, .y0 = y0r};
+    mm_ode_options orf = *opt;
+    orf.rtol = orf.atol = fmax(1e-13, fmin(1e-12, 1e-3 * opt->rtol));   /* DOP853 struggles below 1e-13 */
+    mm_ode_result rref = {.t_out = x, .nout = (size_t)n, .y_out = yr};
+    int rc = mm_ode_run(&pr, &orf, &rref, err);
+    if (rc != MM_OK)
+        return rc;
+    mm_ode_options oalt = *opt;
+    oalt.rtol = oalt.atol = 0.5 * opt->rtol;
+    /* the run at half the tolerance needs about 1.1 times the run's steps
+     * (DOP853: rtol^(1/8)); the budget ends a run that went astray before
+     * it costs seconds (its failure is not the answer's) */
+    oalt.max_steps = 4 * (r->n_accepted + r->n_rejected) + 1000;
+    mm_ode_result ralt = {.t_out = x, .nout = (size_t)n, .y_out = ya};
+    mm_error ealt = {0};
+    rc = mm_ode_run(&pr, &oalt, &ralt, &ealt);
+    if (rc == MM_ENOMEM || rc == MM_EINTERNAL)
+        return rc;
+    if (rc != MM_OK)                        /* no second sample: the reference's stands for it */
+        for (int i = 0; i < 2 * n; i++)
+            ya[i] = yr[i];
+    *yref = yr;
+    *yalt = ya;
+    *tol_ref = orf.rtol * (double)rref.n_accepted;
+    return MM_OK;
+}
+
+int mm_dyn_sc_compare(const mm_slider_crank *s, int partition, int ny, int n, const double *y, const double *yref,
+                      const double *yalt, double tol_ref, const double *fa, const double *fb, const double *N,
+                      double *absn, mm_dyn_sc_cmp *c, mm_error *err)
+{
+    *c = (mm_dyn_sc_cmp){0};
+    for (int i = 0; i < n; i++) {
+        double q[MM_SC_NQ], qd[MM_SC_NQ], qdd[MM_SC_NQ], lam[MM_SC_NC];
+        double qa[MM_SC_NQ], qda[MM_SC_NQ], qdda[MM_SC_NQ], la[MM_SC_NC];
+        mm_sc_assemble(s, yref[2 * i], yref[2 * i + 1], q, qd);
+        if (mm_sc_accel(s, q, qd, 0, 0, qdd, lam) != MM_OK)
+            return mm_error_set(err, MM_ESINGULAR, "l", "the constraints became dependent: the rod stood vertical");
+        c->ra = fmax(c->ra, hypot(lam[0], lam[1])), c->rb = fmax(c->rb, hypot(lam[2], lam[3]));
+        c->rn = fmax(c->rn, fabs(lam[3]));
+        mm_sc_assemble(s, yalt[2 * i], yalt[2 * i + 1], qa, qda);
+        if (mm_sc_accel(s, qa, qda, 0, 0, qdda, la) != MM_OK)
+            return mm_error_set(err, MM_ESINGULAR, "l", "the constraints became dependent: the rod stood vertical");
+        double fr = hypot(lam[0], lam[1]), br = hypot(lam[2], lam[3]);
+        c->aa = fmax(c->aa, fmax(fabs(fa[i] - fr), 2 * fabs(hypot(la[0], la[1]) - fr)));
+        c->ab = fmax(c->ab, fmax(fabs(fb[i] - br), 2 * fabs(hypot(la[2], la[3]) - br)));
+        c->an = fmax(c->an, fmax(fabs(fabs(N[i]) - fabs(lam[3])), 2 * fabs(fabs(la[3]) - fabs(lam[3]))));
+        double qm[MM_SC_NQ], qdm[MM_SC_NQ], bJ;
+        mm_dyn_sc_state(s, partition, y + (size_t)i * (size_t)ny, qm, qdm);
+        c->eb = fmax(c->eb, mm_dyn_sc_energy_bound(s, qm, qdm, q, qd, tol_ref, &bJ));
+        c->ebJ = fmax(c->ebJ, bJ);
+        absn[i] = fabs(N[i]);
+        if (fa[i] > fa[c->ia])
+            c->ia = i;
+        if (fb[i] > fb[c->ib])
+            c->ib = i;
+        if (absn[i] > absn[c->in])
+            c->in = i;
+    }
+    return MM_OK;
+}

@@ -179,6 +179,43 @@ int mm_dyn_dpend_animate(const mm_dpend *s, double t_end, const double *y0, cons
  * the crank's angle and speed (partitioning).  Cannot fail. */
 void mm_dyn_sc_state(const mm_slider_crank *s, int partition, const double *y, double *q, double *qd);
 
+/* dyn-slider-crank's second and third runs of the reduced equation from
+ * (0, w0) on the n times x, for the errors of what the run (options opt,
+ * result r) shows: *yref the reference, at a tolerance 1000 times tighter
+ * than the run's (between 1e-13 and 1e-12: its own error negligible), and
+ * *yalt a run at half the run's tolerance (another step sequence: a
+ * rounding-level change moves DOP853's step decisions, so the run's
+ * distance from the reference is one sample of its error, and this run,
+ * with an error about 0.55 times the run's, doubled, a second), each n x 2
+ * from res's arena; when the third run fails (a budget of 4 times the
+ * run's steps and 1000 ends one that went astray), the reference stands in
+ * for it.  *tol_ref receives the reference's error: its tolerance at every
+ * step it took, added up.  Returns MM_OK, MM_ENOMEM or the reference run's
+ * code with err filled. */
+int mm_dyn_sc_reference_runs(mm_sc_system *sys, double w0, double t_end, int n, const double *x,
+                             const mm_ode_options *opt, const mm_ode_result *r, double **yref, double **yalt,
+                             double *tol_ref, mm_result *res, mm_error *err);
+
+/* What dyn-slider-crank's run (ny values a state, n states y) shows,
+ * against the reference and third runs (yref, yalt: crank angle and speed,
+ * mm_dyn_sc_reference_runs), state by state: */
+typedef struct mm_dyn_sc_cmp {
+    double ra, rb, rn;      /* the reference's largest bearing, rod-piston and guide forces */
+    double aa, ab, an;      /* the worst pointwise differences of the run's forces fa, fb, |N| from the
+                               reference's, or twice the third run's, whichever is larger (|max a - max b|
+                               <= max |a_i - b_i|: the largest force is reached at several dead centres,
+                               and a perturbed run may take its maximum at another one) */
+    double eb, ebJ;         /* the energy error the run's distance from the reference can make
+                               (mm_dyn_sc_energy_bound), with J(phi) w^2 / 2 for the second */
+    int ia, ib, in;         /* where the run's fa, fb and |N| are largest */
+} mm_dyn_sc_cmp;
+
+/* Fills c, and absn[i] = |N[i]|.  Returns MM_OK, or MM_ESINGULAR with err
+ * filled when the constraints became dependent (the rod stood vertical). */
+int mm_dyn_sc_compare(const mm_slider_crank *s, int partition, int ny, int n, const double *y, const double *yref,
+                      const double *yalt, double tol_ref, const double *fa, const double *fb, const double *N,
+                      double *absn, mm_dyn_sc_cmp *c, mm_error *err);
+
 /* dyn-slider-crank's animation: the system sys integrated again from y0
  * (ny states, DOP853 at rtol, steps up to h_max) on 24 frames a turn at
  * the speed wmax, over the first 4 turns at most. */

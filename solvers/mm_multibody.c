@@ -436,3 +436,23 @@ double mm_dpend_lh_residual(const mm_dpend *s, const double *y, double *scale)
     *scale = (big + (fabs(y[2]) + fabs(y[3])) * (M11 + M22)) * cond;
     return worst;
 }
+
+/* ---- chapter 4 (dyn-slider-crank): the joint forces against Newton's law ---------- */
+
+double mm_sc_momentum_residual(const mm_slider_crank *s, const double *qdd, const double *lam, double *scale)
+{
+    double fa = hypot(lam[0], lam[1]), fb = hypot(lam[2], lam[3]), N = -lam[3];
+    double Fx = -lam[0], Fy = -lam[1] + N;
+    double px = s->m_rod * qdd[1] + s->m_piston * qdd[4], py = s->m_rod * qdd[2];
+    *scale = fa + fb + fabs(s->m_rod * qdd[1]) + fabs(s->m_piston * qdd[4]) + fabs(s->m_rod * qdd[2]);
+    return hypot(Fx - px, Fy - py);
+}
+
+double mm_sc_drift(const mm_slider_crank *s, const double *q)
+{
+    double Phi[MM_SC_NC], d = 0;
+    mm_sc_constraints(s, q, NULL, Phi, NULL);
+    for (int k = 0; k < MM_SC_NC; k++)
+        d = fmax(d, fabs(Phi[k]));
+    return d;
+}

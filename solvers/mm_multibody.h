@@ -193,4 +193,18 @@ int mm_growth_fit(const double *x, const double *d, int n, double d0, int *i_lo,
  * agree to a few eps of it.  Cannot fail. */
 double mm_dpend_lh_residual(const mm_dpend *s, const double *y, double *scale);
 
+/* ---- chapter 4 (dyn-slider-crank): the joint forces against Newton's law ---------- */
+
+/* At a state of the slider-crank with accelerations qdd and multipliers lam
+ * (mm_sc_accel): the bearing force on the crank (-lam1, -lam2) and the
+ * guide force on the piston N = -lam4 accelerate the rod's and the piston's
+ * centres of mass (m_rod (x2'', y2'') + m_piston (x3'', 0)).  Returns the
+ * size of the difference [N]; *scale receives the sum of the forces and
+ * the inertia forces.  Cannot fail. */
+double mm_sc_momentum_residual(const mm_slider_crank *s, const double *qdd, const double *lam, double *scale);
+
+/* The largest constraint residual |Phi_k(q)| [m] (mm_sc_constraints).
+ * Cannot fail. */
+double mm_sc_drift(const mm_slider_crank *s, const double *q);
+
 #endif
