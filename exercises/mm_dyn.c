@@ -5,6 +5,8 @@
 #include <math.h>
 
 #include "mm_elliptic.h"
+#include "mm_exhelp.h"
+#include "mm_roots.h"
 #include "mm_scene.h"
 
 double mm_dyn_quantum(double size)
@@ -800,5 +802,93 @@ int mm_dyn_sc_compare(const mm_slider_crank *s, int partition, int ny, int n, co
         if (absn[i] > absn[c->in])
             c->in = i;
     }
+    return MM_OK;
+}
+
+/* ---- dyn-robot-2link: the work of the motors and the arm's amplification ------- */
+
+double mm_dyn_plan_work(const mm_dyn_plan *p, double *wabs)
+{
+    static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831,
+                                 0.9061798459386640};
+    static const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                 0.4786286704993665, 0.2369268850561891};
+    double work = 0;
+    *wabs = 0;
+    for (int k = 0; k < 64; k++) {
+        double a = p->T * k / 64, b = p->T * (k + 1) / 64;
+        for (int i = 0; i < 5; i++) {
+            double t = 0.5 * (a + b) + 0.5 * (b - a) * gx[i], q[2], qd[2], qdd[2], tau[2];
+            mm_dyn_plan_at(p, t, q, qd, qdd);
+            mm_robot2_inverse(&p->arm, q, qd, qdd, tau);
+            double pw = tau[0] * qd[0] + tau[1] * qd[1];
+            work += 0.5 * (b - a) * gw[i] * pw;
+            *wabs += 0.5 * (b - a) * gw[i] * (fabs(tau[0] * qd[0]) + fabs(tau[1] * qd[1]));
+        }
+    }
+    return work;
+}
+
+/* How much the open-loop arm amplifies small errors over the move: the
+ * largest norm ||Phi(t)||_inf (max row sum) of the fundamental matrix on a
+ * grid of 33 times (an estimate: an error made at t0 > 0 grows by
+ * Phi(t) Phi(t0)^-1, which is smaller while errors only grow). */
+int mm_dyn_plan_amplification(const mm_dyn_plan *p, mm_result *res, double *A, mm_error *err)
+{
+    enum { NA = 33 };
+    double t[NA], y0[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    double *y = mm_res_alloc(res, NA * 16 * sizeof *y);
+    if (!y)
+        return MM_ENOMEM;
+    mm_linspace(0, p->T, NA, t);
+    mm_dyn_plan pp = *p;
+    pp.t_left = 1;                                        /* no divergence test here */
+    mm_ode_problem prob = {.n = 16, .f = mm_dyn_plan_variational_rhs, .params = &pp, .t0 = 0, .t_end = p->T,
+                           .y0 = y0};
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, 1e-6, 1e-6, 100000);
+    mm_ode_result r = {.t_out = t, .nout = NA, .y_out = y};
+    int rc = mm_ode_run(&prob, &opt, &r, err);
+    if (rc != MM_OK)
+        return rc;
+    *A = 1;
+    for (int k = 0; k < NA; k++)
+        for (int i = 0; i < 4; i++) {
+            double row = 0;
+            for (int j = 0; j < 4; j++)
+                row += fabs(y[16 * k + 4 * i + j]);
+            *A = fmax(*A, row);
+        }
+    return MM_OK;
+}
+
+/* q2(t) - 0 for Brent */
+static int q2_of(double t, double *f, void *ctx)
+{
+    const mm_dyn_plan *p = ctx;
+    double q[2], qd[2], qdd[2];
+    mm_dyn_plan_at(p, t, q, qd, qdd);
+    *f = q[1];
+    return 0;
+}
+
+int mm_dyn_plan_stretched(const mm_dyn_plan *p, double *t_s, double *err_ts, mm_error *err)
+{
+    double qa = p->q0[1], qb = p->q0[1] + p->dq[1], fx, width;
+    *t_s = 0, *err_ts = 0;
+    if (qa == 0 || qb == 0) {
+        *t_s = qa == 0 ? 0 : p->T;
+        return MM_OK;
+    }
+    int iter = 0;
+    int rc = mm_roots_brent(q2_of, (void *)p, 0, p->T, qa, qb, 1e-14 * p->T, 200, t_s, &fx, &width, &iter, NULL,
+                            err);
+    if (rc != MM_OK)
+        return rc;
+    /* an exact zero of the computed q2(t) ends Brent early: then the root is
+     * off by the rounding of q2 over its speed there */
+    double q[2], qd[2], qdd[2];
+    mm_dyn_plan_at(p, *t_s, q, qd, qdd);
+    double e = fx == 0 ? 4 * DBL_EPSILON * (fabs(qa) + fabs(qb)) / fabs(qd[1]) : width;
+    *err_ts = e + 1e-14 * p->T;
     return MM_OK;
 }

@@ -60,6 +60,28 @@ double mm_dyn_plan_growth(const mm_dyn_plan *p);
  * mm_ode right-hand side of 16 values (Phi row-major); set p->t_left >= 0. */
 int mm_dyn_plan_variational_rhs(double t, const double *y, double *dy, void *ctx);
 
+/* The work of the motors over the move, int tau . q' dt, by 5-point
+ * Gauss-Legendre on 64 panels (the integrand is a polynomial in t times
+ * sines and cosines: far below round-off), and into *wabs the same of
+ * |tau_1 q1'| + |tau_2 q2'| (the scale of its rounding).  Cannot fail. */
+double mm_dyn_plan_work(const mm_dyn_plan *p, double *wabs);
+
+/* How much the open-loop arm amplifies small errors over the move: into *A
+ * the largest norm ||Phi(t)||_inf (max row sum, at least 1) of the
+ * fundamental matrix of the variational equations (DOP853 at 1e-6) on a
+ * grid of 33 times (an estimate: an error made at t0 > 0 grows by Phi(t)
+ * Phi(t0)^-1, which is smaller while errors only grow).  Returns MM_OK,
+ * MM_ENOMEM or the integrator's code with err filled. */
+int mm_dyn_plan_amplification(const mm_dyn_plan *p, mm_result *res, double *A, mm_error *err);
+
+/* When the arm is stretched (q2 = 0) on a move whose q2 passes 0 (it moves
+ * monotonically from q2_0 to q2_1): *t_s by Brent on q2(t) to 1e-14 T, and
+ * its bound *err_ts (the final bracket, or when an exact zero of the
+ * computed q2 ended Brent early, the rounding of q2 over its speed there);
+ * at an end where q2 is exactly 0, that end with *err_ts = 0 (exact).
+ * Returns MM_OK or mm_roots_brent's code with err filled. */
+int mm_dyn_plan_stretched(const mm_dyn_plan *p, double *t_s, double *err_ts, mm_error *err);
+
 /* dyn-robot-2link's animation: the arm over the planned move (24 frames a
  * fifth of T), its base, and the tip's planned path.  Returns MM_OK or
  * MM_ENOMEM. */
