@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "mm_exhelp.h"
+#include "mm_vib.h"
 
 int mm_num_f_compile(mm_num_f *f, const char *text, mm_error *err)
 {
@@ -175,4 +176,38 @@ int mm_num_fit_plot(mm_result *res, int data, int curve, int n, const double *x,
     for (int i = 0; i < NP; i++)
         sf->y[i] = mm_poly_eval(ncoef, bt, (sf->x[i] - mu) / scale, NULL);
     return MM_OK;
+}
+
+int mm_num_newmark_run(const mm_newmark_problem *pb, const mm_newmark_options *base, double h, long N, long stride,
+                       int points, mm_num_newmark_rows *o, mm_result *res, mm_error *err)
+{
+    int n = pb->n;
+    mm_newmark_problem prob = *pb;
+    prob.t_end = N * h;
+    mm_newmark_options opt = *base;
+    opt.h = h, opt.stride = stride, opt.points = points, opt.work_in_q = 1;
+    int rc = mm_newmark_check(&prob, &opt, err), rows = mm_newmark_output_rows(&prob, &opt);
+    if (rc != MM_OK)
+        return rc;
+    o->t = mm_res_alloc(res, (size_t)rows * sizeof *o->t);
+    o->q = mm_res_alloc(res, (size_t)rows * n * sizeof *o->q);
+    o->e = mm_res_alloc(res, (size_t)rows * sizeof *o->e);
+    mm_newmark_work *w = mm_newmark_work_alloc(n);
+    if (!o->t || !o->q || !o->e || !w) {
+        mm_newmark_work_free(w);
+        return MM_ENOMEM;
+    }
+    o->r = (mm_newmark_result){.t = o->t, .q = o->q, .energy = o->e, .max_rows = rows};
+    rc = mm_newmark_solve(&prob, &opt, w, &o->r, err);
+    mm_newmark_work_free(w);
+    return rc;
+}
+
+int mm_num_newmark_draw(mm_result *res, int n, const double *K, const mm_num_newmark_rows *a)
+{
+    mm_anim *an = mm_res_animation(res, a->r.rows, "t", "s");
+    if (!an)
+        return MM_ENOMEM;
+    memcpy(an->t, a->t, (size_t)a->r.rows * sizeof *a->t);
+    return mm_vib_masses_draw(res, n, K, a->r.rows, a->q, 4 * mm_vib_big(a->q, (size_t)a->r.rows * n));
 }

@@ -7,6 +7,7 @@
 #include "mm_dd.h"
 #include "mm_exercise.h"
 #include "mm_expr.h"
+#include "mm_newmark.h"
 #include "mm_poly.h"
 
 /* ---- a function of x typed by the learner ----------------------------------------- */
@@ -82,5 +83,27 @@ int mm_num_poly_curve(mm_result *res, int out, int ncoef, const double *p, const
  * cancellation of powers of x).  Returns MM_OK or MM_ENOMEM. */
 int mm_num_fit_plot(mm_result *res, int data, int curve, int n, const double *x, const double *y, int ncoef,
                     const double *bt, double mu, double scale);
+
+/* ---- num-newmark ------------------------------------------------------------------- */
+
+/* The rows a Newmark run stored, in res's arena. */
+typedef struct mm_num_newmark_rows {
+    double *t, *q;               /* the stored rows: times, and n displacements each */
+    mm_newmark_energy *e;        /* the energy balance (eq. 7 of newmark.md) at them */
+    mm_newmark_result r;
+} mm_num_newmark_rows;
+
+/* N steps of h of the problem pb (its t_end taken as N h) with the options
+ * base, storing every stride-th step and the last, or `points` rows spread
+ * evenly when points > 0, the work of the forces integrated in q
+ * (work_in_q).  Returns MM_OK, MM_ENOMEM, or mm_newmark_check's or
+ * mm_newmark_solve's code with err filled. */
+int mm_num_newmark_run(const mm_newmark_problem *pb, const mm_newmark_options *base, double h, long N, long stride,
+                       int points, mm_num_newmark_rows *o, mm_result *res, mm_error *err);
+
+/* The masses of stiffness K (n of them) on their springs, one frame a
+ * stored row of a (mm_vib_masses_draw, drawn to 4 times the largest
+ * displacement).  Returns MM_OK or MM_ENOMEM. */
+int mm_num_newmark_draw(mm_result *res, int n, const double *K, const mm_num_newmark_rows *a);
 
 #endif
