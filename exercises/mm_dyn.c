@@ -6,6 +6,7 @@
 
 #include "mm_elliptic.h"
 #include "mm_exhelp.h"
+#include "mm_pendulum.h"
 #include "mm_roots.h"
 #include "mm_scene.h"
 
@@ -890,5 +891,55 @@ int mm_dyn_plan_stretched(const mm_dyn_plan *p, double *t_s, double *err_ts, mm_
     mm_dyn_plan_at(p, *t_s, q, qd, qdd);
     double e = fx == 0 ? 4 * DBL_EPSILON * (fabs(qa) + fabs(qb)) / fabs(qd[1]) : width;
     *err_ts = e + 1e-14 * p->T;
+    return MM_OK;
+}
+
+/* ---- dyn-pendulum: the period measured, and against the amplitude --------------- */
+
+/* The period measured from the integration, where it is well conditioned:
+ * the times of two successive passages through the bottom (theta = 0 mod
+ * 2 pi, where |theta'| is largest), each located by one Newton step from
+ * the integrated state at the closed form's prediction.  Half a period
+ * apart for a swing, a whole one for a turn over the top. */
+int mm_dyn_pend_measure_period(const mm_dyn_pend *p, mm_ode_rhs f, double rtol, double h_max, mm_result *res,
+                               double *Tm, double *dE, mm_error *err)
+{
+    double K = mm_elliptic_Kc(p->kc), ta, tb, target_a, target_b, half;
+    if (p->motion == MM_DYN_SWING) {
+        ta = (2 * K - p->u0) / p->wn;               /* u = 2K: sn = 0 */
+        half = 2 * K / p->wn;                       /* T/2 */
+        target_a = target_b = 0;
+    } else {
+        double v = p->kk * p->wn;                   /* v = sg kk wn t + u0 = 2K j */
+        ta = p->sg > 0 ? (2 * K - p->u0) / v : p->u0 / v;
+        half = 2 * K / v;                           /* T */
+        target_a = p->sg > 0 ? 2 * M_PI : 0;
+        target_b = target_a + 2 * M_PI * p->sg;
+    }
+    tb = ta + half;
+    double y0[2] = {p->theta0, p->omega0}, tt[2] = {ta, tb}, x[2], v[2];
+    mm_ode_result r;
+    int rc = mm_ex_ode_grid(2, f, (void *)p, y0, tb, 2, tt, rtol, rtol, h_max, x, v, &r, res, err);
+    if (rc != MM_OK)
+        return rc;
+    double ca = ta - (x[0] - target_a) / v[0], cb = tb - (x[1] - target_b) / v[1];
+    *Tm = (cb - ca) * (p->motion == MM_DYN_SWING ? 2 : 1);
+    double E0 = mm_dyn_pend_energy(p, p->theta0, p->omega0);
+    *dE = fmax(fabs(mm_dyn_pend_energy(p, x[0], v[0]) - E0), fabs(mm_dyn_pend_energy(p, x[1], v[1]) - E0));
+    return MM_OK;
+}
+
+int mm_dyn_pend_period_curve(mm_result *res, int curve, int series)
+{
+    enum { NC = 200 };
+    mm_series *sc = mm_res_series(res, curve, NC), *ss = mm_res_series(res, series, NC);
+    if (!sc || !ss)
+        return MM_ENOMEM;
+    for (int i = 0; i < NC; i++) {
+        double a0 = 3.1 * i / (NC - 1);          /* up to 3.1 rad: the ratio is 4.5 there */
+        sc->x[i] = ss->x[i] = a0;
+        sc->y[i] = mm_pendulum_period_ratio(a0);
+        ss->y[i] = 1 + a0 * a0 / 16;
+    }
     return MM_OK;
 }

@@ -146,6 +146,23 @@ double mm_dyn_pend_energy(const mm_dyn_pend *p, double th, double w);
  * central difference (~1e-8 relative: it sizes a tolerance).  Cannot fail. */
 double mm_dyn_pend_period_sensitivity(const mm_dyn_pend *p);
 
+/* The period of p measured from an integration of f (its equation of
+ * motion, ctx p) by DOP853 at rtol with steps up to h_max, where it is well
+ * conditioned: the times of two successive passages through the bottom
+ * (theta = 0 mod 2 pi, where |theta'| is largest), each located by one
+ * Newton step from the integrated state at the closed form's prediction;
+ * half a period apart for a swing, a whole one for a turn over the top.
+ * *dE receives the larger energy error of the two states.  Not on the
+ * separatrix.  Returns MM_OK or the integrator's code with err filled. */
+int mm_dyn_pend_measure_period(const mm_dyn_pend *p, mm_ode_rhs f, double rtol, double h_max, mm_result *res,
+                               double *Tm, double *dE, mm_error *err);
+
+/* The period against the amplitude, eq. (5): T / T0 (mm_pendulum) as the
+ * series `curve` and its first correction 1 + theta0^2 / 16 as `series`,
+ * 200 amplitudes up to 3.1 rad (the ratio is 4.5 there).  Returns MM_OK or
+ * MM_ENOMEM. */
+int mm_dyn_pend_period_curve(mm_result *res, int curve, int series);
+
 /* dyn-pendulum's animation: the pendulum over the frames of t_end (24 a
  * period, the shorter of T and T0), each frame by the closed form, with the
  * bob's path from the n integrated angles th at the times t (at most 360

@@ -126,39 +126,6 @@ static int check(const mm_value *in, mm_error *err)
 
 /* ---- solve -------------------------------------------------------------------- */
 
-/* The period measured from the integration, where it is well conditioned:
- * the times of two successive passages through the bottom (theta = 0 mod
- * 2 pi, where |theta'| is largest), each located by one Newton step from
- * the integrated state at the closed form's prediction.  Half a period
- * apart for a swing, a whole one for a turn over the top. */
-static int measure_period(const mm_dyn_pend *p, mm_result *res, double *Tm, double *dE, mm_error *err)
-{
-    double K = mm_elliptic_Kc(p->kc), ta, tb, target_a, target_b, half;
-    if (p->motion == MM_DYN_SWING) {
-        ta = (2 * K - p->u0) / p->wn;               /* u = 2K: sn = 0 */
-        half = 2 * K / p->wn;                       /* T/2 */
-        target_a = target_b = 0;
-    } else {
-        double v = p->kk * p->wn;                   /* v = sg kk wn t + u0 = 2K j */
-        ta = p->sg > 0 ? (2 * K - p->u0) / v : p->u0 / v;
-        half = 2 * K / v;                           /* T */
-        target_a = p->sg > 0 ? 2 * M_PI : 0;
-        target_b = target_a + 2 * M_PI * p->sg;
-    }
-    tb = ta + half;
-    double y0[2] = {p->theta0, p->omega0}, tt[2] = {ta, tb}, x[2], v[2];
-    mm_ode_result r;
-    int rc = mm_ex_ode_grid(2, rhs, (void *)p, y0, tb, 2, tt, RTOL, RTOL, STEP_RADIANS / rate(p), x, v, &r,
-                            res, err);
-    if (rc != MM_OK)
-        return rc;
-    double ca = ta - (x[0] - target_a) / v[0], cb = tb - (x[1] - target_b) / v[1];
-    *Tm = (cb - ca) * (p->motion == MM_DYN_SWING ? 2 : 1);
-    double E0 = mm_dyn_pend_energy(p, p->theta0, p->omega0);
-    *dE = fmax(fabs(mm_dyn_pend_energy(p, x[0], v[0]) - E0), fabs(mm_dyn_pend_energy(p, x[1], v[1]) - E0));
-    return MM_OK;
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     mm_dyn_pend p = model(in);
@@ -255,7 +222,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double Ka = mm_elliptic_Kc(p.kc), Kc = mm_elliptic_RF(0, p.kc * p.kc, 1);
         mm_res_check_rel(res, "K: arithmetic-geometric mean vs Carlson's R_F", Ka, Kc, 8 * DBL_EPSILON);
         double Tm, dE;
-        rc = measure_period(&p, res, &Tm, &dE, err);
+        /* two successive passages through the bottom, where it is well
+         * conditioned (mm_dyn_pend_measure_period) */
+        rc = mm_dyn_pend_measure_period(&p, rhs, RTOL, STEP_RADIANS / rate(&p), res, &Tm, &dE, err);
         if (rc != MM_OK)
             return rc;
         /* each crossing time: RTOL of the angle's size divided by the speed
@@ -271,16 +240,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* the period against the amplitude (eq. 5), with its first correction */
-    enum { NC = 200 };
-    mm_series *sc = mm_res_series(res, O_RATIO_CURVE, NC), *ss = mm_res_series(res, O_RATIO_SERIES, NC);
-    if (!sc || !ss)
+    if (mm_dyn_pend_period_curve(res, O_RATIO_CURVE, O_RATIO_SERIES))
         return MM_ENOMEM;
-    for (int i = 0; i < NC; i++) {
-        double a0 = 3.1 * i / (NC - 1);          /* up to 3.1 rad: the ratio is 4.5 there */
-        sc->x[i] = ss->x[i] = a0;
-        sc->y[i] = mm_pendulum_period_ratio(a0);
-        ss->y[i] = 1 + a0 * a0 / 16;
-    }
     return mm_dyn_pend_animate(&p, t_end, n, sth->x, sth->y, res);
 }
 
