@@ -95,6 +95,11 @@ double mm_errbound_arg(mm_cdd z, double *err)
     return ang + lo;
 }
 
+double mm_errbound_polar(double r, int an, double th)
+{
+    return r * ((2.0 * an + 6) * U + (3.0 * an * th + 2) * 2 * U) * M_SQRT2;
+}
+
 void mm_errbound_roots(mm_cdd a, double r, double theta, int n, double *re, double *im, double *back,
                        double *back_tol, double *sum, double *sum_tol)
 {

@@ -47,6 +47,14 @@ double mm_errbound_ulp(double x);
  * the argument 0 by convention, within pi if z.err > 0.  Cannot fail. */
 double mm_errbound_arg(mm_cdd z, double *err);
 
+/* How far r e^(i theta) computed in polar form in double can be from the
+ * exact number, for r from hypot and theta from atan2 (each within an
+ * ulp), then a power n (|n| = an; 1 for a product or a quotient) and n
+ * theta (|theta| <= th) and cos and sin: the modulus within (|n| + 3) u
+ * relative, the angle within (3 |n| th + 2) u, both doubled and taken
+ * together (sqrt 2).  Cannot fail. */
+double mm_errbound_polar(double r, int an, double th);
+
 /* The n roots w_k of a (mm_cdd_root with r = |a|, theta = arg a in
  * double), rounded to double into re[k], im[k], k = 0..n-1, and two checks
  * of them as printed, in double-double: *back = max |w_k^n - a| with its

@@ -133,12 +133,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_num_arrow(res, O_Z, zre, zim))
         return MM_ENOMEM;
 
-    /* polar in double: r from hypot and theta from atan2 (each within an
-     * ulp), then pow and n theta and cos/sin: relative error of the modulus
-     * (|n| + 3) u, absolute error of the angle (3 |n| |theta| + 2) u */
+    /* polar in double (mm_errbound_polar): the modulus within (|n| + 3) u,
+     * the angle within (3 |n| |theta| + 2) u */
     int an = op == OP_MULTIPLY || op == OP_DIVIDE ? 1 : abs(n);
     double th = op == OP_MULTIPLY || op == OP_DIVIDE ? fabs(ta) + fabs(tb) : fabs(ta);
-    double polar_tol = rp * ((2.0 * an + 6) * U + (3.0 * an * th + 2) * 2 * U) * M_SQRT2 + z.err;
+    double polar_tol = mm_errbound_polar(rp, an, th) + z.err;
     double polar_dev = hypot(zre - rp * cos(tp), zim - rp * sin(tp));
     if (op == OP_ROOTS) {
         /* all n roots (eq. 8), a regular n-gon; w^n = a and sum w = 0, each

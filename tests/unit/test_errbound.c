@@ -148,6 +148,17 @@ static void roots_of_eight_should_be_the_closed_form(void **state)
     assert_true(sum <= sum_tol && sum_tol < 2.1e-15);
 }
 
+/* (2 + i)^2 = 3 + 4i by the polar form in double, within the bound */
+static void polar_bound_should_cover_a_square_in_polar_form(void **state)
+{
+    (void)state;
+    check_rel(mm_errbound_polar(1, 1, 0), 12 * U * M_SQRT2, 1e-15, "(8 u + 4 u) sqrt 2 at r = 1, theta = 0");
+    double r = hypot(2, 1), t = atan2(1, 2), rp = pow(r, 2), tp = 2 * t;
+    double dev = hypot(rp * cos(tp) - 3, rp * sin(tp) - 4), b = mm_errbound_polar(rp, 2, fabs(t));
+    assert_true(dev <= b);
+    assert_true(b < 100 * U * 5);                       /* a few tens of u of |z| = 5 */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -160,6 +171,7 @@ int main(void)
         cmocka_unit_test(ulp_should_be_the_spacing_of_doubles),
         cmocka_unit_test(arg_should_be_atan2_with_its_bound),
         cmocka_unit_test(roots_of_eight_should_be_the_closed_form),
+        cmocka_unit_test(polar_bound_should_cover_a_square_in_polar_form),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
