@@ -1,5 +1,8 @@
-/* mm_num.h — helpers of the chapter-1 (numerical methods) exercises that
- * are not numerics: their standard figures.
+/* mm_num.h — the chapter kit of the chapter-1 (numerical methods)
+ * exercises: what they share that is not numerics (that is in solvers/):
+ * a function of x typed by the learner, printed values with their bounds,
+ * their standard figures (the Argand plane, a polynomial on the real axis,
+ * a fit with its data), and num-newmark's runs and drawing.
  */
 #ifndef MM_NUM_H
 #define MM_NUM_H
