@@ -943,3 +943,38 @@ int mm_dyn_pend_period_curve(mm_result *res, int curve, int series)
     }
     return MM_OK;
 }
+
+/* ---- dyn-double-pendulum's reference run ---------------------------------------- */
+
+/* The watch over the reference's own steps: mm_ode calls an event function
+ * at the end of every accepted step (and only there while it never changes
+ * sign), so a g that stays 1 is an observer. */
+typedef struct ref_watch {
+    mm_dpend s;             /* first: mm_dpend_rhs_lagrange reads it as its params */
+    double E0, Es, rtol, drift, allow;
+} ref_watch;
+
+static int watch_step(double t, const double *y, double *g, void *p)
+{
+    (void)t;
+    ref_watch *w = p;
+    w->drift = fmax(w->drift, fabs(mm_dpend_energy(&w->s, y, NULL) - w->E0) / w->Es);
+    w->allow = fmax(w->allow, mm_dpend_energy_allowance(&w->s, y, w->rtol) / w->Es);   /* eq. (7) */
+    *g = 1;
+    return 0;
+}
+
+int mm_dyn_dpend_reference(const mm_dpend *s, const double *y0, double t_end, double rtol, int n, const double *t,
+                           double E0, double Es, double *y, mm_ode_result *r, double *drift, double *allow,
+                           mm_error *err)
+{
+    *r = (mm_ode_result){.t_out = t, .nout = (size_t)n, .y_out = y};
+    ref_watch watch = {.s = *s, .E0 = E0, .Es = Es, .rtol = rtol};
+    mm_ode_problem pref = {.n = 4, .f = mm_dpend_rhs_lagrange, .params = &watch, .t0 = 0, .t_end = t_end,
+                           .y0 = y0, .event = watch_step};
+    mm_ode_options oref = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol, 2000000);
+    int rc = mm_ode_run(&pref, &oref, r, err);
+    *drift = watch.drift;
+    *allow = watch.allow;
+    return rc;
+}

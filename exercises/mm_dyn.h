@@ -195,6 +195,21 @@ double mm_dyn_dpend_distance(const double *a, const double *b, double wf);
 double mm_dyn_dpend_separation(const double *ya, const double *yb, int n, const double *x, double wf, double d0,
                                double *d, double *plot);
 
+/* dyn-double-pendulum's reference: Lagrange's equations from y0 by DOP853
+ * at rtol (atol rtol, at most 2e6 steps) over [0, t_end], the n states at
+ * the times t into y (n x 4), the run's statistics into *r; watched at the
+ * end of every accepted step: *drift the largest energy error |E - E0| /
+ * Es there, *allow the largest allowance of eq. (7)
+ * (mm_dpend_energy_allowance) over Es.  The grid points between the steps
+ * are DOP853's dense output, a 7th-order interpolant whose error the step
+ * control does not see (on a short fast run, 23 steps and 746 points, its
+ * energy error was 10 times that of the steps themselves): the energy is
+ * judged at the steps.  Returns MM_OK or mm_ode_run's code with err
+ * filled. */
+int mm_dyn_dpend_reference(const mm_dpend *s, const double *y0, double t_end, double rtol, int n, const double *t,
+                           double E0, double Es, double *y, mm_ode_result *r, double *drift, double *allow,
+                           mm_error *err);
+
 /* dyn-double-pendulum's symplectic run: Hamilton's equations in (theta, p)
  * from y0 = (theta1, theta2, w1, w2) by method m with step h over [0, t_end]
  * (at most max_steps steps; the Newton scale of p from the fastest rate),

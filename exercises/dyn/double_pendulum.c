@@ -114,30 +114,6 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* ---- runs ---------------------------------------------------------------------- */
-
-/* The reference run's watch over its own steps: the energy error and the
- * allowance of eq. (7) at the end of every accepted step.  mm_ode calls an
- * event function there (and only there while it never changes sign), so a
- * g that stays 1 is an observer.  The grid points between steps are DOP853's
- * dense output, a 7th-order interpolant whose error the step control does
- * not see: on a short fast run (23 steps, 746 points) its energy error was
- * 10 times that of the steps themselves. */
-typedef struct ref_watch {
-    mm_dpend s;             /* first: mm_dpend_rhs_lagrange reads it as its params */
-    double E0, Es, drift, allow;
-} ref_watch;
-
-static int watch_step(double t, const double *y, double *g, void *p)
-{
-    (void)t;
-    ref_watch *w = p;
-    w->drift = fmax(w->drift, fabs(mm_dpend_energy(&w->s, y, NULL) - w->E0) / w->Es);
-    w->allow = fmax(w->allow, mm_dpend_energy_allowance(&w->s, y, RTOL_REF) / w->Es);   /* eq. (7) */
-    *g = 1;
-    return 0;
-}
-
 /* ---- solve ------------------------------------------------------------------------ */
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -164,12 +140,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!s1 || !s2 || !sdp || !yr || !yd)
         return MM_ENOMEM;
     mm_linspace(0, t_end, n, s1->x);
-    mm_ode_result rr = {.t_out = s1->x, .nout = (size_t)n, .y_out = yr}, rd;
-    ref_watch watch = {.s = s, .E0 = E0, .Es = Es};
-    mm_ode_problem pref = {.n = 4, .f = mm_dpend_rhs_lagrange, .params = &watch, .t0 = 0, .t_end = t_end,
-                           .y0 = y0, .event = watch_step};
-    mm_ode_options oref = mm_ode_options_adaptive(MM_ODE_DOP853, RTOL_REF, RTOL_REF, 2000000);
-    int rc = mm_ode_run(&pref, &oref, &rr, err);
+    /* the reference's energy error and its allowance of eq. (7), watched at
+     * the ends of its steps (mm_dyn_dpend_reference) */
+    mm_ode_result rr, rd;
+    double ref_drift, allow;
+    int rc = mm_dyn_dpend_reference(&s, y0, t_end, RTOL_REF, n, s1->x, E0, Es, yr, &rr, &ref_drift, &allow, err);
     if (rc != MM_OK)
         return rc;
     /* Dormand-Prince at the learner's tolerance is the demonstration, not
@@ -190,7 +165,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                          "its step size collapsed at t = %.4g s (%s); its energy error is plotted up to there. "
                          "The reference (DOP853 at 1e-10) and the symplectic method carry on: try a smaller "
                          "rtol", rtol, rd.t_reached, derr.msg);
-    double ref_drift = watch.drift, dp_drift = 0, lh_worst = 0, lh_scale = 0, allow = watch.allow;
+    double dp_drift = 0, lh_worst = 0, lh_scale = 0;
     for (int i = 0; i < n; i++) {
         const double *y = yr + 4 * i;
         s2->x[i] = sdp->x[i] = s1->x[i];
@@ -235,9 +210,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * controller settling) err up to it each; the many that follow have
      * errors of both signs that add like a random walk (its excursion
      * about 0.75 sqrt(steps) of them).  So the tolerance is the allowance
-     * times (4 + 0.75 sqrt(steps)), judged at the ends of the steps (see
-     * ref_watch: the dense output between them is not what the step
-     * control bounds).  The old one, 0.8 rtol (8 + rate t_end), ignored the
+     * times (4 + 0.75 sqrt(steps)), judged at the ends of the steps (the
+     * dense output between them is not what the step control bounds).  The old one, 0.8 rtol (8 + rate t_end), ignored the
      * size of the gradient and of the angles in DOP853's weights: a short
      * run with large angles and slow gravity (8 steps) erred 2.7 times over
      * it.  At the defaults the error is 1/79 of this tolerance. */
