@@ -85,6 +85,15 @@ int mm_num_f_curve(mm_result *res, int out, mm_num_f *f, double a, double b, int
     return MM_OK;
 }
 
+void mm_num_list(char *list, const double *v, int n)
+{
+    list[0] = '\0';
+    for (int i = 0; i < n && strlen(list) < 90; i++) {
+        size_t l = strlen(list);
+        snprintf(list + l, MM_NUM_LIST - l, "%s%.6g", i ? ", " : "", v[i]);
+    }
+}
+
 mm_scalar *mm_num_scalar_i_err(mm_result *res, int out, int i, double value, double error, mm_err_kind kind)
 {
     mm_scalar *s = mm_res_scalar_i(res, out, i, value);

@@ -51,6 +51,12 @@ double mm_num_f_value_err(double x, double *err, void *ctx);
 int mm_num_f_curve(mm_result *res, int out, mm_num_f *f, double a, double b, int np, int *bad,
                    double *first_bad, int *crossings);
 
+/* The values v[0..n-1] for a warning, "%.6g" each, separated by ", ",
+ * until the list passes 90 characters (it fits MM_NUM_LIST).  Cannot
+ * fail. */
+#define MM_NUM_LIST 120
+void mm_num_list(char *list, const double *v, int n);
+
 /* Member i of the scalar family `out` with its error (mm_res_scalar_i,
  * then mm_res_scalar_err's error and kind).  Never NULL. */
 mm_scalar *mm_num_scalar_i_err(mm_result *res, int out, int i, double value, double error, mm_err_kind kind);

@@ -176,11 +176,8 @@ static int run(const mm_value *in, mm_num_f *c, mm_result *res, mm_error *err)
                     "outside the domain, such as sqrt of a negative number); they are left out of the plot",
                     bad, PLOT, first_bad);
     if (rr.npoles) {
-        char list[120] = "";
-        for (int i = 0; i < rr.npoles && i < MAXPOLES && strlen(list) < 90; i++) {
-            size_t l = strlen(list);
-            snprintf(list + l, sizeof list - l, "%s%.6g", i ? ", " : "", poles[i]);
-        }
+        char list[MM_NUM_LIST];
+        mm_num_list(list, poles, rr.npoles < MAXPOLES ? rr.npoles : MAXPOLES);
         mm_res_warn(res, "%d sign change%s at a pole, not a root (|f| grows as the bracket shrinks): x = %s%s",
                     rr.npoles, rr.npoles > 1 ? "s are" : " is", list, rr.npoles > MAXPOLES ? ", ..." : "");
     }
