@@ -47,6 +47,17 @@ int mm_num_f_eval_err(double x, double *fx, double *err, void *ctx)
     return 0;
 }
 
+double mm_num_f_rounding(mm_num_f *f, int n, const double *x)
+{
+    double ef = 0;
+    for (int i = 0; i < n; i += (n + 31) / 32) {
+        double e;
+        mm_expr_eval_err(f->e, &x[i], &e);
+        ef = fmax(ef, e);
+    }
+    return ef;
+}
+
 double mm_num_f_value_err(double x, double *err, void *ctx)
 {
     mm_num_f *f = ctx;

@@ -39,6 +39,10 @@ double mm_num_f_at(mm_num_f *f, double x);
  * work).  Always 0. */
 int mm_num_f_eval_err(double x, double *fx, double *err, void *ctx);
 
+/* The largest rounding error of f (mm_expr_eval_err) at 33 of the n
+ * points x at most (every (n + 31) / 32-th).  Cannot fail. */
+double mm_num_f_rounding(mm_num_f *f, int n, const double *x);
+
 /* The same for mm_opt_refine_extreme: with err the value and its rounding
  * error (not counted), without it the value alone (counted). */
 double mm_num_f_value_err(double x, double *err, void *ctx);

@@ -40,6 +40,15 @@ void mm_samples_offer(mm_samples_cand *cd, double s, double x, double v, double 
     cd[j] = (mm_samples_cand){x, v, h, from_plot};
 }
 
+void mm_samples_offer_scan(mm_samples_cand cd[2][MM_SAMPLES_NCAND], int n, const double *x, const double *y,
+                           double h, int from_plot)
+{
+    for (int i = 0; i < n; i++)
+        for (int w = 0; w < 2 && isfinite(y[i]); w++)
+            mm_samples_offer(cd[w], w ? -1 : 1, x[i], y[i], i > 0 ? y[i - 1] : NAN, i < n - 1 ? y[i + 1] : NAN, h,
+                             from_plot);
+}
+
 void mm_samples_best(mm_opt_fn_err f, void *ctx, double s, const mm_samples_cand *cd, double a, double b,
                      double *x, double *v, double *xe, double *ve, int *from_plot)
 {

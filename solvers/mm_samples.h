@@ -36,6 +36,12 @@ typedef struct mm_samples_cand {
 void mm_samples_offer(mm_samples_cand *cd, double s, double x, double v, double vl, double vr, double h,
                       int from_plot);
 
+/* Every finite sample of a scan (x[i], y[i]), i < n, with spacing h,
+ * offered to both lists: cd[0] for the largest value, cd[1] for the
+ * smallest.  Cannot fail. */
+void mm_samples_offer_scan(mm_samples_cand cd[2][MM_SAMPLES_NCAND], int n, const double *x, const double *y,
+                           double h, int from_plot);
+
 /* Each candidate refined between its neighbours (mm_opt_refine_extreme
  * within [a, b]); the best refined one, with its errors, replaces *x, *v
  * (xe, ve 0 and from_plot 1 left when there is no candidate).  Cannot

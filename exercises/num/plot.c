@@ -153,19 +153,14 @@ static int run(const mm_value *in, mm_num_f *c, mm_result *res, mm_error *err)
      * less than the sampling misses them by), each refined between its
      * neighbours (eq. 6); the best refined one wins */
     mm_samples_cand cd[2][MM_SAMPLES_NCAND] = {{{0}}};
-    for (int i = 0; i < n; i++)                      /* the plot's samples, step (b - a) / (n - 1) */
-        if (isfinite(ys[i]))
-            for (int w = 0; w < 2; w++)
-                mm_samples_offer(cd[w], w ? -1 : 1, xs[i], ys[i], i > 0 ? ys[i - 1] : NAN,
-                                 i < n - 1 ? ys[i + 1] : NAN, (b - a) / (n - 1), 1);
+    mm_samples_offer_scan(cd, n, xs, ys, (b - a) / (n - 1), 1);     /* the plot's samples */
     for (int p = 0; have_int && p < gk.pieces; p++) {
-        double v[SCAN + 1], h = (pieces[p].b - pieces[p].a) / SCAN;
-        for (int k = 0; k <= SCAN; k++)
-            v[k] = mm_num_f_at(c, pieces[p].a + h * k);
-        for (int k = 0; k <= SCAN; k++)
-            for (int w = 0; w < 2 && isfinite(v[k]); w++)
-                mm_samples_offer(cd[w], w ? -1 : 1, pieces[p].a + h * k, v[k], k > 0 ? v[k - 1] : NAN,
-                                 k < SCAN ? v[k + 1] : NAN, h, 0);
+        double x[SCAN + 1], v[SCAN + 1], h = (pieces[p].b - pieces[p].a) / SCAN;
+        for (int k = 0; k <= SCAN; k++) {
+            x[k] = pieces[p].a + h * k;
+            v[k] = mm_num_f_at(c, x[k]);
+        }
+        mm_samples_offer_scan(cd, SCAN + 1, x, v, h, 0);
     }
     for (int w = 0; w < 2; w++) {
         double sg = w == 0 ? 1 : -1;
@@ -200,12 +195,7 @@ static int run(const mm_value *in, mm_num_f *c, mm_result *res, mm_error *err)
                          "estimates, eqs. (4)-(5)", gk.value, gl.value, gk.err + gl.err);
         /* eq. (3): the trapezoid rule on the plot's samples, with the rounding
          * of f at each sample (mm_expr_eval_err) and of the compensated sum */
-        double ef = 0, tre;
-        for (int i = 0; i < n; i += (n + 31) / 32) {       /* f's rounding, at 33 samples at most */
-            double e;
-            mm_expr_eval_err(c->e, &xs[i], &e);
-            ef = fmax(ef, e);
-        }
+        double tre, ef = mm_num_f_rounding(c, n, xs);                 /* at 33 of the samples at most */
         double tr = mm_samples_trapezoid(n, a, b, ys, ef, &tre);   /* twice the largest rounding of f seen */
         mm_res_scalar_err(res, O_INT_PLOT, tr, tre, MM_ERR_ESTIMATE);
         if (!gk.converged)

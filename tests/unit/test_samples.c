@@ -48,9 +48,7 @@ static void the_best_candidate_should_refine_to_the_peak(void **state)
         x[i] = 0.5 * i;
         y[i] = sin(x[i]);
     }
-    for (int i = 0; i < N; i++)
-        for (int w = 0; w < 2; w++)
-            mm_samples_offer(cd[w], w ? -1 : 1, x[i], y[i], i > 0 ? y[i - 1] : NAN, i < N - 1 ? y[i + 1] : NAN, 0.5, 1);
+    mm_samples_offer_scan(cd, N, x, y, 0.5, 1);
     check_abs(cd[0][0].x, 1.5, 0, "the largest sample");
     check_abs(cd[1][0].x, 4.5, 0, "the smallest sample (sin 4.5 = -0.977)");
     check_abs(cd[0][1].x, 6, 0, "the end x = 6 beats its one neighbour: a local maximum too");
@@ -62,6 +60,14 @@ static void the_best_candidate_should_refine_to_the_peak(void **state)
     check_abs(vm, 1, fmax(ve, 4 * DBL_EPSILON), "the peak value");
     assert_true(xe < 1e-6);                             /* flat top: sqrt(4 eps / 1) = 3e-8 */
     assert_int_equal(from_plot, 1);
+    /* a sample that is not finite is no candidate, and its neighbours see an
+     * end there: with sin 1.5 left out, 1.0 and 2.0 both become maxima */
+    mm_samples_cand c2[2][MM_SAMPLES_NCAND] = {{{0}}};
+    y[3] = NAN;
+    mm_samples_offer_scan(c2, N, x, y, 0.5, 0);
+    check_abs(c2[0][0].x, 2.0, 0, "sin 2 = 0.909 > sin 1 = 0.841");
+    check_abs(c2[0][1].x, 1.0, 0, "sin 1 beside the gap");
+    assert_int_equal(c2[0][0].from_plot, 0);
     /* an empty list leaves the sample as it was */
     mm_samples_cand none[MM_SAMPLES_NCAND] = {{0}};
     xm = 1.5;
