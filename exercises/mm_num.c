@@ -2,12 +2,14 @@
  * mm_num.h). */
 #include "mm_num.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "mm_exhelp.h"
+#include "mm_mdof.h"
 #include "mm_vib.h"
 
 int mm_num_f_compile(mm_num_f *f, const char *text, mm_error *err)
@@ -230,4 +232,28 @@ int mm_num_newmark_draw(mm_result *res, int n, const double *K, const mm_num_new
         return MM_ENOMEM;
     memcpy(an->t, a->t, (size_t)a->r.rows * sizeof *a->t);
     return mm_vib_masses_draw(res, n, K, a->r.rows, a->q, 4 * mm_vib_big(a->q, (size_t)a->r.rows * n));
+}
+
+int mm_num_newmark_modes(mm_result *res, int out, int n, const double *M, const double *C, const double *K, double h,
+                         double *wmax, double *kappa, mm_error *err)
+{
+    double *w = mm_res_alloc(res, (size_t)(n * n + 2 * n) * sizeof *w), *wm = w + n, *Id = wm + n;
+    mm_mdof_cmode *cm = mm_res_alloc(res, (size_t)n * sizeof *cm);
+    mm_table *mt = mm_res_table(res, out, n);
+    if (!w || !cm || !mt)
+        return MM_ENOMEM;
+    for (int i = 0; i < n * n; i++)
+        Id[i] = i % (n + 1) == 0;
+    mm_mdof_system ms = {n, M, C, K}, mi = {n, Id, NULL, M};       /* the eigenvalues of M: its conditioning */
+    int rc;
+    if ((rc = mm_mdof_modes(&(mm_mdof_system){n, M, NULL, K}, n, w, NULL, NULL, err)) ||
+        (rc = mm_mdof_modes(&mi, n, wm, NULL, NULL, err)) || (rc = mm_mdof_complex_modes(&ms, cm, err)))
+        return rc;
+    *wmax = w[n - 1];
+    *kappa = wm[0] > 0 ? wm[n - 1] * wm[n - 1] / (wm[0] * wm[0]) : 1 / DBL_EPSILON;
+    for (int j = 0; j < n; j++) {
+        double row[5] = {j + 1, cm[j].omega, cm[j].zeta, cm[j].omega_d, cm[j].omega * h};
+        memcpy(mt->cell + 5 * j, row, sizeof row);
+    }
+    return MM_OK;
 }

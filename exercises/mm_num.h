@@ -114,6 +114,15 @@ typedef struct mm_num_newmark_rows {
 int mm_num_newmark_run(const mm_newmark_problem *pb, const mm_newmark_options *base, double h, long N, long stride,
                        int points, mm_num_newmark_rows *o, mm_result *res, mm_error *err);
 
+/* The modes of M q'' + C q' + K q = 0 (n coordinates): into *wmax the
+ * highest undamped natural frequency, into *kappa cond(M) from the
+ * eigenvalues of M (1 / eps when M is singular), and the damped modes
+ * (mm_mdof_complex_modes) as the rows of the table `out`: mode, omega,
+ * zeta, omega_d, omega h.  Returns MM_OK, MM_ENOMEM or mm_mdof's code with
+ * err filled. */
+int mm_num_newmark_modes(mm_result *res, int out, int n, const double *M, const double *C, const double *K, double h,
+                         double *wmax, double *kappa, mm_error *err);
+
 /* The masses of stiffness K (n of them) on their springs, one frame a
  * stored row of a (mm_vib_masses_draw, drawn to 4 times the largest
  * displacement).  Returns MM_OK or MM_ENOMEM. */

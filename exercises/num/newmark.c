@@ -237,27 +237,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     o.max_steps = MM_NEWMARK_STEPS_CEILING;
     int rc;
 
-    /* ---- modes: undamped omega_max, damped modes for the table ---- */
-    double w[MAXN], wm[MAXN], wmax, kappa;
-    mm_mdof_system ms = {n, s.M, s.C, s.K}, mi = {n, s.M, NULL, NULL};
-    mm_mdof_cmode cm[MAXN];
-    double Id[MAXN * MAXN] = {0};
-    for (int i = 0; i < n; i++)
-        Id[i * n + i] = 1;
-    mi.M = Id, mi.K = s.M;                 /* the eigenvalues of M: its conditioning */
-    if ((rc = mm_mdof_modes(&(mm_mdof_system){n, s.M, NULL, s.K}, n, w, NULL, NULL, err)) ||
-        (rc = mm_mdof_modes(&mi, n, wm, NULL, NULL, err)) || (rc = mm_mdof_complex_modes(&ms, cm, err)))
+    /* ---- modes: undamped omega_max, cond(M), damped modes for the table ---- */
+    double wmax, kappa;
+    mm_mdof_system ms = {n, s.M, s.C, s.K};
+    if ((rc = mm_num_newmark_modes(res, O_MODES, n, s.M, s.C, s.K, h, &wmax, &kappa, err)) != MM_OK)
         return rc;
-    wmax = w[n - 1];
-    kappa = wm[0] > 0 ? wm[n - 1] * wm[n - 1] / (wm[0] * wm[0]) : 1 / eps;
     double werr = 8 * n * eps * kappa * wmax;     /* a symmetric pencil's backward error */
-    mm_table *mt = mm_res_table(res, O_MODES, n);
-    if (!mt)
-        return MM_ENOMEM;
-    for (int j = 0; j < n; j++) {
-        double row[5] = {j + 1, cm[j].omega, cm[j].zeta, cm[j].omega_d, cm[j].omega * h};
-        memcpy(mt->cell + 5 * j, row, sizeof row);
-    }
     mm_res_scalar(res, O_N, n);
     mm_res_scalar_err(res, O_WMAX, wmax, werr, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_WMAXH, wmax * h, werr * h, MM_ERR_ESTIMATE);
