@@ -5,6 +5,9 @@
 #include <math.h>
 
 #include "mm_elliptic.h"
+#include "mm_exhelp.h"
+#include "mm_pendulum.h"
+#include "mm_roots.h"
 #include "mm_scene.h"
 
 double mm_dyn_quantum(double size)
@@ -551,4 +554,427 @@ int mm_dyn_sc_animate(const mm_slider_crank *s, int partition, int ny, double t_
     mm_dyn_round_shape(piston, q);
     a->bounds[0] = -1.45 * R, a->bounds[1] = -1.45 * R, a->bounds[2] = L + R + 0.6 * wp, a->bounds[3] = 1.45 * R;
     return MM_OK;
+}
+
+/* ---- the animations of dyn-robot-2link and dyn-pendulum --------------------- */
+
+int mm_dyn_plan_animate(const mm_dyn_plan *p, mm_result *res)
+{
+    double t_show;
+    int nf = mm_scene_frames(p->T, p->T / 5, &t_show);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    if (!a)
+        return MM_ENOMEM;
+    mm_dyn_frame_times(a, t_show);
+    enum { NP = 161 };
+    double reach = p->arm.l1 + p->arm.l2, q = mm_dyn_quantum(2 * reach);
+    mm_shape *base = mm_anim_shape(res, "base", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, NP);
+    mm_shape *arm = mm_anim_shape(res, "arm", MM_SHAPE_LINE, nf, 3);
+    mm_shape *elbow = mm_anim_shape(res, "elbow", MM_SHAPE_CIRCLE, nf, 1);
+    mm_shape *tip = mm_anim_shape(res, "tip", MM_SHAPE_CIRCLE, nf, 1);
+    if (!base || !path || !arm || !elbow || !tip)
+        return MM_ENOMEM;
+    base->style = "ground";
+    mm_scene_box(base, 0, 0, -0.04 * reach, 0.16 * reach, 0.08 * reach, 0);
+    path->style = "highlight";
+    for (int k = 0; k < NP; k++) {
+        double qq[2], qd[2], qdd[2], x[3], y[3];
+        mm_dyn_plan_at(p, p->T * k / (NP - 1), qq, qd, qdd);
+        mm_robot2_points(&p->arm, qq, x, y);
+        path->x[k] = x[2], path->y[k] = y[2];
+    }
+    elbow->radius = tip->radius = 0.025 * reach;
+    for (int f = 0; f < nf; f++) {
+        double qq[2], qd[2], qdd[2], x[3], y[3];
+        mm_dyn_plan_at(p, a->t[f], qq, qd, qdd);
+        mm_robot2_points(&p->arm, qq, x, y);
+        for (int k = 0; k < 3; k++)
+            arm->x[3 * f + k] = x[k], arm->y[3 * f + k] = y[k];
+        elbow->x[f] = x[1], elbow->y[f] = y[1];
+        tip->x[f] = x[2], tip->y[f] = y[2];
+    }
+    mm_dyn_round_shape(path, q);
+    mm_dyn_round_shape(arm, q);
+    mm_dyn_round_shape(elbow, q);
+    mm_dyn_round_shape(tip, q);
+    a->bounds[0] = a->bounds[1] = -1.1 * reach;
+    a->bounds[2] = a->bounds[3] = 1.1 * reach;
+    return MM_OK;
+}
+
+int mm_dyn_pend_animate(const mm_dyn_pend *p, double t_end, int n, const double *t, const double *th,
+                        mm_result *res)
+{
+    double t_show;
+    double shortest = isfinite(p->T) ? fmin(p->T, p->T0) : p->T0;
+    int nf = mm_scene_frames(t_end, shortest, &t_show);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    if (!a)
+        return MM_ENOMEM;
+    mm_dyn_frame_times(a, t_show);
+    /* the path: the bob's positions over the frames' span, at most 360 points */
+    int np = 0;
+    while (np < n && t[np] <= t_show * (1 + 1e-12))
+        np++;
+    int stride = np > 360 ? (np + 359) / 360 : 1, npath = (np + stride - 1) / stride;
+    mm_shape *pivot = mm_anim_shape(res, "pivot", MM_SHAPE_POLYGON, 1, 3);
+    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, npath);
+    mm_shape *rod = mm_anim_shape(res, "rod", MM_SHAPE_LINE, nf, 2);
+    mm_shape *bob = mm_anim_shape(res, "bob", MM_SHAPE_CIRCLE, nf, 1);
+    if (!pivot || !path || !rod || !bob)
+        return MM_ENOMEM;
+    double L = p->L, q = mm_dyn_quantum(2 * L);
+    pivot->style = "ground";
+    const double tri[3][2] = {{0, 0}, {-0.06, 0.08}, {0.06, 0.08}};
+    for (int k = 0; k < 3; k++)
+        pivot->x[k] = tri[k][0] * L, pivot->y[k] = tri[k][1] * L;
+    for (int j = 0; j < npath; j++) {
+        double a0 = th[j * stride];
+        path->x[j] = L * sin(a0), path->y[j] = -L * cos(a0);
+    }
+    bob->radius = 0.06 * L;
+    for (int f = 0; f < nf; f++) {
+        double w, a0 = mm_dyn_pend_exact(p, a->t[f], &w);    /* frames between grid points: the closed form */
+        double x = L * sin(a0), y = -L * cos(a0);
+        rod->x[2 * f] = 0, rod->y[2 * f] = 0;
+        rod->x[2 * f + 1] = x, rod->y[2 * f + 1] = y;
+        bob->x[f] = x, bob->y[f] = y;
+    }
+    mm_dyn_round_shape(path, q);
+    mm_dyn_round_shape(rod, q);
+    mm_dyn_round_shape(bob, q);
+    a->bounds[0] = -1.15 * L, a->bounds[1] = -1.15 * L, a->bounds[2] = 1.15 * L, a->bounds[3] = 1.15 * L;
+    return MM_OK;
+}
+
+/* ---- dyn-double-pendulum's symplectic run ----------------------------------- */
+
+/* the observer: the energy error at every step, its maximum over each half
+ * of the run, and the plotted samples */
+typedef struct symp_obs {
+    const mm_dpend *s;
+    double E0, scale;
+    long N, stride;
+    double max_first, max_second;
+    mm_series *out;
+    int k;
+} symp_obs;
+
+static int observe(long step, double t, const double *y, void *ctx)
+{
+    symp_obs *o = ctx;
+    double yw[4];
+    mm_dpend_to_velocities(o->s, y, yw);
+    double e = fabs(mm_dpend_energy(o->s, yw, NULL) - o->E0) / o->scale;
+    if (2 * step <= o->N)
+        o->max_first = fmax(o->max_first, e);
+    else
+        o->max_second = fmax(o->max_second, e);
+    if (step % o->stride == 0 && o->k < o->out->n) {
+        o->out->x[o->k] = t;
+        o->out->y[o->k] = fmax(e, DBL_EPSILON);            /* a log axis needs a floor */
+        o->k++;
+    }
+    return 0;
+}
+
+int mm_dyn_dpend_symplectic(const mm_dpend *s, const double *y0, double t_end, double h, mm_symp_method m,
+                            long max_steps, double E0, double Es, int out, int n, double *max_first,
+                            double *max_second, mm_result *res, mm_error *err)
+{
+    double yp0[4], scale[4];
+    mm_dpend_to_momenta(s, y0, yp0);
+    double pscale = (s->m1 + s->m2) * s->l1 * s->l1 * mm_dyn_dpend_rate(s, y0);
+    scale[0] = scale[1] = 1, scale[2] = scale[3] = pscale;
+    mm_symp_problem sp = {.n = 4, .f = mm_dpend_rhs_hamilton, .params = (void *)s, .t0 = 0, .t_end = t_end,
+                          .y0 = yp0, .scale = scale};
+    mm_symp_options so;
+    mm_symp_options_init(&so);
+    so.method = m;
+    so.h = h;
+    so.max_steps = max_steps;
+    so.max_iter = 200;
+    long N = (long)ceil(t_end / h);
+    mm_series *ssy = mm_res_series(res, out, (int)fmin(n, N + 1));
+    if (!ssy)
+        return MM_ENOMEM;
+    symp_obs ob = {.s = s, .E0 = E0, .scale = Es, .N = N, .stride = (N + ssy->n - 2) / (ssy->n - 1), .out = ssy};
+    if (ob.stride < 1)
+        ob.stride = 1;
+    mm_symp_work *sw = mm_symp_work_alloc(4);
+    mm_symp_result sres;
+    int rc = mm_symp_solve(&sp, &so, sw, observe, &ob, NULL, &sres, err);
+    mm_symp_work_free(sw);
+    if (rc != MM_OK)
+        return rc;
+    ssy->n = ob.k;
+    mm_res_method_stat(res, "symplectic_h", sres.h);
+    mm_res_method_stat(res, "symplectic_steps", (double)sres.n_steps);
+    mm_res_method_stat(res, "symplectic_evaluations", (double)sres.n_eval);
+    mm_res_method_stat(res, "symplectic_iterations_mean", sres.iter_mean);
+    *max_first = ob.max_first;
+    *max_second = ob.max_second;
+    return MM_OK;
+}
+
+double mm_dyn_dpend_separation(const double *ya, const double *yb, int n, const double *x, double wf, double d0,
+                               double *d, double *plot)
+{
+    double t_h = -1;
+    for (int i = 0; i < n; i++) {
+        d[i] = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
+        plot[i] = fmax(d[i], DBL_EPSILON * d0);
+        if (t_h < 0 && d[i] > 1e-3) {
+            double dp = mm_dyn_dpend_distance(ya + 4 * (i - 1), yb + 4 * (i - 1), wf);
+            /* log-linear interpolation between the two grid points */
+            t_h = x[i - 1] + (x[i] - x[i - 1]) * log(1e-3 / dp) / log(d[i] / dp);
+        }
+    }
+    return t_h;
+}
+
+/* ---- dyn-slider-crank: the reference runs and the comparison with them ----------- */
+
+int mm_dyn_sc_reference_runs(mm_sc_system *sys, double w0, double t_end, int n, const double *x,
+                             const mm_ode_options *opt, const mm_ode_result *r, double **yref, double **yalt,
+                             double *tol_ref, mm_result *res, mm_error *err)
+{
+    double *yr = mm_res_alloc(res, (size_t)n * 2 * sizeof *yr), *ya = mm_res_alloc(res, (size_t)n * 2 * sizeof *ya);
+    if (!yr || !ya)
+        return MM_ENOMEM;
+    double y0r[2] = {0, w0};
+    mm_ode_problem pr = {.n = 2, .f = mm_sc_rhs_reduced, .params = sys, .t0 = 0, .t_end = t_end, .y0 = y0r};
+    mm_ode_options orf = *opt;
+    orf.rtol = orf.atol = fmax(1e-13, fmin(1e-12, 1e-3 * opt->rtol));   /* DOP853 struggles below 1e-13 */
+    mm_ode_result rref = {.t_out = x, .nout = (size_t)n, .y_out = yr};
+    int rc = mm_ode_run(&pr, &orf, &rref, err);
+    if (rc != MM_OK)
+        return rc;
+    mm_ode_options oalt = *opt;
+    oalt.rtol = oalt.atol = 0.5 * opt->rtol;
+    /* the run at half the tolerance needs about 1.1 times the run's steps
+     * (DOP853: rtol^(1/8)); the budget ends a run that went astray before
+     * it costs seconds (its failure is not the answer's) */
+    oalt.max_steps = 4 * (r->n_accepted + r->n_rejected) + 1000;
+    mm_ode_result ralt = {.t_out = x, .nout = (size_t)n, .y_out = ya};
+    mm_error ealt = {0};
+    rc = mm_ode_run(&pr, &oalt, &ralt, &ealt);
+    if (rc == MM_ENOMEM || rc == MM_EINTERNAL)
+        return rc;
+    if (rc != MM_OK)                        /* no second sample: the reference's stands for it */
+        for (int i = 0; i < 2 * n; i++)
+            ya[i] = yr[i];
+    *yref = yr;
+    *yalt = ya;
+    *tol_ref = orf.rtol * (double)rref.n_accepted;
+    return MM_OK;
+}
+
+int mm_dyn_sc_compare(const mm_slider_crank *s, int partition, int ny, int n, const double *y, const double *yref,
+                      const double *yalt, double tol_ref, const double *fa, const double *fb, const double *N,
+                      double *absn, mm_dyn_sc_cmp *c, mm_error *err)
+{
+    *c = (mm_dyn_sc_cmp){0};
+    for (int i = 0; i < n; i++) {
+        double q[MM_SC_NQ], qd[MM_SC_NQ], qdd[MM_SC_NQ], lam[MM_SC_NC];
+        double qa[MM_SC_NQ], qda[MM_SC_NQ], qdda[MM_SC_NQ], la[MM_SC_NC];
+        mm_sc_assemble(s, yref[2 * i], yref[2 * i + 1], q, qd);
+        if (mm_sc_accel(s, q, qd, 0, 0, qdd, lam) != MM_OK)
+            return mm_error_set(err, MM_ESINGULAR, "l", "the constraints became dependent: the rod stood vertical");
+        c->ra = fmax(c->ra, hypot(lam[0], lam[1])), c->rb = fmax(c->rb, hypot(lam[2], lam[3]));
+        c->rn = fmax(c->rn, fabs(lam[3]));
+        mm_sc_assemble(s, yalt[2 * i], yalt[2 * i + 1], qa, qda);
+        if (mm_sc_accel(s, qa, qda, 0, 0, qdda, la) != MM_OK)
+            return mm_error_set(err, MM_ESINGULAR, "l", "the constraints became dependent: the rod stood vertical");
+        double fr = hypot(lam[0], lam[1]), br = hypot(lam[2], lam[3]);
+        c->aa = fmax(c->aa, fmax(fabs(fa[i] - fr), 2 * fabs(hypot(la[0], la[1]) - fr)));
+        c->ab = fmax(c->ab, fmax(fabs(fb[i] - br), 2 * fabs(hypot(la[2], la[3]) - br)));
+        c->an = fmax(c->an, fmax(fabs(fabs(N[i]) - fabs(lam[3])), 2 * fabs(fabs(la[3]) - fabs(lam[3]))));
+        double qm[MM_SC_NQ], qdm[MM_SC_NQ], bJ;
+        mm_dyn_sc_state(s, partition, y + (size_t)i * (size_t)ny, qm, qdm);
+        c->eb = fmax(c->eb, mm_dyn_sc_energy_bound(s, qm, qdm, q, qd, tol_ref, &bJ));
+        c->ebJ = fmax(c->ebJ, bJ);
+        absn[i] = fabs(N[i]);
+        if (fa[i] > fa[c->ia])
+            c->ia = i;
+        if (fb[i] > fb[c->ib])
+            c->ib = i;
+        if (absn[i] > absn[c->in])
+            c->in = i;
+    }
+    return MM_OK;
+}
+
+/* ---- dyn-robot-2link: the work of the motors and the arm's amplification ------- */
+
+double mm_dyn_plan_work(const mm_dyn_plan *p, double *wabs)
+{
+    static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831,
+                                 0.9061798459386640};
+    static const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                 0.4786286704993665, 0.2369268850561891};
+    double work = 0;
+    *wabs = 0;
+    for (int k = 0; k < 64; k++) {
+        double a = p->T * k / 64, b = p->T * (k + 1) / 64;
+        for (int i = 0; i < 5; i++) {
+            double t = 0.5 * (a + b) + 0.5 * (b - a) * gx[i], q[2], qd[2], qdd[2], tau[2];
+            mm_dyn_plan_at(p, t, q, qd, qdd);
+            mm_robot2_inverse(&p->arm, q, qd, qdd, tau);
+            double pw = tau[0] * qd[0] + tau[1] * qd[1];
+            work += 0.5 * (b - a) * gw[i] * pw;
+            *wabs += 0.5 * (b - a) * gw[i] * (fabs(tau[0] * qd[0]) + fabs(tau[1] * qd[1]));
+        }
+    }
+    return work;
+}
+
+/* How much the open-loop arm amplifies small errors over the move: the
+ * largest norm ||Phi(t)||_inf (max row sum) of the fundamental matrix on a
+ * grid of 33 times (an estimate: an error made at t0 > 0 grows by
+ * Phi(t) Phi(t0)^-1, which is smaller while errors only grow). */
+int mm_dyn_plan_amplification(const mm_dyn_plan *p, mm_result *res, double *A, mm_error *err)
+{
+    enum { NA = 33 };
+    double t[NA], y0[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    double *y = mm_res_alloc(res, NA * 16 * sizeof *y);
+    if (!y)
+        return MM_ENOMEM;
+    mm_linspace(0, p->T, NA, t);
+    mm_dyn_plan pp = *p;
+    pp.t_left = 1;                                        /* no divergence test here */
+    mm_ode_problem prob = {.n = 16, .f = mm_dyn_plan_variational_rhs, .params = &pp, .t0 = 0, .t_end = p->T,
+                           .y0 = y0};
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, 1e-6, 1e-6, 100000);
+    mm_ode_result r = {.t_out = t, .nout = NA, .y_out = y};
+    int rc = mm_ode_run(&prob, &opt, &r, err);
+    if (rc != MM_OK)
+        return rc;
+    *A = 1;
+    for (int k = 0; k < NA; k++)
+        for (int i = 0; i < 4; i++) {
+            double row = 0;
+            for (int j = 0; j < 4; j++)
+                row += fabs(y[16 * k + 4 * i + j]);
+            *A = fmax(*A, row);
+        }
+    return MM_OK;
+}
+
+/* q2(t) - 0 for Brent */
+static int q2_of(double t, double *f, void *ctx)
+{
+    const mm_dyn_plan *p = ctx;
+    double q[2], qd[2], qdd[2];
+    mm_dyn_plan_at(p, t, q, qd, qdd);
+    *f = q[1];
+    return 0;
+}
+
+int mm_dyn_plan_stretched(const mm_dyn_plan *p, double *t_s, double *err_ts, mm_error *err)
+{
+    double qa = p->q0[1], qb = p->q0[1] + p->dq[1], fx, width;
+    *t_s = 0, *err_ts = 0;
+    if (qa == 0 || qb == 0) {
+        *t_s = qa == 0 ? 0 : p->T;
+        return MM_OK;
+    }
+    int iter = 0;
+    int rc = mm_roots_brent(q2_of, (void *)p, 0, p->T, qa, qb, 1e-14 * p->T, 200, t_s, &fx, &width, &iter, NULL,
+                            err);
+    if (rc != MM_OK)
+        return rc;
+    /* an exact zero of the computed q2(t) ends Brent early: then the root is
+     * off by the rounding of q2 over its speed there */
+    double q[2], qd[2], qdd[2];
+    mm_dyn_plan_at(p, *t_s, q, qd, qdd);
+    double e = fx == 0 ? 4 * DBL_EPSILON * (fabs(qa) + fabs(qb)) / fabs(qd[1]) : width;
+    *err_ts = e + 1e-14 * p->T;
+    return MM_OK;
+}
+
+/* ---- dyn-pendulum: the period measured, and against the amplitude --------------- */
+
+/* The period measured from the integration, where it is well conditioned:
+ * the times of two successive passages through the bottom (theta = 0 mod
+ * 2 pi, where |theta'| is largest), each located by one Newton step from
+ * the integrated state at the closed form's prediction.  Half a period
+ * apart for a swing, a whole one for a turn over the top. */
+int mm_dyn_pend_measure_period(const mm_dyn_pend *p, mm_ode_rhs f, double rtol, double h_max, mm_result *res,
+                               double *Tm, double *dE, mm_error *err)
+{
+    double K = mm_elliptic_Kc(p->kc), ta, tb, target_a, target_b, half;
+    if (p->motion == MM_DYN_SWING) {
+        ta = (2 * K - p->u0) / p->wn;               /* u = 2K: sn = 0 */
+        half = 2 * K / p->wn;                       /* T/2 */
+        target_a = target_b = 0;
+    } else {
+        double v = p->kk * p->wn;                   /* v = sg kk wn t + u0 = 2K j */
+        ta = p->sg > 0 ? (2 * K - p->u0) / v : p->u0 / v;
+        half = 2 * K / v;                           /* T */
+        target_a = p->sg > 0 ? 2 * M_PI : 0;
+        target_b = target_a + 2 * M_PI * p->sg;
+    }
+    tb = ta + half;
+    double y0[2] = {p->theta0, p->omega0}, tt[2] = {ta, tb}, x[2], v[2];
+    mm_ode_result r;
+    int rc = mm_ex_ode_grid(2, f, (void *)p, y0, tb, 2, tt, rtol, rtol, h_max, x, v, &r, res, err);
+    if (rc != MM_OK)
+        return rc;
+    double ca = ta - (x[0] - target_a) / v[0], cb = tb - (x[1] - target_b) / v[1];
+    *Tm = (cb - ca) * (p->motion == MM_DYN_SWING ? 2 : 1);
+    double E0 = mm_dyn_pend_energy(p, p->theta0, p->omega0);
+    *dE = fmax(fabs(mm_dyn_pend_energy(p, x[0], v[0]) - E0), fabs(mm_dyn_pend_energy(p, x[1], v[1]) - E0));
+    return MM_OK;
+}
+
+int mm_dyn_pend_period_curve(mm_result *res, int curve, int series)
+{
+    enum { NC = 200 };
+    mm_series *sc = mm_res_series(res, curve, NC), *ss = mm_res_series(res, series, NC);
+    if (!sc || !ss)
+        return MM_ENOMEM;
+    for (int i = 0; i < NC; i++) {
+        double a0 = 3.1 * i / (NC - 1);          /* up to 3.1 rad: the ratio is 4.5 there */
+        sc->x[i] = ss->x[i] = a0;
+        sc->y[i] = mm_pendulum_period_ratio(a0);
+        ss->y[i] = 1 + a0 * a0 / 16;
+    }
+    return MM_OK;
+}
+
+/* ---- dyn-double-pendulum's reference run ---------------------------------------- */
+
+/* The watch over the reference's own steps: mm_ode calls an event function
+ * at the end of every accepted step (and only there while it never changes
+ * sign), so a g that stays 1 is an observer. */
+typedef struct ref_watch {
+    mm_dpend s;             /* first: mm_dpend_rhs_lagrange reads it as its params */
+    double E0, Es, rtol, drift, allow;
+} ref_watch;
+
+static int watch_step(double t, const double *y, double *g, void *p)
+{
+    (void)t;
+    ref_watch *w = p;
+    w->drift = fmax(w->drift, fabs(mm_dpend_energy(&w->s, y, NULL) - w->E0) / w->Es);
+    w->allow = fmax(w->allow, mm_dpend_energy_allowance(&w->s, y, w->rtol) / w->Es);   /* eq. (7) */
+    *g = 1;
+    return 0;
+}
+
+int mm_dyn_dpend_reference(const mm_dpend *s, const double *y0, double t_end, double rtol, int n, const double *t,
+                           double E0, double Es, double *y, mm_ode_result *r, double *drift, double *allow,
+                           mm_error *err)
+{
+    *r = (mm_ode_result){.t_out = t, .nout = (size_t)n, .y_out = y};
+    ref_watch watch = {.s = *s, .E0 = E0, .Es = Es, .rtol = rtol};
+    mm_ode_problem pref = {.n = 4, .f = mm_dpend_rhs_lagrange, .params = &watch, .t0 = 0, .t_end = t_end,
+                           .y0 = y0, .event = watch_step};
+    mm_ode_options oref = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol, 2000000);
+    int rc = mm_ode_run(&pref, &oref, r, err);
+    *drift = watch.drift;
+    *allow = watch.allow;
+    return rc;
 }

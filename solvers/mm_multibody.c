@@ -415,3 +415,44 @@ int mm_growth_fit(const double *x, const double *d, int n, double d0, int *i_lo,
     *se = sqrt(ss / (m - 2) * m / den);
     return 1;
 }
+
+/* ---- chapter 4 (dyn-double-pendulum): Lagrange's equations against Hamilton's ---- */
+
+double mm_dpend_lh_residual(const mm_dpend *s, const double *y, double *scale)
+{
+    double dl[4], yp[4], dh[4];
+    mm_dpend_rhs_lagrange(0, y, dl, (void *)s);
+    mm_dpend_to_momenta(s, y, yp);
+    mm_dpend_rhs_hamilton(0, yp, dh, (void *)s);
+    double d = y[0] - y[1], dd = y[2] - y[3], c = cos(d), sn = sin(d), k = s->m2 * s->l1 * s->l2;
+    double M11 = (s->m1 + s->m2) * s->l1 * s->l1, M22 = s->m2 * s->l2 * s->l2;
+    double p1 = M11 * dl[2] + k * (c * dl[3] - sn * dd * y[3]);
+    double p2 = M22 * dl[3] + k * (c * dl[2] - sn * dd * y[2]);
+    double big = fabs(M11 * dl[2]) + fabs(k * dl[3]) + fabs(k * dd * y[3]) + fabs(M22 * dl[3]) +
+                 fabs(k * dl[2]) + fabs(k * dd * y[2]) + fabs(dh[2]) + fabs(dh[3]);
+    double worst = fmax(fmax(fabs(p1 - dh[2]), fabs(p2 - dh[3])),
+                        fmax(fabs(dh[0] - y[2]), fabs(dh[1] - y[3])) * (M11 + M22));
+    double cond = (M11 + M22) * (M11 + M22) / (M11 * M22 - k * k * c * c);
+    *scale = (big + (fabs(y[2]) + fabs(y[3])) * (M11 + M22)) * cond;
+    return worst;
+}
+
+/* ---- chapter 4 (dyn-slider-crank): the joint forces against Newton's law ---------- */
+
+double mm_sc_momentum_residual(const mm_slider_crank *s, const double *qdd, const double *lam, double *scale)
+{
+    double fa = hypot(lam[0], lam[1]), fb = hypot(lam[2], lam[3]), N = -lam[3];
+    double Fx = -lam[0], Fy = -lam[1] + N;
+    double px = s->m_rod * qdd[1] + s->m_piston * qdd[4], py = s->m_rod * qdd[2];
+    *scale = fa + fb + fabs(s->m_rod * qdd[1]) + fabs(s->m_piston * qdd[4]) + fabs(s->m_rod * qdd[2]);
+    return hypot(Fx - px, Fy - py);
+}
+
+double mm_sc_drift(const mm_slider_crank *s, const double *q)
+{
+    double Phi[MM_SC_NC], d = 0;
+    mm_sc_constraints(s, q, NULL, Phi, NULL);
+    for (int k = 0; k < MM_SC_NC; k++)
+        d = fmax(d, fabs(Phi[k]));
+    return d;
+}

@@ -182,4 +182,29 @@ double mm_dpend_energy_allowance(const mm_dpend *s, const double *y, double rtol
 int mm_growth_fit(const double *x, const double *d, int n, double d0, int *i_lo, int *i_hi, double *lam,
                   double *a0, double *se);
 
+/* ---- chapter 4 (dyn-double-pendulum): Lagrange's equations against Hamilton's ---- */
+
+/* At the state y = (theta1, theta2, w1, w2): dp/dt from Hamilton's
+ * equations (mm_dpend_rhs_hamilton at the momenta of y) against d(M w)/dt
+ * = M w' + M' w from Lagrange's (mm_dpend_rhs_lagrange), and Hamilton's
+ * dtheta/dt against w (times trace M, to be a momentum rate too).  Returns
+ * the larger difference; *scale receives the largest term summed times
+ * cond M ~ trace^2 / det (the Hamiltonian side goes through M^-1): the two
+ * agree to a few eps of it.  Cannot fail. */
+double mm_dpend_lh_residual(const mm_dpend *s, const double *y, double *scale);
+
+/* ---- chapter 4 (dyn-slider-crank): the joint forces against Newton's law ---------- */
+
+/* At a state of the slider-crank with accelerations qdd and multipliers lam
+ * (mm_sc_accel): the bearing force on the crank (-lam1, -lam2) and the
+ * guide force on the piston N = -lam4 accelerate the rod's and the piston's
+ * centres of mass (m_rod (x2'', y2'') + m_piston (x3'', 0)).  Returns the
+ * size of the difference [N]; *scale receives the sum of the forces and
+ * the inertia forces.  Cannot fail. */
+double mm_sc_momentum_residual(const mm_slider_crank *s, const double *qdd, const double *lam, double *scale);
+
+/* The largest constraint residual |Phi_k(q)| [m] (mm_sc_constraints).
+ * Cannot fail. */
+double mm_sc_drift(const mm_slider_crank *s, const double *q);
+
 #endif

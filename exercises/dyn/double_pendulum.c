@@ -114,59 +114,6 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* ---- runs ---------------------------------------------------------------------- */
-
-/* The reference run's watch over its own steps: the energy error and the
- * allowance of eq. (7) at the end of every accepted step.  mm_ode calls an
- * event function there (and only there while it never changes sign), so a
- * g that stays 1 is an observer.  The grid points between steps are DOP853's
- * dense output, a 7th-order interpolant whose error the step control does
- * not see: on a short fast run (23 steps, 746 points) its energy error was
- * 10 times that of the steps themselves. */
-typedef struct ref_watch {
-    mm_dpend s;             /* first: mm_dpend_rhs_lagrange reads it as its params */
-    double E0, Es, drift, allow;
-} ref_watch;
-
-static int watch_step(double t, const double *y, double *g, void *p)
-{
-    (void)t;
-    ref_watch *w = p;
-    w->drift = fmax(w->drift, fabs(mm_dpend_energy(&w->s, y, NULL) - w->E0) / w->Es);
-    w->allow = fmax(w->allow, mm_dpend_energy_allowance(&w->s, y, RTOL_REF) / w->Es);   /* eq. (7) */
-    *g = 1;
-    return 0;
-}
-
-/* The symplectic run's observer: the energy error at every step, its
- * maximum over each half of the run, and the plotted samples. */
-typedef struct symp_obs {
-    const mm_dpend *s;
-    double E0, scale;
-    long N, stride;
-    double max_first, max_second;
-    mm_series *out;
-    int k;
-} symp_obs;
-
-static int observe(long step, double t, const double *y, void *ctx)
-{
-    symp_obs *o = ctx;
-    double yw[4];
-    mm_dpend_to_velocities(o->s, y, yw);
-    double e = fabs(mm_dpend_energy(o->s, yw, NULL) - o->E0) / o->scale;
-    if (2 * step <= o->N)
-        o->max_first = fmax(o->max_first, e);
-    else
-        o->max_second = fmax(o->max_second, e);
-    if (step % o->stride == 0 && o->k < o->out->n) {
-        o->out->x[o->k] = t;
-        o->out->y[o->k] = fmax(e, DBL_EPSILON);            /* a log axis needs a floor */
-        o->k++;
-    }
-    return 0;
-}
-
 /* ---- solve ------------------------------------------------------------------------ */
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -193,12 +140,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!s1 || !s2 || !sdp || !yr || !yd)
         return MM_ENOMEM;
     mm_linspace(0, t_end, n, s1->x);
-    mm_ode_result rr = {.t_out = s1->x, .nout = (size_t)n, .y_out = yr}, rd;
-    ref_watch watch = {.s = s, .E0 = E0, .Es = Es};
-    mm_ode_problem pref = {.n = 4, .f = mm_dpend_rhs_lagrange, .params = &watch, .t0 = 0, .t_end = t_end,
-                           .y0 = y0, .event = watch_step};
-    mm_ode_options oref = mm_ode_options_adaptive(MM_ODE_DOP853, RTOL_REF, RTOL_REF, 2000000);
-    int rc = mm_ode_run(&pref, &oref, &rr, err);
+    /* the reference's energy error and its allowance of eq. (7), watched at
+     * the ends of its steps (mm_dyn_dpend_reference) */
+    mm_ode_result rr, rd;
+    double ref_drift, allow;
+    int rc = mm_dyn_dpend_reference(&s, y0, t_end, RTOL_REF, n, s1->x, E0, Es, yr, &rr, &ref_drift, &allow, err);
     if (rc != MM_OK)
         return rc;
     /* Dormand-Prince at the learner's tolerance is the demonstration, not
@@ -219,7 +165,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                          "its step size collapsed at t = %.4g s (%s); its energy error is plotted up to there. "
                          "The reference (DOP853 at 1e-10) and the symplectic method carry on: try a smaller "
                          "rtol", rtol, rd.t_reached, derr.msg);
-    double ref_drift = watch.drift, dp_drift = 0, lh_worst = 0, lh_scale = 0, allow = watch.allow;
+    double dp_drift = 0, lh_worst = 0, lh_scale = 0;
     for (int i = 0; i < n; i++) {
         const double *y = yr + 4 * i;
         s2->x[i] = sdp->x[i] = s1->x[i];
@@ -231,21 +177,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
         /* Lagrange's equations against Hamilton's at this state: dp/dt from
          * Hamilton must equal d(M w)/dt = M w' + M' w from Lagrange */
-        double dl[4], yp[4], dh[4];
-        mm_dpend_rhs_lagrange(0, y, dl, &s);
-        mm_dpend_to_momenta(&s, y, yp);
-        mm_dpend_rhs_hamilton(0, yp, dh, &s);
-        double d = y[0] - y[1], dd = y[2] - y[3], c = cos(d), sn = sin(d), k = s.m2 * s.l1 * s.l2;
-        double M11 = (s.m1 + s.m2) * s.l1 * s.l1, M22 = s.m2 * s.l2 * s.l2;
-        double p1 = M11 * dl[2] + k * (c * dl[3] - sn * dd * y[3]);
-        double p2 = M22 * dl[3] + k * (c * dl[2] - sn * dd * y[2]);
-        double big = fabs(M11 * dl[2]) + fabs(k * dl[3]) + fabs(k * dd * y[3]) + fabs(M22 * dl[3]) +
-                     fabs(k * dl[2]) + fabs(k * dd * y[2]) + fabs(dh[2]) + fabs(dh[3]);
-        lh_worst = fmax(lh_worst, fmax(fabs(p1 - dh[2]), fabs(p2 - dh[3])));
-        lh_worst = fmax(lh_worst, fmax(fabs(dh[0] - y[2]), fabs(dh[1] - y[3])) * (M11 + M22));
-        /* the Hamiltonian side goes through M^-1: its rounding grows with cond M ~ trace^2 / det */
-        double cond = (M11 + M22) * (M11 + M22) / (M11 * M22 - k * k * c * c);
-        lh_scale = fmax(lh_scale, (big + (fabs(y[2]) + fabs(y[3])) * (M11 + M22)) * cond);
+        double sc, r = mm_dpend_lh_residual(&s, y, &sc);
+        lh_worst = fmax(lh_worst, r);
+        lh_scale = fmax(lh_scale, sc);
     }
     sdp->n = nd;
     mm_res_method(res, "Lagrange's equations by dop853 (reference, rtol 1e-10; twins 1e-12) and dopri5; Hamilton's by "
@@ -255,39 +189,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method_stat(res, "dopri5_steps", (double)rd.n_accepted);
     mm_res_method_stat(res, "dopri5_evaluations", (double)rd.n_eval);
 
-    /* the symplectic run on Hamilton's equations, in (theta, p) */
-    double yp0[4], scale[4];
-    mm_dpend_to_momenta(&s, y0, yp0);
-    double pscale = (s.m1 + s.m2) * s.l1 * s.l1 * mm_dyn_dpend_rate(&s, y0);
-    scale[0] = scale[1] = 1, scale[2] = scale[3] = pscale;
-    mm_symp_problem sp = {.n = 4, .f = mm_dpend_rhs_hamilton, .params = &s, .t0 = 0, .t_end = t_end, .y0 = yp0,
-                          .scale = scale};
-    mm_symp_options so;
-    mm_symp_options_init(&so);
-    so.method = sm;
-    so.h = h;
-    so.max_steps = MAX_SYMP_STEPS;
-    so.max_iter = 200;
+    /* the symplectic run on Hamilton's equations, in (theta, p): its energy
+     * error at every step, largest over each half of the run */
     long N = (long)ceil(t_end / h);
-    mm_series *ssy = mm_res_series(res, O_DE_SY, (int)fmin(n, N + 1));
-    if (!ssy)
-        return MM_ENOMEM;
-    symp_obs ob = {.s = &s, .E0 = E0, .scale = Es, .N = N, .stride = (N + ssy->n - 2) / (ssy->n - 1),
-                   .out = ssy};
-    if (ob.stride < 1)
-        ob.stride = 1;
-    mm_symp_work *sw = mm_symp_work_alloc(4);
-    mm_symp_result sres;
-    rc = mm_symp_solve(&sp, &so, sw, observe, &ob, NULL, &sres, err);
-    mm_symp_work_free(sw);
+    double max_first, max_second;
+    rc = mm_dyn_dpend_symplectic(&s, y0, t_end, h, sm, MAX_SYMP_STEPS, E0, Es, O_DE_SY, n, &max_first, &max_second,
+                                 res, err);
     if (rc != MM_OK)
         return rc;
-    ssy->n = ob.k;
-    mm_res_method_stat(res, "symplectic_h", sres.h);
-    mm_res_method_stat(res, "symplectic_steps", (double)sres.n_steps);
-    mm_res_method_stat(res, "symplectic_evaluations", (double)sres.n_eval);
-    mm_res_method_stat(res, "symplectic_iterations_mean", sres.iter_mean);
-    double sy_drift = fmax(ob.max_first, ob.max_second);
+    double sy_drift = fmax(max_first, max_second);
     /* the two drifts are the runs' own (no script or second method can
      * reproduce another integrator's rounding): said in words, plotted */
     mm_res_method_stat(res, "dopri5_largest_energy_error", dp_drift);
@@ -300,21 +210,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * controller settling) err up to it each; the many that follow have
      * errors of both signs that add like a random walk (its excursion
      * about 0.75 sqrt(steps) of them).  So the tolerance is the allowance
-     * times (4 + 0.75 sqrt(steps)), judged at the ends of the steps (see
-     * ref_watch: the dense output between them is not what the step
-     * control bounds).  The old one, 0.8 rtol (8 + rate t_end), ignored the
-     * size of the gradient and of the angles in DOP853's weights: a short
-     * run with large angles and slow gravity (8 steps) erred 2.7 times over
-     * it.  At the defaults the error is 1/79 of this tolerance. */
+     * times (4 + 0.75 sqrt(steps)), judged at the ends of the steps (the
+     * dense output between them is not what the step control bounds).  The
+     * old one, 0.8 rtol (8 + rate t_end), ignored the size of the gradient
+     * and of the angles in DOP853's weights: a short run with large angles
+     * and slow gravity (8 steps) erred 2.7 times over it.  At the defaults
+     * the error is 1/79 of this tolerance. */
     double n_ref = (double)rr.n_accepted;
     mm_res_check_abs(res, "energy of the reference run (DOP853, rtol 1e-10): largest relative error",
                      ref_drift, 0, allow * (4 + 0.75 * sqrt(n_ref)));
     mm_check_residual(res, "Lagrange's equations vs Hamilton's: dp/dt = d(M w)/dt at every plotted state "
                            "(scale: largest term times cond M)", lh_worst, lh_scale, 8);
-    /* a symplectic method's energy error oscillates but does not grow: the
-     * second half of the run may not exceed the first by more than the
-     * variation between regions the motion visits (x4) and round-off */
-
     /* the twins: the reference and a start moved by sep in theta2, DOP853
      * at 1e-12, over at most 40 periods of the fast small oscillation (a
      * chaotic pair parts within a few); their distance on a grid */
@@ -335,21 +241,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (rc != MM_OK)
         return rc;
     double d0 = mm_dyn_dpend_distance(y0, y0b, wf);
-    int i_lo = -1, i_hi = -1;
-    double t_h = -1;
-    for (int i = 0; i < n; i++) {
-        double d = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
-        ssep->y[i] = fmax(d, DBL_EPSILON * d0);
-        /* the exponential regime: from 1e3 d0 (past the start's transient) to 1e-3 (before saturation) */
-        if (i_lo < 0 && d > 1e3 * d0)
-            i_lo = i;
-        if (i_hi < 0 && d > 1e-3) {
-            i_hi = i;
-            double dp = mm_dyn_dpend_distance(ya + 4 * (i - 1), yb + 4 * (i - 1), wf);
-            /* log-linear interpolation between the two grid points */
-            t_h = ssep->x[i - 1] + (ssep->x[i] - ssep->x[i - 1]) * log(1e-3 / dp) / log(d / dp);
-        }
-    }
+    double *dsep = mm_res_alloc(res, (size_t)n * sizeof *dsep);
+    if (!dsep)
+        return MM_ENOMEM;
+    double t_h = mm_dyn_dpend_separation(ya, yb, n, ssep->x, wf, d0, dsep, ssep->y);
     if (t_h >= 0)
         mm_res_scalar_err(res, O_THORIZON, t_h, ssep->x[1] - ssep->x[0], MM_ERR_ESTIMATE);
     /* the exponent depends on where the motion goes while the twins part,
@@ -360,12 +255,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * the two exponents is the sensitivity the estimate has, and the stated
      * error is the larger of it and 2 se. */
     double lam, a0, se, lam_c, a0_c, se_c;
-    int jl, jh;
-    double *dsep = mm_res_alloc(res, (size_t)n * sizeof *dsep);
-    if (!dsep)
-        return MM_ENOMEM;
-    for (int i = 0; i < n; i++)
-        dsep[i] = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
+    int i_lo, i_hi, jl, jh;
     if (mm_growth_fit(ssep->x, dsep, n, d0, &i_lo, &i_hi, &lam, &a0, &se)) {
         double y0c[4] = {y0[0] + sep, y0[1], y0[2], y0[3]};
         rc = mm_dyn_dpend_run(&s, y0c, t_ly, n, ssep->x, MM_ODE_DOP853, RTOL_TWIN, yb, &rb, err);
@@ -397,7 +287,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * second half, with gauss4's error 1.2 times that of the first) */
     if (i_lo < 0 && t_end * mm_dyn_dpend_rate(&s, y0) > 20 * 2 * M_PI && t_end * ws > 20 * 2 * M_PI)
         mm_res_check_abs(res, "symplectic energy error: largest over the second half vs over the first half",
-                         ob.max_second, 0, 4 * ob.max_first + 64 * DBL_EPSILON * sqrt((double)N));
+                         max_second, 0, 4 * max_first + 64 * DBL_EPSILON * sqrt((double)N));
     if (dp_drift > 10 * sy_drift && t_end * wf > 200)
         mm_res_warn(res, "over this run Dormand-Prince's energy error (%.2g) grew past the symplectic "
                          "method's (%.2g), which stays bounded", dp_drift, sy_drift);
@@ -413,19 +303,11 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_dyn_double_pendulum = {
-    .id = "dyn-double-pendulum",
-    .chapter = 4,
-    .section = "4.3",
+    .id = "dyn-double-pendulum", .chapter = 4, .section = "4.3",
     .title = "The double pendulum: Lagrange's equations, energy and chaos",
     .summary = "Equations of motion by Lagrange's method; the energy error of Dormand-Prince against a "
                "symplectic Gauss method; two starts 1e-9 apart and the Lyapunov exponent.",
     .tags = "dynamics, Lagrange, Hamilton, symplectic, energy drift, chaos, Lyapunov",
-    .theory = "exercises/dyn/double_pendulum.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/dyn/double_pendulum.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

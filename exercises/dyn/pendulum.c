@@ -25,8 +25,7 @@
 #include "mm_dyn.h"
 #include "mm_elliptic.h"
 #include "mm_exhelp.h"
-#include "mm_roots.h"
-#include "mm_scene.h"
+#include "mm_pendulum.h"
 
 enum { P_L, P_G, P_THETA0, P_TEND, P_OMEGA0, P_POINTS };
 
@@ -125,124 +124,7 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* ---- the amplitude of a 1 % longer period ------------------------------------ */
-
-/* 2 K(sin(theta/2)) / pi - 1.01 (eq. 5 divided by the small-angle period) */
-static int ratio_minus(double th, double *f, void *ctx)
-{
-    (void)ctx;
-    *f = 2 * mm_elliptic_Kc(cos(0.5 * th)) / M_PI - 1.01;
-    return 0;
-}
-
-static int one_percent(mm_result *res, double *th, mm_error *err)
-{
-    double a = 0.1, b = 1.0, fa, fb, fx, width;
-    ratio_minus(a, &fa, NULL);
-    ratio_minus(b, &fb, NULL);
-    int iter = 0;
-    int rc = mm_roots_brent(ratio_minus, NULL, a, b, fa, fb, 1e-16, 200, th, &fx, &width, &iter, NULL, err);
-    if (rc != MM_OK)
-        return rc;
-    /* the root of the computed function lies in the final bracket; the
-     * computed function is within 4 eps of the true one, which moves the
-     * root by 4 eps / slope (slope ~ theta/8 = 0.05 here) */
-    double h = 1e-4, fp, fm;
-    ratio_minus(*th + h, &fp, NULL);
-    ratio_minus(*th - h, &fm, NULL);
-    double slope = (fp - fm) / (2 * h);
-    mm_res_scalar_err(res, O_T1PCT, *th, width + 4 * DBL_EPSILON * 1.01 / (0.5 * slope), MM_ERR_BOUND);
-    /* independent: the Maclaurin series of T/T0 in theta0 (positive terms,
-     * each under half the one before it here), to theta0^8, must give 1.01
-     * within twice its first neglected term */
-    double x2 = *th * *th;
-    double series = 1 + x2 * (1.0 / 16 + x2 * (11.0 / 3072 + x2 * (173.0 / 737280 + x2 * 22931.0 / 1321205760)));
-    double next = 1319183.0 / 951268147200 * x2 * x2 * x2 * x2 * x2;
-    mm_res_check_abs(res, "theta_1pct: T/T0 by its series in theta0 (to theta0^8) vs 1.01", series, 1.01,
-                     2 * next + 4 * DBL_EPSILON);
-    return MM_OK;
-}
-
-/* ---- the animation ---------------------------------------------------------- */
-
-static int animate(const mm_dyn_pend *p, double t_end, int n, const double *t, const double *th, mm_result *res)
-{
-    double t_show;
-    double shortest = isfinite(p->T) ? fmin(p->T, p->T0) : p->T0;
-    int nf = mm_scene_frames(t_end, shortest, &t_show);
-    mm_anim *a = mm_res_animation(res, nf, "t", "s");
-    if (!a)
-        return MM_ENOMEM;
-    mm_dyn_frame_times(a, t_show);
-    /* the path: the bob's positions over the frames' span, at most 360 points */
-    int np = 0;
-    while (np < n && t[np] <= t_show * (1 + 1e-12))
-        np++;
-    int stride = np > 360 ? (np + 359) / 360 : 1, npath = (np + stride - 1) / stride;
-    mm_shape *pivot = mm_anim_shape(res, "pivot", MM_SHAPE_POLYGON, 1, 3);
-    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, npath);
-    mm_shape *rod = mm_anim_shape(res, "rod", MM_SHAPE_LINE, nf, 2);
-    mm_shape *bob = mm_anim_shape(res, "bob", MM_SHAPE_CIRCLE, nf, 1);
-    if (!pivot || !path || !rod || !bob)
-        return MM_ENOMEM;
-    double L = p->L, q = mm_dyn_quantum(2 * L);
-    pivot->style = "ground";
-    const double tri[3][2] = {{0, 0}, {-0.06, 0.08}, {0.06, 0.08}};
-    for (int k = 0; k < 3; k++)
-        pivot->x[k] = tri[k][0] * L, pivot->y[k] = tri[k][1] * L;
-    for (int j = 0; j < npath; j++) {
-        double a0 = th[j * stride];
-        path->x[j] = L * sin(a0), path->y[j] = -L * cos(a0);
-    }
-    bob->radius = 0.06 * L;
-    for (int f = 0; f < nf; f++) {
-        double w, a0 = mm_dyn_pend_exact(p, a->t[f], &w);    /* frames between grid points: the closed form */
-        double x = L * sin(a0), y = -L * cos(a0);
-        rod->x[2 * f] = 0, rod->y[2 * f] = 0;
-        rod->x[2 * f + 1] = x, rod->y[2 * f + 1] = y;
-        bob->x[f] = x, bob->y[f] = y;
-    }
-    mm_dyn_round_shape(path, q);
-    mm_dyn_round_shape(rod, q);
-    mm_dyn_round_shape(bob, q);
-    a->bounds[0] = -1.15 * L, a->bounds[1] = -1.15 * L, a->bounds[2] = 1.15 * L, a->bounds[3] = 1.15 * L;
-    return MM_OK;
-}
-
 /* ---- solve -------------------------------------------------------------------- */
-
-/* The period measured from the integration, where it is well conditioned:
- * the times of two successive passages through the bottom (theta = 0 mod
- * 2 pi, where |theta'| is largest), each located by one Newton step from
- * the integrated state at the closed form's prediction.  Half a period
- * apart for a swing, a whole one for a turn over the top. */
-static int measure_period(const mm_dyn_pend *p, mm_result *res, double *Tm, double *dE, mm_error *err)
-{
-    double K = mm_elliptic_Kc(p->kc), ta, tb, target_a, target_b, half;
-    if (p->motion == MM_DYN_SWING) {
-        ta = (2 * K - p->u0) / p->wn;               /* u = 2K: sn = 0 */
-        half = 2 * K / p->wn;                       /* T/2 */
-        target_a = target_b = 0;
-    } else {
-        double v = p->kk * p->wn;                   /* v = sg kk wn t + u0 = 2K j */
-        ta = p->sg > 0 ? (2 * K - p->u0) / v : p->u0 / v;
-        half = 2 * K / v;                           /* T */
-        target_a = p->sg > 0 ? 2 * M_PI : 0;
-        target_b = target_a + 2 * M_PI * p->sg;
-    }
-    tb = ta + half;
-    double y0[2] = {p->theta0, p->omega0}, tt[2] = {ta, tb}, x[2], v[2];
-    mm_ode_result r;
-    int rc = mm_ex_ode_grid(2, rhs, (void *)p, y0, tb, 2, tt, RTOL, RTOL, STEP_RADIANS / rate(p), x, v, &r,
-                            res, err);
-    if (rc != MM_OK)
-        return rc;
-    double ca = ta - (x[0] - target_a) / v[0], cb = tb - (x[1] - target_b) / v[1];
-    *Tm = (cb - ca) * (p->motion == MM_DYN_SWING ? 2 : 1);
-    double E0 = mm_dyn_pend_energy(p, p->theta0, p->omega0);
-    *dE = fmax(fabs(mm_dyn_pend_energy(p, x[0], v[0]) - E0), fabs(mm_dyn_pend_energy(p, x[1], v[1]) - E0));
-    return MM_OK;
-}
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
@@ -272,10 +154,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                          "grows like 4 ln(8/kc) / omega_n (kc = %.3g), and the integrator's tiny energy "
                          "errors decide the timing more and more", 2 * asin(p.kc), p.kc);
 
-    double th1;
-    int rc = one_percent(res, &th1, err);
+    /* the amplitude of a 1 % longer period, a root of eq. (5); independent:
+     * the Maclaurin series of T/T0 in theta0 must give 1.01 within twice its
+     * first neglected term */
+    double th1, th1_err, next;
+    int rc = mm_pendulum_amplitude(1.01, 0.1, 1.0, &th1, &th1_err, err);
     if (rc != MM_OK)
         return rc;
+    mm_res_scalar_err(res, O_T1PCT, th1, th1_err, MM_ERR_BOUND);
+    double series = mm_pendulum_ratio_series(th1, &next);
+    mm_res_check_abs(res, "theta_1pct: T/T0 by its series in theta0 (to theta0^8) vs 1.01", series, 1.01,
+                     2 * next + 4 * DBL_EPSILON);
 
     /* the motion, eq. (1), by DOP853 with dense output */
     mm_series *sth = mm_res_series(res, O_THETA, n), *slin = mm_res_series(res, O_THETA_LIN, n);
@@ -333,7 +222,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double Ka = mm_elliptic_Kc(p.kc), Kc = mm_elliptic_RF(0, p.kc * p.kc, 1);
         mm_res_check_rel(res, "K: arithmetic-geometric mean vs Carlson's R_F", Ka, Kc, 8 * DBL_EPSILON);
         double Tm, dE;
-        rc = measure_period(&p, res, &Tm, &dE, err);
+        /* two successive passages through the bottom, where it is well
+         * conditioned (mm_dyn_pend_measure_period) */
+        rc = mm_dyn_pend_measure_period(&p, rhs, RTOL, STEP_RADIANS / rate(&p), res, &Tm, &dE, err);
         if (rc != MM_OK)
             return rc;
         /* each crossing time: RTOL of the angle's size divided by the speed
@@ -349,17 +240,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* the period against the amplitude (eq. 5), with its first correction */
-    enum { NC = 200 };
-    mm_series *sc = mm_res_series(res, O_RATIO_CURVE, NC), *ss = mm_res_series(res, O_RATIO_SERIES, NC);
-    if (!sc || !ss)
+    if (mm_dyn_pend_period_curve(res, O_RATIO_CURVE, O_RATIO_SERIES))
         return MM_ENOMEM;
-    for (int i = 0; i < NC; i++) {
-        double a0 = 3.1 * i / (NC - 1);          /* up to 3.1 rad: the ratio is 4.5 there */
-        sc->x[i] = ss->x[i] = a0;
-        sc->y[i] = 2 * mm_elliptic_Kc(cos(0.5 * a0)) / M_PI;
-        ss->y[i] = 1 + a0 * a0 / 16;
-    }
-    return animate(&p, t_end, n, sth->x, sth->y, res);
+    return mm_dyn_pend_animate(&p, t_end, n, sth->x, sth->y, res);
 }
 
 static const char *const references[] = {
@@ -370,19 +253,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_dyn_pendulum = {
-    .id = "dyn-pendulum",
-    .chapter = 4,
-    .section = "4.2",
-    .title = "The pendulum at large amplitude",
+    .id = "dyn-pendulum", .chapter = 4, .section = "4.2", .title = "The pendulum at large amplitude",
     .summary = "Period against amplitude by the elliptic integral (AGM), the exact motion in Jacobi "
                "functions, the separatrix and rotation over the top.",
-    .tags = "dynamics, pendulum, nonlinear, elliptic integral, separatrix",
-    .theory = "exercises/dyn/pendulum.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "dynamics, pendulum, nonlinear, elliptic integral, separatrix", .theory = "exercises/dyn/pendulum.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

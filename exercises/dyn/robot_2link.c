@@ -111,96 +111,6 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* How much the open-loop arm amplifies small errors over the move: the
- * largest norm ||Phi(t)||_inf (max row sum) of the fundamental matrix on a
- * grid of 33 times (an estimate: an error made at t0 > 0 grows by
- * Phi(t) Phi(t0)^-1, which is smaller while errors only grow). */
-static int amplification(const mm_dyn_plan *p, mm_result *res, double *A, mm_error *err)
-{
-    enum { NA = 33 };
-    double t[NA], y0[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    double *y = mm_res_alloc(res, NA * 16 * sizeof *y);
-    if (!y)
-        return MM_ENOMEM;
-    mm_linspace(0, p->T, NA, t);
-    mm_dyn_plan pp = *p;
-    pp.t_left = 1;                                        /* no divergence test here */
-    mm_ode_problem prob = {.n = 16, .f = mm_dyn_plan_variational_rhs, .params = &pp, .t0 = 0, .t_end = p->T, .y0 = y0};
-    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, 1e-6, 1e-6, 100000);
-    mm_ode_result r = {.t_out = t, .nout = NA, .y_out = y};
-    int rc = mm_ode_run(&prob, &opt, &r, err);
-    if (rc != MM_OK)
-        return rc;
-    *A = 1;
-    for (int k = 0; k < NA; k++)
-        for (int i = 0; i < 4; i++) {
-            double row = 0;
-            for (int j = 0; j < 4; j++)
-                row += fabs(y[16 * k + 4 * i + j]);
-            *A = fmax(*A, row);
-        }
-    return MM_OK;
-}
-
-/* ---- the stretched arm on the way --------------------------------------------- */
-
-/* q2(t) - 0 for Brent */
-static int q2_of(double t, double *f, void *ctx)
-{
-    const mm_dyn_plan *p = ctx;
-    double q[2], qd[2], qdd[2];
-    mm_dyn_plan_at(p, t, q, qd, qdd);
-    *f = q[1];
-    return 0;
-}
-
-/* ---- the animation ------------------------------------------------------------- */
-
-static int animate(const mm_dyn_plan *p, mm_result *res)
-{
-    double t_show;
-    int nf = mm_scene_frames(p->T, p->T / 5, &t_show);
-    mm_anim *a = mm_res_animation(res, nf, "t", "s");
-    if (!a)
-        return MM_ENOMEM;
-    mm_dyn_frame_times(a, t_show);
-    enum { NP = 161 };
-    double reach = p->arm.l1 + p->arm.l2, q = mm_dyn_quantum(2 * reach);
-    mm_shape *base = mm_anim_shape(res, "base", MM_SHAPE_POLYGON, 1, 4);
-    mm_shape *path = mm_anim_shape(res, "path", MM_SHAPE_PATH, 1, NP);
-    mm_shape *arm = mm_anim_shape(res, "arm", MM_SHAPE_LINE, nf, 3);
-    mm_shape *elbow = mm_anim_shape(res, "elbow", MM_SHAPE_CIRCLE, nf, 1);
-    mm_shape *tip = mm_anim_shape(res, "tip", MM_SHAPE_CIRCLE, nf, 1);
-    if (!base || !path || !arm || !elbow || !tip)
-        return MM_ENOMEM;
-    base->style = "ground";
-    mm_scene_box(base, 0, 0, -0.04 * reach, 0.16 * reach, 0.08 * reach, 0);
-    path->style = "highlight";
-    for (int k = 0; k < NP; k++) {
-        double qq[2], qd[2], qdd[2], x[3], y[3];
-        mm_dyn_plan_at(p, p->T * k / (NP - 1), qq, qd, qdd);
-        mm_robot2_points(&p->arm, qq, x, y);
-        path->x[k] = x[2], path->y[k] = y[2];
-    }
-    elbow->radius = tip->radius = 0.025 * reach;
-    for (int f = 0; f < nf; f++) {
-        double qq[2], qd[2], qdd[2], x[3], y[3];
-        mm_dyn_plan_at(p, a->t[f], qq, qd, qdd);
-        mm_robot2_points(&p->arm, qq, x, y);
-        for (int k = 0; k < 3; k++)
-            arm->x[3 * f + k] = x[k], arm->y[3 * f + k] = y[k];
-        elbow->x[f] = x[1], elbow->y[f] = y[1];
-        tip->x[f] = x[2], tip->y[f] = y[2];
-    }
-    mm_dyn_round_shape(path, q);
-    mm_dyn_round_shape(arm, q);
-    mm_dyn_round_shape(elbow, q);
-    mm_dyn_round_shape(tip, q);
-    a->bounds[0] = a->bounds[1] = -1.1 * reach;
-    a->bounds[2] = a->bounds[3] = 1.1 * reach;
-    return MM_OK;
-}
-
 /* ---- solve ------------------------------------------------------------------------ */
 
 #define RTOL 1e-12
@@ -255,23 +165,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_DETJ_MIN, s->l1 * s->l2 * smin);
     mm_res_scalar(res, O_REACH, sqrt(s->l1 * s->l1 + s->l2 * s->l2 + 2 * s->l1 * s->l2 * cmax));
     if (through0) {
-        double ts = 0, fx, width;
-        if (qa != 0 && qb != 0) {
-            int iter = 0;
-            int rc = mm_roots_brent(q2_of, &p, 0, p.T, qa, qb, 1e-14 * p.T, 200, &ts, &fx, &width, &iter, NULL,
-                                    err);
-            if (rc != MM_OK)
-                return rc;
-            /* an exact zero of the computed q2(t) ends Brent early: then the
-             * root is off by the rounding of q2 over its speed there */
-            double q[2], qd[2], qdd[2];
-            mm_dyn_plan_at(&p, ts, q, qd, qdd);
-            double e = fx == 0 ? 4 * DBL_EPSILON * (fabs(qa) + fabs(qb)) / fabs(qd[1]) : width;
-            mm_res_scalar_err(res, O_T_SING, ts, e + 1e-14 * p.T, MM_ERR_BOUND);
-        } else {
-            ts = qa == 0 ? 0 : p.T;
+        double ts, ets;                                  /* q2(t) = 0 by Brent, or at an end exactly */
+        int rc = mm_dyn_plan_stretched(&p, &ts, &ets, err);
+        if (rc != MM_OK)
+            return rc;
+        if (ets > 0)
+            mm_res_scalar_err(res, O_T_SING, ts, ets, MM_ERR_BOUND);
+        else
             mm_res_scalar(res, O_T_SING, ts)->exact = 1;
-        }
         mm_res_warn(res, "the arm is stretched (q2 = 0) at t = %.4g s: a singular configuration, det J = 0, "
                          "with the tip at the reach limit l1 + l2 = %.4g m; there the tip cannot move along the "
                          "arm, and joint speeds for a tip speed would be unbounded", ts, s->l1 + s->l2);
@@ -292,22 +193,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* the work of the motors, int tau . q' dt, by 5-point Gauss-Legendre on
      * 64 panels (the integrand is a polynomial in t times sines and cosines:
      * far below round-off), against the rise of the energy (eq. 6) */
-    static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831,
-                                 0.9061798459386640};
-    static const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                 0.4786286704993665, 0.2369268850561891};
-    double work = 0, wabs = 0;
-    for (int k = 0; k < 64; k++) {
-        double a = p.T * k / 64, b = p.T * (k + 1) / 64;
-        for (int i = 0; i < 5; i++) {
-            double t = 0.5 * (a + b) + 0.5 * (b - a) * gx[i], q[2], qd[2], qdd[2], tau[2];
-            mm_dyn_plan_at(&p, t, q, qd, qdd);
-            mm_robot2_inverse(s, q, qd, qdd, tau);
-            double pw = tau[0] * qd[0] + tau[1] * qd[1];
-            work += 0.5 * (b - a) * gw[i] * pw;
-            wabs += 0.5 * (b - a) * gw[i] * (fabs(tau[0] * qd[0]) + fabs(tau[1] * qd[1]));
-        }
-    }
+    double wabs, work = mm_dyn_plan_work(&p, &wabs);
     double qe[2] = {p.q0[0] + p.dq[0], p.q0[1] + p.dq[1]}, z[2] = {0, 0}, Ta, Va, Tb, Vb;
     mm_robot2_energy(s, p.q0, z, &Ta, &Va);
     mm_robot2_energy(s, qe, z, &Tb, &Vb);
@@ -339,7 +225,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method_stat(res, "steps", (double)r.n_accepted);
     mm_res_method_stat(res, "evaluations", (double)r.n_eval);
     double A;
-    rc = amplification(&p, res, &A, err);
+    rc = mm_dyn_plan_amplification(&p, res, &A, err);
     if (rc != MM_OK)
         return rc;
     /* each step errs by about RTOL times the state's size; the arm
@@ -354,7 +240,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     else if (tol > 1e-6)
         mm_res_warn(res, "driven open loop the arm amplifies small errors by about %.2g along this move: the "
                          "simulation can follow the plan only to about %.2g rad", A, tol);
-    return animate(&p, res);
+    return mm_dyn_plan_animate(&p, res);
 }
 
 static const char *const references[] = {
@@ -365,19 +251,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_dyn_robot_2link = {
-    .id = "dyn-robot-2link",
-    .chapter = 4,
-    .section = "4.4.2",
-    .title = "Dynamics of a two-link robot arm",
+    .id = "dyn-robot-2link", .chapter = 4, .section = "4.4.2", .title = "Dynamics of a two-link robot arm",
     .summary = "Joint torques of a planned quintic move (inverse dynamics), checked by a forward simulation "
                "driven by them; singular configurations and the reach.",
-    .tags = "dynamics, robot, inverse dynamics, trajectory, multibody",
-    .theory = "exercises/dyn/robot_2link.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "dynamics, robot, inverse dynamics, trajectory, multibody", .theory = "exercises/dyn/robot_2link.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -193,7 +193,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double T0 = mm_sc_kinetic(&s, q0, qd0), Eworst = 0, Escale = T0, drift = 0, wlo = INFINITY, whi = -INFINITY;
     double fa_max = 0, fb_max = 0, n_max = 0, wE_worst = 0, TJ_worst = 0, mom_worst = 0, mom_scale = 0, wsum = 0;
     for (int i = 0; i < n; i++) {
-        double q[MM_SC_NQ], qd[MM_SC_NQ], qdd[MM_SC_NQ], lam[MM_SC_NC], Phi[MM_SC_NC];
+        double q[MM_SC_NQ], qd[MM_SC_NQ], qdd[MM_SC_NQ], lam[MM_SC_NC];
         mm_dyn_sc_state(&s, partition, y + (size_t)i * (size_t)ny, q, qd);
         rc = mm_sc_accel(&s, q, qd, partition ? 0 : alpha, partition ? 0 : alpha, qdd, lam);
         if (rc != MM_OK)
@@ -209,10 +209,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         TJ_worst = fmax(TJ_worst, fabs(0.5 * J * wk * wk - T0 - work));
         /* the speed error that an energy error means: dw = dE / (J |w|) */
         wE_worst = fmax(wE_worst, fabs(Tk - T0 - work) / (J * fmax(fabs(wk), 1e-300)));
-        mm_sc_constraints(&s, q, NULL, Phi, NULL);
-        double d = 0;
-        for (int k = 0; k < MM_SC_NC; k++)
-            d = fmax(d, fabs(Phi[k]));
+        double d = mm_sc_drift(&s, q);
         drift = fmax(drift, d);
         /* joint forces (see mm_multibody.h for the signs) */
         double fa = hypot(lam[0], lam[1]), fb = hypot(lam[2], lam[3]), N = -lam[3];
@@ -225,52 +222,21 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         wsum += (i == 0 || i == n - 1 ? 0.5 : 1) * wk;
         /* momentum: the bearing force on the crank and the guide force on the
          * piston accelerate the rod's and the piston's centres of mass */
-        double Fx = -lam[0], Fy = -lam[1] + N;
-        double px = s.m_rod * qdd[1] + s.m_piston * qdd[4], py = s.m_rod * qdd[2];
-        mom_worst = fmax(mom_worst, hypot(Fx - px, Fy - py));
-        mom_scale = fmax(mom_scale, fa + fb + fabs(s.m_rod * qdd[1]) + fabs(s.m_piston * qdd[4]) +
-                                        fabs(s.m_rod * qdd[2]));
+        double msc, mres = mm_sc_momentum_residual(&s, qdd, lam, &msc);
+        mom_worst = fmax(mom_worst, mres);
+        mom_scale = fmax(mom_scale, msc);
     }
     double wmean = wsum / (n - 1);
     /* the error of the speeds read off the run: a second run of the reduced
      * equation at a tolerance 1000 times tighter is the reference (its own
-     * error is then negligible), plus the sampling of an extreme */
-    double *yref = mm_res_alloc(res, (size_t)n * 2 * sizeof *yref);
-    if (!yref)
-        return MM_ENOMEM;
-    double y0r[2] = {0, w0};
-    mm_ode_problem pr = {.n = 2, .f = mm_sc_rhs_reduced, .params = &sys, .t0 = 0, .t_end = t_end, .y0 = y0r};
-    mm_ode_options orf = opt;
-    orf.rtol = orf.atol = fmax(1e-13, fmin(1e-12, 1e-3 * RTOL));   /* DOP853 struggles below 1e-13 */
-    mm_ode_result rref = {.t_out = so->x, .nout = (size_t)n, .y_out = yref};
-    rc = mm_ode_run(&pr, &orf, &rref, err);
-    if (rc != MM_OK)
+     * error is then negligible), plus the sampling of an extreme.  The run's
+     * distance from it is one sample of its error; a third run at half the
+     * tolerance (another step sequence), doubled, is a second; the larger is
+     * stated (with the first alone, reordering DOP853's stage sums moved
+     * revolutions by 4.7 times its stated error) */
+    double *yref, *yalt, tol_ref;
+    if ((rc = mm_dyn_sc_reference_runs(&sys, w0, t_end, n, so->x, &opt, &r, &yref, &yalt, &tol_ref, res, err)))
         return rc;
-    /* The run's distance from the reference is one sample of its error: a
-     * run that differs only in its step sequence (a rounding-level change
-     * moves DOP853's step decisions) can land farther off.  A third run, the
-     * reduced equation at half the tolerance (another step sequence, an
-     * error about 0.55 times the run's), doubled, is a second sample; the
-     * larger of the two is stated.  With the first alone, reordering
-     * DOP853's stage sums moved revolutions by 4.7 times its stated error. */
-    double *yalt = mm_res_alloc(res, (size_t)n * 2 * sizeof *yalt);
-    if (!yalt)
-        return MM_ENOMEM;
-    mm_ode_options oalt = opt;
-    oalt.rtol = oalt.atol = 0.5 * RTOL;
-    /* the run at half the tolerance needs about 1.1 times the run's steps
-     * (DOP853: rtol^(1/8)); a budget of 4 times them plus 1000 ends a run
-     * that went astray before it costs seconds (its failure is not the
-     * answer's: the reference's sample stands in) */
-    oalt.max_steps = 4 * (r.n_accepted + r.n_rejected) + 1000;
-    mm_ode_result ralt = {.t_out = so->x, .nout = (size_t)n, .y_out = yalt};
-    mm_error ealt = {0};
-    rc = mm_ode_run(&pr, &oalt, &ralt, &ealt);
-    if (rc == MM_ENOMEM || rc == MM_EINTERNAL)
-        return rc;
-    if (rc != MM_OK)                        /* no second sample: the reference's stands for it */
-        for (int i = 0; i < 2 * n; i++)
-            yalt[i] = yref[i];
     double rlo = INFINITY, rhi = -INFINITY, rsum = 0, alo = INFINITY, ahi = -INFINITY;
     for (int i = 0; i < n; i++) {
         rlo = fmin(rlo, yref[2 * i + 1]), rhi = fmax(rhi, yref[2 * i + 1]);
@@ -300,51 +266,21 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar_err(res, O_REV, phi_end / (2 * M_PI),
                       (fmax(fabs(phi_end - yref[2 * (n - 1)]), 2 * fabs(yalt[2 * (n - 1)] - yref[2 * (n - 1)])) +
                        1e-12 * fabs(phi_end)) / (2 * M_PI), MM_ERR_ESTIMATE);
-    /* the joint forces of the reference run, for the error of their maxima */
-    /* the reference's error: its tolerance at every step it took, added up */
-    double aa = 0, ab = 0, an = 0, ra = 0, rb = 0, rn = 0, eb = 0, ebJ = 0, tol_ref = orf.rtol * (double)rref.n_accepted;
-    int ia = 0, ib = 0, in_ = 0;
+    /* the joint forces of the reference run and of the third, for the error
+     * of their maxima; the energy error the run's distance from the
+     * reference can make */
     double *absn = mm_res_alloc(res, (size_t)n * sizeof *absn);
     if (!absn)
         return MM_ENOMEM;
-    for (int i = 0; i < n; i++) {
-        double q[MM_SC_NQ], qd[MM_SC_NQ], qdd[MM_SC_NQ], lam[MM_SC_NC];
-        mm_sc_assemble(&s, yref[2 * i], yref[2 * i + 1], q, qd);
-        if (mm_sc_accel(&s, q, qd, 0, 0, qdd, lam) != MM_OK)
-            return mm_error_set(err, MM_ESINGULAR, "l", "the constraints became dependent: the rod stood vertical");
-        ra = fmax(ra, hypot(lam[0], lam[1])), rb = fmax(rb, hypot(lam[2], lam[3])), rn = fmax(rn, fabs(lam[3]));
-        {
-            double qa[MM_SC_NQ], qda[MM_SC_NQ], qdda[MM_SC_NQ], la[MM_SC_NC];
-            mm_sc_assemble(&s, yalt[2 * i], yalt[2 * i + 1], qa, qda);
-            if (mm_sc_accel(&s, qa, qda, 0, 0, qdda, la) != MM_OK)
-                return mm_error_set(err, MM_ESINGULAR, "l", "the constraints became dependent: the rod stood vertical");
-            /* |max a - max b| <= max |a_i - b_i|: the worst pointwise
-             * difference, not only that of the maxima (the largest force
-             * is reached at several dead centres, and a perturbed run may
-             * take its maximum at another one) */
-            double fr = hypot(lam[0], lam[1]), br = hypot(lam[2], lam[3]);
-            aa = fmax(aa, fmax(fabs(sfa->y[i] - fr), 2 * fabs(hypot(la[0], la[1]) - fr)));
-            ab = fmax(ab, fmax(fabs(sfb->y[i] - br), 2 * fabs(hypot(la[2], la[3]) - br)));
-            an = fmax(an, fmax(fabs(fabs(sn->y[i]) - fabs(lam[3])), 2 * fabs(fabs(la[3]) - fabs(lam[3]))));
-        }
-        double qm[MM_SC_NQ], qdm[MM_SC_NQ], bJ;
-        mm_dyn_sc_state(&s, partition, y + (size_t)i * (size_t)ny, qm, qdm);
-        eb = fmax(eb, mm_dyn_sc_energy_bound(&s, qm, qdm, q, qd, tol_ref, &bJ));
-        ebJ = fmax(ebJ, bJ);
-        absn[i] = fabs(sn->y[i]);
-        if (sfa->y[i] > sfa->y[ia])
-            ia = i;
-        if (sfb->y[i] > sfb->y[ib])
-            ib = i;
-        if (absn[i] > absn[in_])
-            in_ = i;
-    }
-    mm_res_scalar_err(res, O_FMAX_A, fa_max, fmax(fabs(fa_max - ra), aa) + mm_dyn_extreme_error(sfa->y, n, ia) + 1e-12 * fa_max,
-                      MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_FMAX_B, fb_max, fmax(fabs(fb_max - rb), ab) + mm_dyn_extreme_error(sfb->y, n, ib) + 1e-12 * fb_max,
-                      MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_NMAX, n_max, fmax(fabs(n_max - rn), an) + mm_dyn_extreme_error(absn, n, in_) + 1e-12 * fb_max,
-                      MM_ERR_ESTIMATE);
+    mm_dyn_sc_cmp c;
+    if ((rc = mm_dyn_sc_compare(&s, partition, ny, n, y, yref, yalt, tol_ref, sfa->y, sfb->y, sn->y, absn, &c, err)))
+        return rc;
+    mm_res_scalar_err(res, O_FMAX_A, fa_max, fmax(fabs(fa_max - c.ra), c.aa) + mm_dyn_extreme_error(sfa->y, n, c.ia) +
+                      1e-12 * fa_max, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_FMAX_B, fb_max, fmax(fabs(fb_max - c.rb), c.ab) + mm_dyn_extreme_error(sfb->y, n, c.ib) +
+                      1e-12 * fb_max, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_NMAX, n_max, fmax(fabs(n_max - c.rn), c.an) + mm_dyn_extreme_error(absn, n, c.in) +
+                      1e-12 * fb_max, MM_ERR_ESTIMATE);
 
     double rad = 1 + fabs(y[(size_t)(n - 1) * (size_t)ny]);
     /* the energy error the run's measured state error can make (eq. 8): the
@@ -353,9 +289,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * its round-off */
     double floor_E = 64 * DBL_EPSILON * Escale;
     mm_res_check_abs(res, "energy balance: kinetic energy - T0 - torque (phi - phi0), worst point [J]", Eworst, 0,
-                     2 * eb + floor_E);
+                     2 * c.eb + floor_E);
     mm_res_check_abs(res, "J(phi) w^2 / 2 with the closed-form inertia (eq. 5) vs T0 + torque (phi - phi0) [J]",
-                     TJ_worst, 0, 2 * ebJ + floor_E);
+                     TJ_worst, 0, 2 * c.ebJ + floor_E);
     mm_check_residual(res, "joint forces: bearing + guide forces vs the rate of momentum [N] "
                            "(scale: sum of the forces and inertia forces)", mom_worst, mom_scale, 16);
     if (partition)
@@ -381,19 +317,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_dyn_slider_crank = {
-    .id = "dyn-slider-crank",
-    .chapter = 4,
-    .section = "4.4.3",
-    .title = "Dynamics of a slider-crank mechanism",
+    .id = "dyn-slider-crank", .chapter = 4, .section = "4.4.3", .title = "Dynamics of a slider-crank mechanism",
     .summary = "The constrained equations with Lagrange multipliers (Baumgarte or coordinate partitioning), "
                "joint forces, the flywheel's speed through the dead centres, energy balance and drift.",
     .tags = "dynamics, mechanism, slider-crank, constraints, Lagrange multipliers, flywheel",
-    .theory = "exercises/dyn/slider_crank.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/dyn/slider_crank.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -23,7 +23,9 @@
 #include <stdlib.h>
 
 #include "mm_dd.h"
+#include "mm_errbound.h"
 #include "mm_exhelp.h"
+#include "mm_num.h"
 
 #define U (DBL_EPSILON / 2)
 
@@ -65,34 +67,11 @@ static const mm_output outputs[] = {
                            .mark = "dots"),
 };
 
-/* A printed number from a dd value with the error bound e of the dd value. */
-static void print_err(mm_result *res, int out, mm_dd v, double e)
-{
-    double x = mm_dd_val(v);
-    double total = e + mm_dd_abs(mm_dd_sub(v, mm_dd_from(x)));
-    mm_scalar *s = mm_res_scalar_err(res, out, x, total, MM_ERR_BOUND);
-    if (total == 0)
-        s->exact = 1;
-}
-
-static double ulp(double x) { return x == 0 ? 0 : ldexp(1, ilogb(x) - 52); }
-
 static int check(const mm_value *in, mm_error *err)
 {
     int op = (int)in[P_OP].x, n = (int)in[P_N].x;
     if (op == OP_ROOTS && n < 1)
         return mm_error_set(err, MM_ERANGE, "n", "roots needs n >= 1 (how many roots of a to find); got %d", n);
-    return MM_OK;
-}
-
-/* A segment from the origin to (x, y), the way an arrow is drawn on the Argand plane. */
-static int arrow(mm_result *res, int out, double x, double y)
-{
-    mm_series *s = mm_res_series(res, out, 2);
-    if (!s)
-        return MM_ENOMEM;
-    s->x[1] = x;
-    s->y[1] = y;
     return MM_OK;
 }
 
@@ -138,67 +117,51 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                             "the result overflows the largest double (about 1.8e308); take %s",
                             op == OP_DIVIDE ? "a larger |b|" : "a smaller |a| or |n|");
 
-    print_err(res, O_RE, z.re, z.err);
-    print_err(res, O_IM, z.im, z.err);
+    /* each part printed with its bound: the dd bound and the rounding to double */
+    mm_num_scalar_dd(res, O_RE, z.re, z.err);
+    mm_num_scalar_dd(res, O_IM, z.im, z.err);
     mm_dd m2 = mm_dd_add(mm_dd_mul(z.re, z.re), mm_dd_mul(z.im, z.im));
-    print_err(res, O_MOD, mm_dd_sqrt(m2), z.err + 4 * MM_DD_EPS * sqrt(m2.hi));
-    double mz = sqrt(m2.hi);
-    if (mz > 0) {
-        /* atan2 is correctly rounded to within 0.52 ulp (measured against
-         * 50 digits); the lo parts move the angle by (x dy - y dx) / |z|^2 */
-        double ang = atan2(zim, zre);
-        double lo = (zre * (z.im.lo + (z.im.hi - zim)) - zim * (z.re.lo + (z.re.hi - zre))) / (mz * mz);
-        double aerr = z.err / (mz - fmin(z.err, 0.5 * mz)) * 2 + ulp(ang);
-        mm_res_scalar_err(res, O_ARG, ang + lo, aerr + fabs(lo) * U, MM_ERR_BOUND);
-    } else {
-        mm_res_scalar_err(res, O_ARG, 0, z.err > 0 ? M_PI : 0, MM_ERR_BOUND);  /* arg 0 of 0, by convention */
-    }
-    mm_res_scalar_err(res, O_AMOD, ra, ulp(ra), MM_ERR_BOUND);
-    mm_res_scalar_err(res, O_AARG, ta, ulp(ta), MM_ERR_BOUND);
+    mm_num_scalar_dd(res, O_MOD, mm_dd_sqrt(m2), z.err + 4 * MM_DD_EPS * sqrt(m2.hi));
+    double mz = sqrt(m2.hi), aerr, arg = mm_errbound_arg(z, &aerr);     /* arg 0 of 0, by convention */
+    mm_res_scalar_err(res, O_ARG, arg, aerr, MM_ERR_BOUND);
+    mm_res_scalar_err(res, O_AMOD, ra, mm_errbound_ulp(ra), MM_ERR_BOUND);
+    mm_res_scalar_err(res, O_AARG, ta, mm_errbound_ulp(ta), MM_ERR_BOUND);
 
     /* the Argand plane: a, b and the result as arrows from the origin */
-    if (arrow(res, O_A, are, aim) || ((op == OP_MULTIPLY || op == OP_DIVIDE) && arrow(res, O_B, bre, bim)) ||
-        arrow(res, O_Z, zre, zim))
+    if (mm_num_arrow(res, O_A, are, aim) ||
+        ((op == OP_MULTIPLY || op == OP_DIVIDE) && mm_num_arrow(res, O_B, bre, bim)) ||
+        mm_num_arrow(res, O_Z, zre, zim))
         return MM_ENOMEM;
 
-    /* polar in double: r from hypot and theta from atan2 (each within an
-     * ulp), then pow and n theta and cos/sin: relative error of the modulus
-     * (|n| + 3) u, absolute error of the angle (3 |n| |theta| + 2) u */
+    /* polar in double (mm_errbound_polar): the modulus within (|n| + 3) u,
+     * the angle within (3 |n| |theta| + 2) u */
     int an = op == OP_MULTIPLY || op == OP_DIVIDE ? 1 : abs(n);
     double th = op == OP_MULTIPLY || op == OP_DIVIDE ? fabs(ta) + fabs(tb) : fabs(ta);
-    double polar_tol = rp * ((2.0 * an + 6) * U + (3.0 * an * th + 2) * 2 * U) * M_SQRT2 + z.err;
+    double polar_tol = mm_errbound_polar(rp, an, th) + z.err;
+    double polar_dev = hypot(zre - rp * cos(tp), zim - rp * sin(tp));
     if (op == OP_ROOTS) {
         /* all n roots (eq. 8), a regular n-gon; w^n = a and sum w = 0, each
          * within what rounding the roots to double leaves */
         mm_series *s = mm_res_series(res, O_ROOTS, n + 1);
         if (!s)
             return MM_ENOMEM;
-        double back = 0, back_tol = 0, sre = 0, sim = 0, stol = 0;
-        for (int k = 0; k < n; k++) {
-            mm_cdd w = mm_cdd_root(a, ra, ta, n, k);
-            s->x[k] = mm_dd_val(w.re), s->y[k] = mm_dd_val(w.im);
-            mm_cdd wn = mm_cdd_pow(mm_cdd_exact(s->x[k], s->y[k]), n);
-            double mw = hypot(s->x[k], s->y[k]), dw = w.err + M_SQRT2 * U * mw;
-            back = fmax(back, hypot(mm_dd_val(mm_dd_sub(wn.re, a.re)), mm_dd_val(mm_dd_sub(wn.im, a.im))));
-            back_tol = fmax(back_tol, 1.01 * n * pow(mw + dw, n - 1) * dw + wn.err);
-            sre += s->x[k], sim += s->y[k];
-            stol += dw + 2 * U * (fabs(sre) + fabs(sim));
-        }
+        double back, back_tol, sum, sum_tol;
+        mm_errbound_roots(a, ra, ta, n, s->x, s->y, &back, &back_tol, &sum, &sum_tol);
         s->x[n] = s->x[0];                       /* close the polygon */
         s->y[n] = s->y[0];
         mm_res_check_abs(res, "roots as printed: worst |w^n - a| <= n |w|^(n-1) |rounding of w|", back, 0, back_tol);
         if (n >= 2)
             mm_res_check_abs(res, "roots: |sum of the n roots| = 0 (coefficient of z^(n-1) in z^n - a)",
-                             hypot(sre, sim), 0, 1.01 * stol);
+                             sum, 0, sum_tol);
         mm_res_check_abs(res, "principal root: rectangular (Newton in double-double) vs polar form in double, eq. (8)",
-                         hypot(zre - rp * cos(tp), zim - rp * sin(tp)), 0, polar_tol);
+                         polar_dev, 0, polar_tol);
         mm_res_method(res, "polar form r^(1/n) e^(i (theta + 2 pi k) / n), refined by Newton's method in double-double", 0);
         return MM_OK;
     }
 
     /* rectangular against polar: the same number by two routes */
-    mm_res_check_abs(res, "|rectangular - polar|: eqs. 4-5 in double-double against eqs. 6-7 in double",
-                     hypot(zre - rp * cos(tp), zim - rp * sin(tp)), 0, polar_tol);
+    mm_res_check_abs(res, "|rectangular - polar|: eqs. 4-5 in double-double against eqs. 6-7 in double", polar_dev,
+                     0, polar_tol);
     double zerr = z.err + U * mz;                    /* the printed z: dd bound + rounding */
     if (op == OP_MULTIPLY) {
         mm_res_check_abs(res, "|a b| = |a| |b|", mz, ra * rb, zerr + 3 * U * ra * rb);
@@ -212,16 +175,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double rn = pow(ra, n);
         mm_res_check_abs(res, "|a^n| = |a|^n", mz, rn, zerr + (abs(n) + 2) * U * rn);
         /* the powers a^0, a^1, ..., a^n: a spiral that turns by arg a each step */
-        int m = abs(n) + 1;
-        mm_series *s = mm_res_series(res, O_POWERS, m);
-        if (!s)
+        if (mm_num_powers(res, O_POWERS, a, n))
             return MM_ENOMEM;
-        mm_cdd step = n >= 0 ? a : mm_cdd_div(mm_cdd_exact(1, 0), a), p = mm_cdd_exact(1, 0);
-        for (int j = 0; j < m; j++) {
-            s->x[j] = mm_dd_val(p.re);
-            s->y[j] = mm_dd_val(p.im);
-            p = mm_cdd_mul(p, step);
-        }
     }
     mm_res_method(res, "rectangular arithmetic in double-double, checked in polar form", 0);
     /* log10 |z| from the moduli, which cannot underflow */
@@ -239,18 +194,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_complex = {
-    .id = "num-complex",
-    .chapter = 1,
-    .section = "1.4.1",
-    .title = "Complex numbers: rectangular and polar form",
+    .id = "num-complex", .chapter = 1, .section = "1.4.1", .title = "Complex numbers: rectangular and polar form",
     .summary = "Square, multiply, divide, raise to a power or take roots of complex numbers, on the Argand plane.",
-    .tags = "complex numbers, polar form, de Moivre, Argand plane",
-    .theory = "exercises/num/complex.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "complex numbers, polar form, de Moivre, Argand plane", .theory = "exercises/num/complex.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

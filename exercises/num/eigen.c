@@ -25,7 +25,7 @@
 #include <float.h>
 #include <math.h>
 
-#include "mm_dd.h"
+#include "mm_errbound.h"
 #include "mm_exhelp.h"
 #include "mm_linalg.h"
 
@@ -48,8 +48,7 @@ enum { O_EIGEN, O_MODES, O_SHAPE, O_LMIN, O_LMAX, O_UNSTABLE, O_CONDM };
 static const char *const eig_cols[] = {"lambda", "omega", "f", "lambda_err", "omega_err", "f_err", "lambda_matlab",
                                        NULL};
 static const char *const eig_units[] = {"1/s^2", "rad/s", "Hz", "1/s^2", "rad/s", "Hz", "1/s^2", NULL};
-static const char *const mode_cols[] = {"mode", "dof", "phi", NULL};
-static const char *const mode_units[] = {"", "", "", NULL};
+static const char *const mode_cols[] = {"mode", "dof", "phi", NULL}, *const mode_units[] = {"", "", "", NULL};
 
 static const mm_output outputs[] = {
     [O_EIGEN] = MM_TABLE("eigen", "eigenvalues lambda = omega^2, natural frequencies, and eig in double", eig_cols,
@@ -84,18 +83,6 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* ||a||_2 (an upper bound) and the smallest eigenvalue of the symmetric a
- * (a lower bound, and the value with its bound) */
-static int extremes(int n, const double *a, double *w, double *we, double *top, double *low, double *wmin,
-                    double *wmin_err, double *wmax, mm_error *err)
-{
-    int rc = mm_linalg_sygv_dd(n, a, NULL, w, we, NULL, err);
-    *top = fmax(fabs(w[0]) + we[0], fabs(w[n - 1]) + we[n - 1]);
-    *low = w[0] - we[0];
-    *wmin = w[0], *wmin_err = we[0], *wmax = w[n - 1];
-    return rc;
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int n = in[P_K].rows;
@@ -103,7 +90,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double *lam = mm_res_alloc(res, (size_t)(2 * n * n + 5 * n) * sizeof *lam);
     if (!lam)
         return MM_ENOMEM;
-    double *le = lam + n, *V = le + n, *ll = V + n * n, *MK = ll + n, *w = MK + n * n, *we = w + n;
+    double *le = lam + n, *V = le + n, *ll = V + n * n, *MK = ll + n, *w = MK + n * n;      /* w: 2n of scratch */
 
     /* the eigenvalues to the last digit, with bounds (eq. 7) */
     int rc = mm_linalg_sygv_dd(n, K, M, lam, le, V, err);
@@ -113,11 +100,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (rc != MM_OK)
         return rc;
     /* ||M||, ||M^-1|| = 1 / mu_min, ||K|| from their own eigenvalues */
-    double mnorm, mmin, knorm, kmin, m1, m1e, mn, d1, d2, d3;
-    if ((rc = extremes(n, M, w, we, &mnorm, &mmin, &m1, &m1e, &mn, err)) ||
-        (rc = extremes(n, K, w, we, &knorm, &kmin, &d1, &d2, &d3, err)))
+    mm_errbound_sym bm, bk;
+    if ((rc = mm_errbound_sym_extremes(n, M, w, &bm, err)) || (rc = mm_errbound_sym_extremes(n, K, w, &bk, err)))
         return rc;
-    double condM = mn / m1;                        /* M is positive definite: mu_max / mu_min */
+    double mnorm = bm.norm_hi, mmin = bm.min_lo, knorm = bk.norm_hi;
+    double condM = bm.max / bm.min;                /* M is positive definite: mu_max / mu_min */
     mm_res_scalar_err(res, O_CONDM, condM, mmin > 0 ? mnorm / mmin - condM + 2 * U * condM : condM, MM_ERR_BOUND);
 
     /* MATLAB's eig(K, M): LAPACK dsygvd in double */
@@ -140,12 +127,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             t->text[7 * j + 1] = t->text[7 * j + 2] = t->text[7 * j + 4] = t->text[7 * j + 5] =
                 "imaginary (lambda < 0: unstable)";
         } else {
-            double om = sqrt(fmax(lam[j], 0)), lo = sqrt(fmax(lam[j] - le[j], 0)), hi = sqrt(lam[j] + le[j]);
-            /* |sqrt(lambda*) - sqrt(lambda)| = |lambda* - lambda| / (sqrt(lambda*) + sqrt(lambda))
-             * <= le / (lo + om): as a quotient, not as hi - om in double, where lambda + le
-             * rounds back to lambda when le is under half an ulp and the bound was U omega
-             * alone (8 of 200 draws 1.01-1.24x over it, tests/ref/num_ref.py) */
-            double oe = (lam[j] - le[j] > 0 ? le[j] / (lo + om) : fmax(hi - om, om - lo)) * (1 + 4 * U) + U * om;
+            double oe, om = mm_errbound_sqrt(lam[j], le[j], &oe);
             if (lam[j] - le[j] <= 0)
                 rigid++;
             row[1] = om, row[4] = oe;
@@ -192,15 +174,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_linalg_solve_info info;
     rc = mm_linalg_solve(n, n, M, K, MK, &info, err);
     if (rc == MM_OK) {
-        double tr = 0, sl = 0, tol = 0;
-        for (int j = 0; j < n; j++) {
-            double cmax = 0;
-            for (int i = 0; i < n; i++)
-                cmax = fmax(cmax, fabs(MK[i * n + j]));
-            tr += MK[j * n + j];
-            sl += lam[j];
-            tol += le[j] + info.ferr * cmax + 2 * n * U * (fabs(lam[j]) + fabs(MK[j * n + j]));
-        }
+        double tr, sl, tol = mm_errbound_trace(n, MK, info.ferr, lam, le, &tr, &sl);
         mm_res_check_abs(res, "sum of lambda vs trace(M^-1 K) by LU, eq. (5), within their error bounds", sl, tr,
                          1.01 * tol);
     } else if (rc != MM_ESINGULAR) {
@@ -234,18 +208,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_eigen = {
-    .id = "num-eigen",
-    .chapter = 1,
-    .section = "1.4.2",
-    .title = "Eigenvalues: natural frequencies and mode shapes",
+    .id = "num-eigen", .chapter = 1, .section = "1.4.2", .title = "Eigenvalues: natural frequencies and mode shapes",
     .summary = "Solve K v = lambda M v like MATLAB's eig(K, M): natural frequencies and mode shapes of a spring-mass chain.",
     .tags = "linear algebra, eigenvalues, eigenvectors, natural frequencies, mode shapes",
-    .theory = "exercises/num/eigen.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/num/eigen.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

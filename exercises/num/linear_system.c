@@ -27,8 +27,10 @@
 #include <math.h>
 
 #include "mm_dd.h"
+#include "mm_errbound.h"
 #include "mm_exhelp.h"
 #include "mm_linalg.h"
+#include "mm_num.h"
 
 #define MAXN 12
 #define U (DBL_EPSILON / 2)                   /* unit roundoff */
@@ -46,10 +48,10 @@ static const mm_param params[] = {
 
 enum { O_X, O_COND, O_RESIDUAL, O_BERR, O_DIGITS, O_SOLUTION, O_SIGMAS, O_XS, O_SIGMA };
 
-static const char *const sol_cols[] = {"i", "x", "x_err", "x_matlab", "matlab_error", NULL};
-static const char *const sol_units[] = {"", "", "", "", "", NULL};
-static const char *const sv_cols[] = {"i", "sigma", "sigma_err", "sigma_matlab", NULL};
-static const char *const sv_units[] = {"", "", "", "", NULL};
+static const char *const sol_cols[] = {"i", "x", "x_err", "x_matlab", "matlab_error", NULL},
+                         *const sol_units[] = {"", "", "", "", "", NULL};
+static const char *const sv_cols[] = {"i", "sigma", "sigma_err", "sigma_matlab", NULL},
+                         *const sv_units[] = {"", "", "", "", NULL};
 
 static const mm_output outputs[] = {
     [O_X] = MM_SCALAR("x%d", "unknown x_%d", "", .flags = MM_ANSWER, .first = 1, .last = MAXN),
@@ -81,11 +83,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int n = in[P_A].rows;
     const double *A = in[P_A].data, *b = in[P_B].data;
-    double *x = mm_res_alloc(res, 11 * n * sizeof *x);
+    double *x = mm_res_alloc(res, 10 * n * sizeof *x);
     if (!x)
         return MM_ENOMEM;
     double *xe = x + n, *xl = xe + n, *s = xl + n, *se = s + n, *sl = se + n, *r = sl + n, *mag = r + n,
-           *rl = mag + n, *magl = rl + n, *w = magl + n;
+           *w = mag + n;                                    /* w: 2n of scratch */
 
     /* singular values (eq. 5) to the last digit, with bounds */
     int rc = mm_linalg_svdvals_dd(n, n, A, s, se, err);
@@ -101,20 +103,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double rdd;
     if ((rc = mm_linalg_solve_dd(n, A, b, smin_lo, x, xe, &rdd, err)) != MM_OK)
         return rc;
-    for (int i = 0; i < n; i++) {
-        mm_scalar *sc = mm_res_scalar_i(res, O_X, i + 1, x[i]);
-        sc->error = xe[i];
-        sc->error_kind = MM_ERR_BOUND;
-    }
+    for (int i = 0; i < n; i++)
+        mm_num_scalar_i_err(res, O_X, i + 1, x[i], xe[i], MM_ERR_BOUND);
 
-    /* cond = s_1 / s_n: the exact one is within (s_1 / s_n) (e_1 / s_1 + e_n / s_n_lo)
-     * of s_1 / s_n, and the division rounds by U more.  Written relative, not
-     * as the ends of an interval in double: s_1 + e_1 rounds back to s_1 when
-     * e_1 is under half an ulp, and the bound came out as U cond alone (the
-     * defaults were 1.4 U off, reference harness tests/ref/num_ref.py) */
+    /* cond = s_1 / s_n, its bound from those of s_1 and s_n (relative: as the
+     * ends of an interval in double it came out as U cond alone, 1.4 U off at
+     * the defaults, reference harness tests/ref/num_ref.py) */
     double cond = s[0] / s[n - 1];
-    double cond_err = (1 + 8 * U) * cond * ((1 + U) * (se[0] / s[0] + se[n - 1] / smin_lo) + U);
-    mm_res_scalar_err(res, O_COND, cond, cond_err, MM_ERR_BOUND);
+    mm_res_scalar_err(res, O_COND, cond, mm_errbound_cond(s[0], se[0], s[n - 1], se[n - 1]), MM_ERR_BOUND);
 
     /* the residual of the printed x, in double-double (eq. 3-4).  Its value
      * is rounding-level: the exact solution has residual 0, and rounding it
@@ -160,31 +156,20 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (have_lu) {
         /* check: the forward error of A \ b is at most ||A^-1|| ||b - A x_lu||
          * (eq. 7) with its residual computed in double-double; the accurate x
-         * carries its own bound */
-        mm_linalg_residual_dd(n, A, xl, b, rl, magl);
-        double bound = (mm_linalg_norm2(n, rl) + 4 * MM_DD_EPS * n * mm_linalg_norm2(n, magl)) / smin_lo;
+         * carries its own bound.  And its componentwise backward error, max
+         * |r_i| / (|A| |x| + |b|)_i (eq. 4): LU with refinement leaves a few eps */
+        double omega, bound = mm_errbound_solve(n, A, b, xl, smin_lo, &omega, w);
         for (int i = 0; i < n; i++)
             w[i] = xl[i] - x[i];
         mm_res_check_abs(res, "A\\b: ||x_matlab - x|| <= ||b - A x_matlab|| / sigma_min, eq. (7)", mm_linalg_norm2(n, w), 0,
                          1.01 * bound + mm_linalg_norm2(n, xe));
-        /* check: componentwise backward error of A \ b, max |r_i| / (|A| |x| + |b|)_i
-         * (eq. 4): LU with refinement leaves a few eps */
-        double omega = 0;
-        for (int i = 0; i < n; i++)
-            omega = fmax(omega, magl[i] > 0 ? fabs(rl[i]) / magl[i] : 0);
         mm_res_check_abs(res, "A\\b: componentwise backward error max |r_i| / (|A| |x| + |b|)_i <= 2 eps, eq. (4)",
                          omega, 0, 2 * DBL_EPSILON);
     }
     /* check: the printed x against the data: its residual is what rounding x
      * to double leaves, |r| <= |A| (u |x| + x_err) */
-    for (int i = 0; i < n; i++) {
-        double acc = 0;
-        for (int j = 0; j < n; j++)
-            acc += fabs(A[i * n + j]) * (U * fabs(x[j]) + xe[j]);
-        w[i] = acc;
-    }
     mm_res_check_abs(res, "printed x: ||b - A x|| <= || |A| (u |x| + x_err) ||, the rounding of x to double", rnorm, 0,
-                     1.01 * mm_linalg_norm2(n, w) + rerr);
+                     1.01 * mm_errbound_rounded_residual(n, A, x, xe, w) + rerr);
     /* check: MATLAB's svd (LAPACK dgesdd, double) within its normwise bound
      * p(n) eps sigma_max (LAPACK Users' Guide 4.9; p(n) = 4n here: the
      * largest seen over 200 random 3 x 3 draws was 0.96 n) */
@@ -196,14 +181,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     mm_res_method(res, "A\\b: LU with partial pivoting, equilibrated, iterative refinement (LAPACK dgesvx); "
                        "x and sigma to the last digit in double-double arithmetic", 0);
-    if (have_lu) {
-        mm_res_method_stat(res, "rcond", info.rcond);
-        mm_res_method_stat(res, "error_estimate", info.ferr);
-    }
-    if (!have_lu)
+    if (!have_lu) {
         mm_res_warn(res, "A\\b in double precision meets an exact zero pivot and gives no answer; the x printed "
                          "comes from 32-digit arithmetic, where A is not singular (cond(A) = %.3g)", cond);
-    else if (cond * DBL_EPSILON > 1e-8)
+        return MM_OK;
+    }
+    mm_res_method_stat(res, "rcond", info.rcond);
+    mm_res_method_stat(res, "error_estimate", info.ferr);
+    if (cond * DBL_EPSILON > 1e-8)
         mm_res_warn(res, "A is nearly singular: cond(A) = %.3g, so A\\b in double precision can lose about %.0f of "
                     "its 16 digits although its residual is tiny (here it is off by %.2g relative); the x printed is "
                     "computed in 32-digit arithmetic and right to the digits shown", cond,
@@ -219,19 +204,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_linear_system = {
-    .id = "num-linear-system",
-    .chapter = 1,
-    .section = "1.4.2",
-    .title = "A linear system A x = b",
+    .id = "num-linear-system", .chapter = 1, .section = "1.4.2", .title = "A linear system A x = b",
     .summary = "Solve A x = b like MATLAB's A\\b; the condition number tells how many digits of x a double-precision "
                "solve keeps.",
-    .tags = "linear algebra, linear system, LU, condition number, residual",
-    .theory = "exercises/num/linear_system.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "linear algebra, linear system, LU, condition number, residual", .theory = "exercises/num/linear_system.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

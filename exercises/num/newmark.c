@@ -27,6 +27,7 @@
 #include "mm_exhelp.h"
 #include "mm_linalg.h"
 #include "mm_mdof.h"
+#include "mm_num.h"
 #include "mm_scene.h"
 #include "mm_vib.h"
 
@@ -181,39 +182,17 @@ static int check(const mm_value *in, mm_error *err)
 
 /* ---- the runs --------------------------------------------------------------------- */
 
-typedef struct run_out {
-    double *t, *q;               /* the stored rows */
-    mm_newmark_energy *e;        /* eq. (7) at the stored rows */
-    mm_newmark_result r;
-} run_out;
-
-/* N steps of h, storing every stride-th and the last, or `points` rows
- * spread evenly when points > 0.  The work of F and C by the trapezoidal
- * rule in q, eq. (8): exact for average acceleration on a linear system. */
-static int run(sys *s, const mm_newmark_options *base, double h, long N, long stride, int points, run_out *o,
-               mm_result *res, mm_error *err)
+/* N steps of h (mm_num_newmark_run) of eq. (1) from the start, the work of
+ * F and C by the trapezoidal rule in q, eq. (8): exact for average
+ * acceleration on a linear system */
+static int run(sys *s, const mm_newmark_options *base, double h, long N, long stride, int points,
+               mm_num_newmark_rows *o, mm_result *res, mm_error *err)
 {
-    int n = s->n;
-    mm_newmark_problem prob = {.n = n, .M = s->M, .C = s->C, .K = s->K, .force = force,
+    mm_newmark_problem prob = {.n = s->n, .M = s->M, .C = s->C, .K = s->K, .force = force,
                                .jacobian = s->knl > 0 ? jacobian : NULL,
                                .force_kind = s->knl > 0 ? MM_NEWMARK_FORCE_POSITION : MM_NEWMARK_FORCE_TIME,
-                               .params = s, .q0 = s->q0, .qd0 = s->v0, .t0 = 0, .t_end = N * h};
-    mm_newmark_options opt = *base;
-    opt.h = h, opt.stride = stride, opt.points = points, opt.work_in_q = 1;
-    int rc = mm_newmark_check(&prob, &opt, err), rows = mm_newmark_output_rows(&prob, &opt);
-    if (rc != MM_OK)
-        return rc;
-    o->t = mm_res_alloc(res, (size_t)rows * sizeof *o->t);
-    o->q = mm_res_alloc(res, (size_t)rows * n * sizeof *o->q);
-    o->e = mm_res_alloc(res, (size_t)rows * sizeof *o->e);
-    mm_newmark_work *w = mm_newmark_work_alloc(n);
-    if (!o->t || !o->q || !o->e || !w) {
-        mm_newmark_work_free(w);
-        return MM_ENOMEM;
-    }
-    o->r = (mm_newmark_result){.t = o->t, .q = o->q, .energy = o->e, .max_rows = rows};
-    rc = mm_newmark_solve(&prob, &opt, w, &o->r, err);
-    mm_newmark_work_free(w);
+                               .params = s, .q0 = s->q0, .qd0 = s->v0, .t0 = 0};
+    int rc = mm_num_newmark_run(&prob, base, h, N, stride, points, o, res, err);
     if (rc == MM_ENOCONV || rc == MM_ENONFINITE)
         return mm_error_set(err, MM_ERANGE, "h", "at h = %g s the cubic spring changes too much within a step "
                             "(%s): reduce h or knl", h, rc == MM_ENOCONV ? "Newton did not converge" :
@@ -229,8 +208,9 @@ static double worst_diff(int m, const double *a, const double *b)
     return w;
 }
 
-/* The masses on their springs over the first t_show seconds: a short run of
- * the same scheme, sampled at the animation's frames. */
+/* The masses on their springs over the first t_show seconds (the frames
+ * of mm_vib_frames at the fastest motion wfast): a short run of the same
+ * scheme, sampled at the animation's frames. */
 static int animate(sys *s, const mm_newmark_options *o, double h, double t_end, double wfast, mm_result *res,
                    mm_error *err)
 {
@@ -239,15 +219,9 @@ static int animate(sys *s, const mm_newmark_options *o, double h, double t_end, 
     long steps = (long)ceil(t_show / h * (1 - 1e-12));
     if (steps < nf - 1)
         nf = (int)steps + 1;
-    run_out a;
+    mm_num_newmark_rows a;
     int rc = run(s, o, h, steps, 1, nf < 2 ? 2 : nf, &a, res, err);
-    if (rc != MM_OK)
-        return rc;
-    mm_anim *an = mm_res_animation(res, a.r.rows, "t", "s");
-    if (!an)
-        return MM_ENOMEM;
-    memcpy(an->t, a.t, (size_t)a.r.rows * sizeof *a.t);
-    return mm_vib_masses_draw(res, s->n, s->K, a.r.rows, a.q, 4 * mm_vib_big(a.q, (size_t)a.r.rows * s->n));
+    return rc != MM_OK ? rc : mm_num_newmark_draw(res, s->n, s->K, &a);
 }
 
 /* ---- solve ------------------------------------------------------------------------- */
@@ -263,27 +237,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     o.max_steps = MM_NEWMARK_STEPS_CEILING;
     int rc;
 
-    /* ---- modes: undamped omega_max, damped modes for the table ---- */
-    double w[MAXN], wm[MAXN], wmax, kappa;
-    mm_mdof_system ms = {n, s.M, s.C, s.K}, mi = {n, s.M, NULL, NULL};
-    mm_mdof_cmode cm[MAXN];
-    double Id[MAXN * MAXN] = {0};
-    for (int i = 0; i < n; i++)
-        Id[i * n + i] = 1;
-    mi.M = Id, mi.K = s.M;                 /* the eigenvalues of M: its conditioning */
-    if ((rc = mm_mdof_modes(&(mm_mdof_system){n, s.M, NULL, s.K}, n, w, NULL, NULL, err)) ||
-        (rc = mm_mdof_modes(&mi, n, wm, NULL, NULL, err)) || (rc = mm_mdof_complex_modes(&ms, cm, err)))
+    /* ---- modes: undamped omega_max, cond(M), damped modes for the table ---- */
+    double wmax, kappa;
+    mm_mdof_system ms = {n, s.M, s.C, s.K};
+    if ((rc = mm_num_newmark_modes(res, O_MODES, n, s.M, s.C, s.K, h, &wmax, &kappa, err)) != MM_OK)
         return rc;
-    wmax = w[n - 1];
-    kappa = wm[0] > 0 ? wm[n - 1] * wm[n - 1] / (wm[0] * wm[0]) : 1 / eps;
     double werr = 8 * n * eps * kappa * wmax;     /* a symmetric pencil's backward error */
-    mm_table *mt = mm_res_table(res, O_MODES, n);
-    if (!mt)
-        return MM_ENOMEM;
-    for (int j = 0; j < n; j++) {
-        double row[5] = {j + 1, cm[j].omega, cm[j].zeta, cm[j].omega_d, cm[j].omega * h};
-        memcpy(mt->cell + 5 * j, row, sizeof row);
-    }
     mm_res_scalar(res, O_N, n);
     mm_res_scalar_err(res, O_WMAX, wmax, werr, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_WMAXH, wmax * h, werr * h, MM_ERR_ESTIMATE);
@@ -295,7 +254,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_newmark_problem pr = {.n = n, .M = s.M, .t0 = 0, .t_end = t_end};
     o.h = h;
     long N = mm_newmark_step_count(&pr, &o), stride = (N + np - 2) / (np - 1);
-    run_out r1;
+    mm_num_newmark_rows r1;
     if ((rc = run(&s, &o, h, N, stride, 0, &r1, res, err)) != MM_OK)
         return rc;
     int ns = r1.r.rows;
@@ -365,7 +324,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * under 1 % of the motion, a step resolving the fastest motion ---- */
     double wf = fmax(wmax, s.w);
     if (e1 > 1e4 * err_ref && e1 < 1e-2 * Aref && wf * h <= 0.5) {
-        run_out r2;
+        mm_num_newmark_rows r2;
         if ((rc = run(&s, &o, h / 2, 2 * N, 2 * stride, 0, &r2, res, err)) != MM_OK)
             return rc;
         double e2 = worst_diff(ns * n, r2.q, qx), p = log2(e1 / e2);
@@ -433,18 +392,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_newmark = {
-    .id = "num-newmark",
-    .chapter = 1,
-    .section = "1.4.2",
+    .id = "num-newmark", .chapter = 1, .section = "1.4.2",
     .title = "Equations of motion step by step: the Newmark method",
     .summary = "M q'' + C q' + K q = F(q, q', t) for a small system by Newmark, HHT-alpha or central difference.",
     .tags = "numerical methods, time integration, Newmark, HHT-alpha, central difference, Newton, energy",
-    .theory = "exercises/num/newmark.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/num/newmark.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

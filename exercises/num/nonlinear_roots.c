@@ -27,8 +27,8 @@
 #include <string.h>
 
 #include "mm_exhelp.h"
-#include "mm_expr.h"
-#include "mm_roots.h"
+#include "mm_num.h"
+#include "mm_rootcheck.h"
 
 #define MAXN 1000
 #define MAXPOLES 16
@@ -53,8 +53,8 @@ static const mm_param params[] = {
 
 enum { O_COUNT, O_X1, O_ROOTS, O_RPTS, O_F };
 
-static const char *const root_cols[] = {"x", "err", "fx", "fx_err", "iterations", NULL};
-static const char *const root_units[] = {"", "", "", "", "", NULL};
+static const char *const root_cols[] = {"x", "err", "fx", "fx_err", "iterations", NULL},
+                         *const root_units[] = {"", "", "", "", "", NULL};
 
 static const mm_output outputs[] = {
     [O_COUNT] = MM_SCALAR("count", "number of roots found (sign changes of f)", "", .flags = MM_ANSWER | MM_EXACT),
@@ -84,44 +84,12 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-typedef struct fctx {
-    mm_expr *e;
-    long evals;
-} fctx;
-
-static int feval(double x, double *fx, void *ctx)
-{
-    fctx *c = ctx;
-    c->evals++;
-    *fx = mm_expr_eval(c->e, &x);
-    return 0;
-}
-
-static double f1(fctx *c, double x)
-{
-    double y;
-    feval(x, &y, c);
-    return y;
-}
-
-/* f with the estimate of its rounding error (mm_expr_eval_err), for mm_roots_band */
-static int feval_err(double x, double *fx, double *err, void *ctx)
-{
-    fctx *c = ctx;
-    c->evals += 7;
-    *fx = mm_expr_eval_err(c->e, &x, err);
-    return 0;
-}
-
-/* x by the scan's own formula (mm_roots.c), so the parts are the same. */
-static double grid(double a, double b, int n, int i) { return i >= n ? b : i <= 0 ? a : a + (b - a) * i / n; }
-
-static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
+static int run(const mm_value *in, mm_num_f *c, mm_result *res, mm_error *err)
 {
     const double a = in[P_A].x, b = in[P_B].x, tol = in[P_TOL].x;
     const int n = (int)in[P_N].x;
 
-    mm_roots_problem prob = {.f = feval, .params = c, .a = a, .b = b};
+    mm_roots_problem prob = {.f = mm_num_f_eval, .params = c, .a = a, .b = b};
     mm_roots_options opt;
     mm_roots_options_init(&opt);
     opt.n = n;
@@ -137,23 +105,9 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                             "(f is too rough there); raise tol", tol, opt.max_iter);
     if (rc != MM_OK)
         return rc;
-    /* a root at an end of [a, b] has no sign change inside to show it (sin(pi x)
-     * at x = -1 gives -1.2e-16, not 0, because pi is rounded): an end where f
-     * is zero within its own rounding error is a root too */
-    for (int end = 0; end < 2; end++) {
-        double x = end ? b : a, e, fx = mm_expr_eval_err(c->e, &x, &e);
-        int have = rr.nroots > 0 && (end ? rr.roots[rr.nroots - 1].x == b : rr.roots[0].x == a);
-        if (have || !isfinite(fx) || !(fabs(fx) <= e))
-            continue;
-        mm_roots_root z = {x, fx, 0, 0, 0, -1};         /* part -1: found at an end, not by a sign change */
-        if (end) {
-            rr.roots[rr.nroots] = z;
-        } else {
-            memmove(rr.roots + 1, rr.roots, (size_t)rr.nroots * sizeof *rr.roots);
-            rr.roots[0] = z;
-        }
-        rr.nroots++;
-    }
+    /* a root at an end of [a, b], where f is zero within its own rounding
+     * error, has no sign change inside to show it: it is added */
+    mm_rootcheck_ends(mm_num_f_eval_err, c, a, b, &rr);
     const int nr = rr.nroots;
 
     mm_table *t = mm_res_table(res, O_ROOTS, nr);
@@ -162,14 +116,14 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     long scan_evals = c->evals;
     int nsuspect = 0, nblur = 0;
-    double wmax = 0, xmax = 0, part = (b - a) / n;
+    double wmax = 0, part = (b - a) / n;
     for (int i = 0; i < nr; i++) {
         const mm_roots_root *z = &rr.roots[i];
         double fe, fx = mm_expr_eval_err(c->e, &z->x, &fe);
         /* the root's error: its final bracket (plus the rounding of x), or
          * the band where rounding blurs the sign of f, if wider */
         double w = z->width + 2 * DBL_EPSILON * fabs(z->x);
-        double band = mm_roots_band(feval_err, c, z->x, w, z->x - part, z->x + part);
+        double band = mm_roots_band(mm_num_f_eval_err, c, z->x, w, z->x - part, z->x + part);
         nblur += band > fmax(w, tol);
         double e = fmax(w, band);
         double *row = t->cell + 5 * i;
@@ -180,88 +134,37 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
         sr->y[i] = 0;
         nsuspect += (z->flags & MM_ROOTS_SUSPECT) != 0;
         wmax = fmax(wmax, e);
-        xmax = fmax(xmax, fabs(z->x));
         if (i == 0)
             mm_res_scalar_err(res, O_X1, z->x, e, MM_ERR_ESTIMATE);
     }
     mm_res_scalar(res, O_COUNT, nr);
 
     /* check 1: every root against bisection restarted from its part, to a
-     * width of tol/4: Brent's claim is |x - root| <= tol + 4 eps |x|.
-     * check 2: a sign change of f across x +- h, h covering Brent's final
-     * bracket: for a continuous f, a root within h of x.
-     * When the two methods land on different roots although x has its own
-     * sign change, the part holds three or more roots: not an error, but n
-     * is too small to separate them. */
-    double worst = 0, allowed = 1.25 * tol + 12 * DBL_EPSILON * xmax;
-    int lost = 0, nosign = 0, crowded = 0;
-    for (int i = 0; i < nr; i++) {
-        const mm_roots_root *z = &rr.roots[i];
-        if ((z->flags & MM_ROOTS_EXACT) || z->part < 0)
-            continue;                                /* f(x) = 0 exactly: proven */
-        double h = tol + 8 * DBL_EPSILON * fabs(z->x), fm = f1(c, z->x - h), fp = f1(c, z->x + h);
-        int own = fm == 0 || fp == 0 || (fm < 0) != (fp < 0);
-        nosign += !own;
-        int found = 0;
-        for (int j = z->part; j <= z->part && !found; j++) {     /* the part Brent refined */
-            if (j < 0 || j >= n)
-                continue;
-            double xl = grid(a, b, n, j), xr = grid(a, b, n, j + 1), fl = f1(c, xl), fr = f1(c, xr), xb;
-            if (!(z->x >= xl && z->x <= xr) || !isfinite(fl) || !isfinite(fr) || fl == 0 || fr == 0 ||
-                (fl < 0) == (fr < 0))
-                continue;
-            found = 1;
-            if (mm_roots_bisect(feval, c, xl, xr, fl, 0.25 * tol, &xb, NULL) != MM_OK)
-                lost++;
-            else if (fabs(z->x - xb) > allowed && own)
-                crowded++;
-            else
-                worst = fmax(worst, fabs(z->x - xb));
-        }
-        lost += !found;
-    }
-    mm_res_check_abs(res, "worst |x_Brent - x_bisection| (bisection from the same part, to tol/4)", worst, 0,
-                     allowed);
-    if (lost)
-        mm_res_check_abs(res, "roots bisection could not confirm (no sign change of f across their part)", lost,
+     * width of tol/4.  check 2: a sign change of f across x +- h, h covering
+     * Brent's final bracket: for a continuous f, a root within h of x. */
+    mm_rootcheck k;
+    mm_rootcheck_confirm(mm_num_f_eval, c, a, b, n, tol, &rr, &k);
+    mm_res_check_abs(res, "worst |x_Brent - x_bisection| (bisection from the same part, to tol/4)", k.worst, 0,
+                     k.allowed);
+    if (k.lost)
+        mm_res_check_abs(res, "roots bisection could not confirm (no sign change of f across their part)", k.lost,
                          0, 0);
-    mm_res_check_abs(res, "roots without a sign change of f between x - tol and x + tol", nosign, 0, 0);
-    if (crowded)
+    mm_res_check_abs(res, "roots without a sign change of f between x - tol and x + tol", k.nosign, 0, 0);
+    if (k.crowded)
         mm_res_warn(res, "%d part%s of width %.3g hold%s three or more roots (bisection found another one than "
-                    "Brent's method): roots are missed there; raise n", crowded, crowded > 1 ? "s" : "",
-                    (b - a) / n, crowded > 1 ? "" : "s");
+                    "Brent's method): roots are missed there; raise n", k.crowded, k.crowded > 1 ? "s" : "",
+                    (b - a) / n, k.crowded > 1 ? "" : "s");
 
     /* the plot: f over [a, b]; points where f is not finite are left out */
-    double *xs = mm_res_alloc(res, PLOT * sizeof *xs), *ys = mm_res_alloc(res, PLOT * sizeof *ys);
-    if (!xs || !ys)
+    int bad, plot_changes;
+    double first_bad;
+    if (mm_num_f_curve(res, O_F, c, a, b, PLOT, &bad, &first_bad, &plot_changes))
         return MM_ENOMEM;
-    mm_linspace(a, b, PLOT, xs);
-    int np = 0, bad = 0, plot_changes = 0;
-    double first_bad = 0, prev = NAN;
-    for (int i = 0; i < PLOT; i++) {
-        double y = mm_expr_eval(c->e, &xs[i]);
-        /* zero crossings the plot shows, between neighbouring finite samples
-         * (a zero sample counts once) */
-        if (isfinite(y) && (y == 0 || (isfinite(prev) && prev != 0 && (prev < 0) != (y < 0))))
-            plot_changes++;
-        prev = y;
-        if (isfinite(y)) {
-            xs[np] = xs[i];
-            ys[np++] = y;
-        } else if (!bad++) {
-            first_bad = xs[i];
-        }
-    }
     if (plot_changes > nr + rr.npoles)
         mm_res_warn(res, "the plot crosses or touches zero %d times, but the scan found %d root%s%s: roots closer "
                     "than a part (%.3g), roots that only touch zero, and roots beside points where f is not finite "
                     "are missed; raise n", plot_changes, nr, nr == 1 ? "" : "s", rr.npoles ? " and poles" : "",
                     (b - a) / n);
-    mm_series *sf = mm_res_series(res, O_F, np);
-    if (!sf)
-        return MM_ENOMEM;
-    memcpy(sf->x, xs, np * sizeof *xs);
-    memcpy(sf->y, ys, np * sizeof *ys);
 
     mm_res_method(res, "subdivision into n parts, Brent's method in each bracket", 0);
     mm_res_method_stat(res, "evaluations", (double)scan_evals);
@@ -273,11 +176,8 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                     "outside the domain, such as sqrt of a negative number); they are left out of the plot",
                     bad, PLOT, first_bad);
     if (rr.npoles) {
-        char list[120] = "";
-        for (int i = 0; i < rr.npoles && i < MAXPOLES && strlen(list) < 90; i++) {
-            size_t l = strlen(list);
-            snprintf(list + l, sizeof list - l, "%s%.6g", i ? ", " : "", poles[i]);
-        }
+        char list[MM_NUM_LIST];
+        mm_num_list(list, poles, rr.npoles < MAXPOLES ? rr.npoles : MAXPOLES);
         mm_res_warn(res, "%d sign change%s at a pole, not a root (|f| grows as the bracket shrinks): x = %s%s",
                     rr.npoles, rr.npoles > 1 ? "s are" : " is", list, rr.npoles > MAXPOLES ? ", ..." : "");
     }
@@ -301,16 +201,11 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
-    static const char *const vars[] = {"x"};
-    fctx c = {NULL, 0};
-    int rc = mm_expr_compile(in[P_F].text, vars, 1, &c.e, err);
-    if (rc != MM_OK) {
-        if (err)
-            snprintf(err->param, sizeof err->param, "f");
-        return rc;
-    }
-    rc = run(in, &c, res, err);
-    mm_expr_free(c.e);
+    mm_num_f c;
+    int rc = mm_num_f_compile(&c, in[P_F].text, err);
+    if (rc == MM_OK)
+        rc = run(in, &c, res, err);
+    mm_num_f_free(&c);
     return rc;
 }
 
@@ -322,18 +217,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_nonlinear_roots = {
-    .id = "num-nonlinear-roots",
-    .chapter = 1,
-    .section = "1.4.2",
-    .title = "Roots of a nonlinear function",
+    .id = "num-nonlinear-roots", .chapter = 1, .section = "1.4.2", .title = "Roots of a nonlinear function",
     .summary = "Every root of f(x) = 0 on an interval: subdivide, keep the sign changes, refine each by Brent's method.",
-    .tags = "nonlinear equation, roots, bisection, Brent, sign change",
-    .theory = "exercises/num/nonlinear_roots.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "nonlinear equation, roots, bisection, Brent, sign change", .theory = "exercises/num/nonlinear_roots.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -21,15 +21,13 @@
  * et al., Numerical Recipes, 3rd ed., sections 4.5-4.6 (Gauss quadrature)
  * and 10.2 (golden section).
  */
-#include <float.h>
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "mm_exhelp.h"
-#include "mm_expr.h"
-#include "mm_opt.h"
+#include "mm_num.h"
 #include "mm_quad.h"
+#include "mm_samples.h"
 
 #define MAXPTS 2001
 #define GK_MAX 400             /* most subintervals of the adaptive rule */
@@ -41,7 +39,6 @@
  * quadratures and the search for extremes share it (the defaults, 14
  * characters, stay at 400 pieces and 2048 panels). */
 #define WORK 1.0e6
-#define U (DBL_EPSILON / 2)
 
 enum { P_F, P_A, P_B, P_POINTS };
 
@@ -78,60 +75,7 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-typedef struct fctx {
-    mm_expr *e;
-    long evals;
-} fctx;
-
-static int feval(double x, double *fx, void *p)
-{
-    fctx *c = p;
-    c->evals++;
-    *fx = mm_expr_eval(c->e, &x);
-    return 0;
-}
-
-static double f1(fctx *c, double x)
-{
-    c->evals++;
-    return mm_expr_eval(c->e, &x);
-}
-
-/* f for mm_opt_refine_extreme: the value with its rounding bound (that one
- * not counted as an evaluation, it repeats the last) */
-static double f_err(double x, double *err, void *p)
-{
-    fctx *c = p;
-    if (err)
-        return mm_expr_eval_err(c->e, &x, err);
-    return f1(c, x);
-}
-
-/* A candidate for an extreme: a local extreme of the scan at x, with
- * the spacing h of the scan there. */
-#define NCAND 4
-typedef struct cand {
-    double x, v, h;
-    int from_plot;
-} cand;
-
-/* Keep the NCAND best local extremes of s f (s = +1 largest, -1 smallest):
- * v at x is one if no neighbour (vl, vr; NaN at an end) beats it. */
-static void offer(cand *cd, double s, double x, double v, double vl, double vr, double h, int from_plot)
-{
-    if ((!isnan(vl) && s * vl > s * v) || (!isnan(vr) && s * vr > s * v))
-        return;
-    int j = NCAND - 1;
-    if (cd[j].h > 0 && s * cd[j].v >= s * v)
-        return;
-    while (j > 0 && (cd[j - 1].h == 0 || s * cd[j - 1].v < s * v)) {
-        cd[j] = cd[j - 1];
-        j--;
-    }
-    cd[j] = (cand){x, v, h, from_plot};
-}
-
-static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
+static int run(const mm_value *in, mm_num_f *c, mm_result *res, mm_error *err)
 {
     const double a = in[P_A].x, b = in[P_B].x;
     const int n = (int)in[P_POINTS].x;
@@ -171,20 +115,8 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                             "sample: f(%g)); choose another interval or function", a, b, a);
 
     /* does the polyline follow f?  f between the samples against the chords,
-     * at the golden-section fraction g of each step (an irrational fraction
-     * rather than the midpoint, so that a wave whose period fits the step
-     * twice cannot hide there too) */
-    const double g = 0.381966011250105;          /* (3 - sqrt 5) / 2 */
-    double dev = 0, xdev = 0, height = ys[imax] - ys[imin];
-    for (int i = 0; i + 1 < n; i++) {
-        if (!isfinite(ys[i]) || !isfinite(ys[i + 1]))
-            continue;
-        double xm = xs[i] + g * (xs[i + 1] - xs[i]), fm = f1(c, xm), chord = ys[i] + g * (ys[i + 1] - ys[i]);
-        if (isfinite(fm) && fabs(fm - chord) > dev) {
-            dev = fabs(fm - chord);
-            xdev = xm;
-        }
-    }
+     * at the golden-section fraction of each step (mm_samples_chord_deviation) */
+    double xdev, dev = mm_samples_chord_deviation(mm_num_f_eval, c, n, xs, ys, &xdev), height = ys[imax] - ys[imin];
     if (dev > 0.02 * height || (height == 0 && dev > 0))
         mm_res_warn(res, "between the samples f strays from the drawn lines by up to %.3g (at x = %.6g), %.0f%% of "
                     "the plot's height: the plot misses detail; raise points", dev, xdev,
@@ -202,12 +134,12 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
     mm_error qerr;
     int have_int = 0;
     if (!bad) {
-        int rc = mm_quad_gk(feval, c, a, b, &qo, pieces, &gk, &qerr);
+        int rc = mm_quad_gk(mm_num_f_eval, c, a, b, &qo, pieces, &gk, &qerr);
         int m0 = 8;
         while (5 * m0 < n && 2 * m0 <= gl_max / 4)   /* start at least as fine as the plot */
             m0 *= 2;
         if (rc == MM_OK)
-            rc = mm_quad_gl(feval, c, a, b, m0, gl_max, 1e-11 * gk.abs_value, &gl, &qerr);
+            rc = mm_quad_gl(mm_num_f_eval, c, a, b, m0, gl_max, 1e-11 * gk.abs_value, &gl, &qerr);
         if (rc == MM_ENONFINITE)
             mm_res_warn(res, "the integral of f over [%g, %g] is not computed: f is not finite between the plot "
                         "samples (a pole or a domain error the plot does not show)", a, b);
@@ -220,20 +152,15 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
      * adaptive partition (neighbouring bumps of a decaying wave differ by
      * less than the sampling misses them by), each refined between its
      * neighbours (eq. 6); the best refined one wins */
-    cand cd[2][NCAND] = {{{0}}};
-    for (int i = 0; i < n; i++)                      /* the plot's samples, step (b - a) / (n - 1) */
-        if (isfinite(ys[i]))
-            for (int w = 0; w < 2; w++)
-                offer(cd[w], w ? -1 : 1, xs[i], ys[i], i > 0 ? ys[i - 1] : NAN, i < n - 1 ? ys[i + 1] : NAN,
-                      (b - a) / (n - 1), 1);
+    mm_samples_cand cd[2][MM_SAMPLES_NCAND] = {{{0}}};
+    mm_samples_offer_scan(cd, n, xs, ys, (b - a) / (n - 1), 1);     /* the plot's samples */
     for (int p = 0; have_int && p < gk.pieces; p++) {
-        double v[SCAN + 1], h = (pieces[p].b - pieces[p].a) / SCAN;
-        for (int k = 0; k <= SCAN; k++)
-            v[k] = f1(c, pieces[p].a + h * k);
-        for (int k = 0; k <= SCAN; k++)
-            for (int w = 0; w < 2 && isfinite(v[k]); w++)
-                offer(cd[w], w ? -1 : 1, pieces[p].a + h * k, v[k], k > 0 ? v[k - 1] : NAN, k < SCAN ? v[k + 1] : NAN,
-                      h, 0);
+        double x[SCAN + 1], v[SCAN + 1], h = (pieces[p].b - pieces[p].a) / SCAN;
+        for (int k = 0; k <= SCAN; k++) {
+            x[k] = pieces[p].a + h * k;
+            v[k] = mm_num_f_at(c, x[k]);
+        }
+        mm_samples_offer_scan(cd, SCAN + 1, x, v, h, 0);
     }
     for (int w = 0; w < 2; w++) {
         double sg = w == 0 ? 1 : -1;
@@ -243,14 +170,9 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                         "there (a pole)", w == 0 ? "largest" : "smallest", w == 0 ? "largest" : "smallest", xs[k]);
             continue;
         }
-        double x = xs[k], v = ys[k], xe = 0, ve = 0;
-        int from_plot = 1;
-        for (int j = 0; j < NCAND && cd[w][j].h > 0; j++) {
-            mm_opt_extreme q;                 /* finer scan, then golden section (eq. 6) */
-            mm_opt_refine_extreme(f_err, c, sg, cd[w][j].x, cd[w][j].h, a, b, &q);
-            if (j == 0 || sg * q.fx > sg * v)
-                x = q.x, v = q.fx, xe = q.x_err, ve = q.fx_err, from_plot = cd[w][j].from_plot;
-        }
+        double x = xs[k], v = ys[k], xe, ve;         /* finer scan, then golden section (eq. 6) */
+        int from_plot;
+        mm_samples_best(mm_num_f_value_err, c, sg, cd[w], a, b, &x, &v, &xe, &ve, &from_plot);
         mm_res_scalar_err(res, w == 0 ? O_MAX : O_MIN, v, ve, MM_ERR_ESTIMATE);
         mm_res_scalar_err(res, w == 0 ? O_XMAX : O_XMIN, x, xe, MM_ERR_ESTIMATE);
         if (!from_plot && sg * (v - ys[k]) > 0.02 * height)
@@ -273,20 +195,9 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
                          "estimates, eqs. (4)-(5)", gk.value, gl.value, gk.err + gl.err);
         /* eq. (3): the trapezoid rule on the plot's samples, with the rounding
          * of f at each sample (mm_expr_eval_err) and of the compensated sum */
-        double hstep = (b - a) / (n - 1), tr = 0, trc = 0, tre = 0, ef = 0;
-        for (int i = 0; i < n; i += (n + 31) / 32) {       /* f's rounding, at 33 samples at most */
-            double e;
-            mm_expr_eval_err(c->e, &xs[i], &e);
-            ef = fmax(ef, e);
-        }
-        for (int i = 0; i < n; i++) {
-            double wgt = (i == 0 || i == n - 1 ? 0.5 : 1) * hstep, term = wgt * ys[i], t = tr + term;
-            trc += fabs(tr) >= fabs(term) ? (tr - t) + term : (term - t) + tr;
-            tr = t;
-            tre += 2 * U * fabs(term);
-        }
-        tre += 2 * ef * (b - a);                          /* twice the largest rounding of f seen */
-        mm_res_scalar_err(res, O_INT_PLOT, tr + trc, tre, MM_ERR_ESTIMATE);
+        double tre, ef = mm_num_f_rounding(c, n, xs);                 /* at 33 of the samples at most */
+        double tr = mm_samples_trapezoid(n, a, b, ys, ef, &tre);   /* twice the largest rounding of f seen */
+        mm_res_scalar_err(res, O_INT_PLOT, tr, tre, MM_ERR_ESTIMATE);
         if (!gk.converged)
             mm_res_warn(res, "the integral is uncertain: %.6g with an error estimate of %.2g (f changes too fast "
                         "for %d pieces of Gauss-Kronrod); shorten [a, b]", gk.value, gk.err, GK_MAX);
@@ -302,16 +213,11 @@ static int run(const mm_value *in, fctx *c, mm_result *res, mm_error *err)
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
-    static const char *const vars[] = {"x"};
-    fctx c = {NULL, 0};
-    int rc = mm_expr_compile(in[P_F].text, vars, 1, &c.e, err);
-    if (rc != MM_OK) {
-        if (err)
-            snprintf(err->param, sizeof err->param, "f");
-        return rc;
-    }
-    rc = run(in, &c, res, err);
-    mm_expr_free(c.e);
+    mm_num_f c;
+    int rc = mm_num_f_compile(&c, in[P_F].text, err);
+    if (rc == MM_OK)
+        rc = run(in, &c, res, err);
+    mm_num_f_free(&c);
     return rc;
 }
 
@@ -323,18 +229,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_plot = {
-    .id = "num-plot",
-    .chapter = 1,
-    .section = "1.4.3",
-    .title = "Plotting a function",
+    .id = "num-plot", .chapter = 1, .section = "1.4.3", .title = "Plotting a function",
     .summary = "Plot any f(x) on an interval; read off its extremes and the area under it, and see what sampling hides.",
-    .tags = "plotting, sampling, extrema, quadrature, Gauss-Kronrod, Gauss-Legendre",
-    .theory = "exercises/num/plot.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "plotting, sampling, extrema, quadrature, Gauss-Kronrod, Gauss-Legendre", .theory = "exercises/num/plot.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

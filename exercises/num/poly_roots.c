@@ -23,7 +23,8 @@
 #include <math.h>
 
 #include "mm_exhelp.h"
-#include "mm_poly.h"
+#include "mm_num.h"
+#include "mm_polycheck.h"
 
 #define MAXC 21                 /* coefficients: degree 20 at most */
 
@@ -39,8 +40,8 @@ static const mm_param params[] = {
 
 enum { O_DEGREE, O_REAL, O_MAXERR, O_ROOTS, O_PLANE, O_P };
 
-static const char *const root_cols[] = {"re", "im", "modulus", "err", "multiplicity", NULL};
-static const char *const root_units[] = {"", "", "", "", "", NULL};
+static const char *const root_cols[] = {"re", "im", "modulus", "err", "multiplicity", NULL},
+                         *const root_units[] = {"", "", "", "", "", NULL};
 
 static const mm_output outputs[] = {
     [O_DEGREE] = MM_SCALAR("degree", "degree of p", "", .flags = MM_ANSWER | MM_EXACT),
@@ -80,59 +81,33 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_series *sz = mm_res_series(res, O_PLANE, nr);
     if (!t || !sz)
         return MM_ENOMEM;
-    double worst_b = 0, max_err = 0;
-    double sre = 0, serr = 0, sabs = 0, logprod = 0, lerr = 0;
-    int zeros = 0, nmult = 0, nill = 0, nreal = 0, nsure = 0;
-    double mult_err = 0, ill_err = 0;
     for (int i = 0; i < nr; i++) {
         const mm_poly_root *z = &roots[i];
-        double mod = hypot(z->re, z->im);
         double *row = t->cell + 5 * i;
         row[0] = z->re;
         row[1] = z->im;
-        row[2] = mod;
+        row[2] = hypot(z->re, z->im);
         row[3] = z->err;
         row[4] = z->multiplicity;
         sz->x[i] = z->re;
         sz->y[i] = z->im;
-        /* real when the disc |x - z| <= err meets the real axis; certainly
-         * real when the disc holds this root alone (a real polynomial's
-         * complex roots come in pairs, and the disc is symmetric about the
-         * axis), so it is computed real and simple */
-        nreal += fabs(z->im) <= z->err;
-        nsure += z->im == 0 && z->multiplicity == 1;
-        max_err = fmax(max_err, z->err);
-        if ((z->flags & MM_POLY_ROOT_MULTIPLE) && z->err > 0) {  /* exact zero roots are exact */
-            nmult++;
-            mult_err = fmax(mult_err, z->err);
-        }
-        if ((z->flags & MM_POLY_ROOT_ILLCOND) && !(z->flags & MM_POLY_ROOT_MULTIPLE)) {
-            nill++;
-            ill_err = fmax(ill_err, z->err);
-        }
-        worst_b = fmax(worst_b, mm_poly_backward_error(d + 1, q, z->re, z->im));
-        sre += z->re;
-        serr += z->err;
-        sabs += mod;
-        if (mod == 0) {
-            zeros++;
-        } else {
-            logprod += log(mod);
-            lerr += z->err / mod;
-        }
     }
+    /* real when the disc |x - z| <= err meets the real axis; certainly real
+     * when computed real and simple (mm_poly_roots_summarize) */
+    mm_poly_roots_summary S;
+    mm_poly_roots_summarize(d + 1, q, roots, &S);
 
     mm_res_scalar(res, O_DEGREE, d);
     /* of the roots counted real but not certainly so, the true count can be
      * lower by an even number (pairs of complex roots) */
-    int unsure = nreal - nsure;
-    mm_scalar *sr = mm_res_scalar_err(res, O_REAL, nreal, unsure - unsure % 2, MM_ERR_BOUND);
+    int unsure = S.real - S.sure_real;
+    mm_scalar *sr = mm_res_scalar_err(res, O_REAL, S.real, unsure - unsure % 2, MM_ERR_BOUND);
     if (unsure > 1)
         sr->text = mm_res_printf(res, "%d of them within their error of the real axis: between %d and %d real roots",
-                                 unsure, nreal - (unsure - unsure % 2), nreal);
+                                 unsure, S.real - (unsure - unsure % 2), S.real);
     else
         sr->exact = 1;
-    mm_res_scalar_err(res, O_MAXERR, max_err, 0.5 * max_err, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_MAXERR, S.max_err, 0.5 * S.max_err, MM_ERR_ESTIMATE);
 
     if (d == 0) {
         mm_res_warn(res, "p is a nonzero constant: it has no roots");
@@ -144,62 +119,34 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * coefficients differ from p's by a few eps (backward error); Horner's
      * own rounding is at most 2d u of the scale (Higham, eq. 5.3) */
     double btol = (2.0 * d + 4) * DBL_EPSILON;
-    mm_res_check_abs(res, "worst backward error |p(z)| / sum |p_k| |z|^k over the roots", worst_b, 0, btol);
-    if (worst_b > btol)
+    mm_res_check_abs(res, "worst backward error |p(z)| / sum |p_k| |z|^k over the roots", S.backward, 0, btol);
+    if (S.backward > btol)
         mm_res_warn(res, "some roots are not roots of p to working precision (backward error %.2g): the "
                     "coefficients span too many orders of magnitude for the companion matrix, and roots of very "
-                    "different sizes cannot all be resolved", worst_b);
+                    "different sizes cannot all be resolved", S.backward);
 
     /* check 2: Vieta, sum of the roots = -p_2 / p_1 (eq. 4) */
-    double ref_sum = d >= 1 ? -q[1] / q[0] : 0;
-    mm_res_check_abs(res, "Vieta: sum of the roots = -p(2)/p(1)", sre, ref_sum,
-                     serr + 4 * d * DBL_EPSILON * (sabs + fabs(ref_sum)));
+    mm_res_check_abs(res, "Vieta: sum of the roots = -p(2)/p(1)", S.sum, S.sum_ref, S.sum_tol);
     /* check 3: product of the roots = (-1)^d p_(d+1) / p_1, on log |.| so that
      * it cannot overflow; skipped with exact zero roots (product 0 = p_(d+1)) */
-    if (zeros == 0)
-        mm_res_check_abs(res, "Vieta: log |product of the roots| = log |p(d+1)/p(1)|", logprod,
-                         log(fabs(q[d])) - log(fabs(q[0])), lerr + 4 * d * DBL_EPSILON * (1 + fabs(logprod)));
+    if (S.zeros == 0)
+        mm_res_check_abs(res, "Vieta: log |product of the roots| = log |p(d+1)/p(1)|", S.logprod, S.logprod_ref,
+                         S.logprod_tol);
 
     mm_res_method(res, "eigenvalues of the companion matrix (LAPACK dgeev), Newton polish in double-double", 0);
-    mm_res_method_stat(res, "error_estimate", max_err);
+    mm_res_method_stat(res, "error_estimate", S.max_err);
 
-    if (nmult)
+    if (S.multiple)
         mm_res_warn(res, "%d roots form clusters (multiple roots, see the multiplicity column): a root of "
                     "multiplicity m is only determined to about eps^(1/m) of its size, here within %.2g; "
-                    "the computed values are scattered around the true root%s", nmult, mult_err,
+                    "the computed values are scattered around the true root%s", S.multiple, S.mult_err,
                     unsure > 1 ? ", and those whose error reaches the real axis are counted as real roots" : "");
-    if (nill)
+    if (S.illcond)
         mm_res_warn(res, "%d simple root%s ill-conditioned: more than half of the digits are lost (error up to "
-                    "%.2g); small changes of p move %s far", nill, nill > 1 ? "s are" : " is", ill_err,
-                    nill > 1 ? "them" : "it");
-
+                    "%.2g); small changes of p move %s far", S.illcond, S.illcond > 1 ? "s are" : " is", S.ill_err,
+                    S.illcond > 1 ? "them" : "it");
     /* p on the real axis, over the real parts of the roots and a margin */
-    double lo = roots[0].re, hi = lo;
-    for (int i = 0; i < nr; i++) {
-        lo = fmin(lo, roots[i].re);
-        hi = fmax(hi, roots[i].re);
-    }
-    double span = fmax(hi - lo, fmax(1e-3 * fmax(fabs(lo), fabs(hi)), 1e-3)), m = 0.25 * span;
-    enum { NP = 201 };
-    double xs[NP], ys[NP];
-    int ok = 1;
-    mm_linspace(lo - m, hi + m, NP, xs);
-    for (int i = 0; i < NP && ok; i++) {
-        ys[i] = mm_poly_eval(d + 1, q, xs[i], NULL);
-        ok = isfinite(ys[i]);
-    }
-    if (ok) {
-        mm_series *s = mm_res_series(res, O_P, NP);
-        if (!s)
-            return MM_ENOMEM;
-        for (int i = 0; i < NP; i++) {
-            s->x[i] = xs[i];
-            s->y[i] = ys[i];
-        }
-    } else {
-        mm_res_warn(res, "p(x) overflows on the plot range; the curve is left out");
-    }
-    return MM_OK;
+    return mm_num_poly_curve(res, O_P, d + 1, q, roots, nr);
 }
 
 static const char *const references[] = {
@@ -210,18 +157,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_poly_roots = {
-    .id = "num-poly-roots",
-    .chapter = 1,
-    .section = "1.4.2",
-    .title = "Roots of a polynomial",
+    .id = "num-poly-roots", .chapter = 1, .section = "1.4.2", .title = "Roots of a polynomial",
     .summary = "All real and complex roots of a polynomial like MATLAB's roots(p), each with its error estimate.",
     .tags = "polynomial, roots, companion matrix, conditioning, multiple roots",
-    .theory = "exercises/num/poly_roots.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = NULL,
-    .solve = solve,
+    .theory = "exercises/num/poly_roots.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .solve = solve,
 };

@@ -25,10 +25,9 @@
 #include <float.h>
 #include <math.h>
 
-#include "mm_dd.h"
 #include "mm_exhelp.h"
-#include "mm_linalg.h"
-#include "mm_poly.h"
+#include "mm_num.h"
+#include "mm_polycheck.h"
 
 #define MAXPTS 200
 #define MAXDEG 8
@@ -49,10 +48,10 @@ static const mm_param params[] = {
 
 enum { O_C, O_RMS, O_COND, O_COEFS, O_RESID, O_DATA, O_FIT };
 
-static const char *const coef_cols[] = {"power", "c", "c_err", "std_error", "c_matlab", NULL};
-static const char *const coef_units[] = {"", "", "", "", "", NULL};
-static const char *const res_cols[] = {"x", "y", "fit", "residual", "err", NULL};
-static const char *const res_units[] = {"", "", "", "", "", NULL};
+static const char *const coef_cols[] = {"power", "c", "c_err", "std_error", "c_matlab", NULL},
+                         *const coef_units[] = {"", "", "", "", "", NULL};
+static const char *const res_cols[] = {"x", "y", "fit", "residual", "err", NULL},
+                         *const res_units[] = {"", "", "", "", "", NULL};
 
 static const mm_output outputs[] = {
     [O_C] = MM_SCALAR("c%d", "coefficient c%d (c0 of the highest power, as MATLAB's polyfit)", "",
@@ -66,39 +65,16 @@ static const mm_output outputs[] = {
     [O_FIT] = MM_SERIES("fit", "fitted polynomial", "", "x", "", .figure = "fit"),
 };
 
-static int distinct(int n, const double *x)
-{
-    int count = 0;
-    for (int i = 0; i < n; i++) {
-        int seen = 0;
-        for (int j = 0; j < i && !seen; j++)
-            seen = x[j] == x[i];
-        count += !seen;
-    }
-    return count;
-}
-
 static int check(const mm_value *in, mm_error *err)
 {
     int n = in[P_X].cols, d = (int)in[P_DEGREE].x;
     if (in[P_Y].cols != n)
         return mm_error_set(err, MM_ERANGE, "y", "y must have one value per x, %d; got %d", n, in[P_Y].cols);
-    int nd = distinct(n, in[P_X].data);
+    int nd = mm_poly_distinct(n, in[P_X].data);
     if (d >= nd)
         return mm_error_set(err, MM_ERANGE, "degree", "degree must be below the number of distinct x values "
                             "(%d): %d points fix at most a polynomial of degree %d; got %d", nd, nd, nd - 1, d);
     return MM_OK;
-}
-
-/* Forward error bound of fitted values from a backward-stable solve in
- * double (eq. 4): the solution of (A + dA) b = y with ||dA|| <= g ||A||
- * moves A b by at most g (||A|| ||b|| kappa + kappa ||r||) + the same for y
- * (Wedin; Bjorck 1996, 1.4); the normal equations have kappa^2 in place of
- * kappa (their backward error is in A^T A). */
-static double fit_bound(double g, double kappa, double anorm, double bnorm, double rnorm, double ynorm, int squared)
-{
-    double k = squared ? kappa * kappa : kappa;
-    return g * (k * anorm * bnorm + kappa * rnorm + ynorm);
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -106,10 +82,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     const int n = in[P_X].cols, d = (int)in[P_DEGREE].x, m = d + 1;
     const double *x = in[P_X].data, *y = in[P_Y].data;
     double c[MAXDEG + 1], ce[MAXDEG + 1], se[MAXDEG + 1], bt[MAXDEG + 1], cm[MAXDEG + 1];
-    double *fit = mm_res_alloc(res, 4 * (size_t)n * sizeof *fit);
+    double *fit = mm_res_alloc(res, 5 * (size_t)n * sizeof *fit);
     if (!fit)
         return MM_ENOMEM;
-    double *fe = fit + n, *r = fe + n, *t = r + n;
+    double *fe = fit + n, *r = fe + n, *w = r + n;                      /* w: 2n of scratch */
 
     mm_poly_fit_dd_info info;
     int rc = mm_poly_fit_dd(n, x, y, d, c, ce, fit, fe, se, bt, &info, err);
@@ -125,9 +101,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     int noise = 0, insignificant = 0;
     for (int k = 0; k <= d; k++) {
-        mm_scalar *s = mm_res_scalar_i(res, O_C, k, c[k]);
-        s->error = ce[k];
-        s->error_kind = MM_ERR_BOUND;
+        mm_scalar *s = mm_num_scalar_i_err(res, O_C, k, c[k], ce[k], MM_ERR_BOUND);
         if (!(fabs(c[k]) > ce[k])) {
             s->text = "below its own error: no digit determined";
             noise++;
@@ -145,140 +119,67 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * (MATLAB's, evaluated by polyval in powers of x) leaves residuals of
      * about (2d + 2) u sum |c_k| |x|^k + (n + d) u max |y|: that is its
      * error then */
-    double terms = 0;
-    for (int i = 0; i < n; i++) {
-        double tk = 0;
-        for (int k = 0; k <= d; k++)
-            tk = tk * fabs(x[i]) + fabs(c[k]);
-        terms = fmax(terms, tk);
-    }
-    double ylevel = (2.0 * d + 2) * U * terms + (n + m) * U * mm_maxabs(y, n);
+    double ylevel = mm_poly_fit_level(n, x, y, m, c);
     if (info.rms <= ylevel)
         mm_res_scalar_err(res, O_RMS, info.rms, info.rms_err + ylevel, MM_ERR_ESTIMATE);
     else
         mm_res_scalar_err(res, O_RMS, info.rms, info.rms_err, MM_ERR_BOUND);
     mm_res_scalar_err(res, O_COND, info.cond, info.cond_err, MM_ERR_BOUND);
 
-    double ymax = mm_maxabs(y, n), xlo = x[0], xhi = x[0], magmax = 0, cdev = 0, ctol = 0;
+    double ymax = mm_maxabs(y, n);
     for (int i = 0; i < n; i++) {
         r[i] = y[i] - fit[i];
         double *row = tr->cell + 5 * i;
         row[0] = x[i], row[1] = y[i], row[2] = fit[i], row[3] = r[i], row[4] = fe[i] + U * fabs(r[i]);
-        xlo = fmin(xlo, x[i]);
-        xhi = fmax(xhi, x[i]);
-        /* p(x_i) by Horner from the printed c, against the fit: what rounding
-         * makes of it is at most (2d + 1) u sum |c_k| |x|^k plus the
-         * coefficients' own bounds (Higham, Accuracy and Stability, 5.1) */
-        double mag = 0, cerr = 0;
-        for (int k = 0; k <= d; k++) {
-            mag = mag * fabs(x[i]) + fabs(c[k]);
-            cerr = cerr * fabs(x[i]) + ce[k];
-        }
-        magmax = fmax(magmax, mag);
-        cdev = fmax(cdev, fabs(mm_poly_eval(m, c, x[i], NULL) - fit[i]) / (1.01 * ((2 * d + 1) * U * mag + cerr + fe[i]) +
-                                                                          DBL_MIN));
-        ctol = fmax(ctol, (2 * d + 1) * U * mag);
     }
 
     /* check: the printed c reproduce the fitted values within the rounding
-     * of p(x) computed from them (when the terms c_k x^k cancel, that
-     * rounding is large: the warning below says so) */
+     * of p(x) computed from them by Horner's rule (when the terms c_k x^k
+     * cancel, that rounding is large: the warning below says so) */
+    double ctol, magmax, cdev = mm_poly_horner_deviation(n, x, m, c, ce, fit, fe, &ctol, &magmax);
     mm_res_check_abs(res, "p(x_i) from the coefficients c_k of x^k vs the fitted values: worst |difference| / (the "
                      "rounding of Horner's rule with these c_k) <= 1", cdev, 0, 1);
 
     /* check: the normal equations (eq. 3) with the residuals as printed, in
      * the exact basis t = (x - mu) / scale: sum t_i^k r_i = 0 within what the
      * rounding of the residuals leaves */
-    double worst = 0;
-    for (int i = 0; i < n; i++)
-        t[i] = (x[i] - info.mu) / info.scale;                /* info.scale is a power of 2 */
-    for (int k = 0; k <= d; k++) {
-        mm_dd s = mm_dd_from(0);
-        double bound = 0;
-        for (int i = 0; i < n; i++) {
-            mm_dd tk = mm_dd_from(1);
-            for (int j = 0; j < k; j++)
-                tk = mm_dd_mul(tk, mm_dd_two_sum(x[i], -info.mu));
-            tk = mm_dd_mul_d(tk, pow(info.scale, -k));
-            s = mm_dd_add(s, mm_dd_mul_d(tk, r[i]));
-            bound += fabs(mm_dd_val(tk)) * (fe[i] + U * fabs(r[i]) + 4 * (k + 2) * MM_DD_EPS * fabs(r[i]));
-        }
-        worst = fmax(worst, mm_dd_abs(s) / (1.01 * bound + DBL_MIN));
-    }
     mm_res_check_abs(res, "normal equations, eq. (3): worst |sum t_i^k r_i| / (the rounding of the printed r_i) <= 1",
-                     worst, 0, 1);
+                     mm_poly_normal_residual(n, x, r, fe, m, info.mu, info.scale), 0, 1);
 
     /* check: two solutions in double, by the SVD (MATLAB's route, in t) and
      * by the normal equations (A^T A) a = A^T y (LU), each within its forward
      * error bound from the exact fit (eq. 4): kappa eps and kappa^2 eps */
-    double *fs = mm_res_alloc(res, 2 * (size_t)n * sizeof *fs), *fn = fs + n, bsv, bne;
-    if (!fs)
-        return MM_ENOMEM;
-    if (mm_poly_fit_values(n, x, y, d, mi.mu, mi.scale, fs, fn, &bsv, &bne, NULL) == MM_OK) {
-        double kappa = mi.cond, anorm = sqrt((double)n * m), rn = info.rms * sqrt((double)n), yn = 0;
-        double dsvd = 0, dne = 0, g = 2.0 * m * n * U;      /* backward error of Householder QR / SVD, ~ m n u */
-        for (int i = 0; i < n; i++) {
-            yn += y[i] * y[i];
-            dsvd = fmax(dsvd, fabs(fs[i] - fit[i]) - fe[i]);
-            dne = fmax(dne, fabs(fn[i] - fit[i]) - fe[i]);
-        }
-        yn = sqrt(yn);
-        double esvd = fit_bound(g, kappa, anorm, bsv, rn, yn, 0), ene = fit_bound(g, kappa, anorm, bne, rn, yn, 1);
-        if (ene < 1e-2 * ymax) {
+    mm_poly_fit_routes two;
+    if (mm_poly_fit_two_routes(n, x, y, d, mi.mu, mi.scale, mi.cond, info.rms, fit, fe, w, &two, NULL) == MM_OK) {
+        if (two.bound_ne < 1e-2 * ymax) {
             mm_res_check_abs(res, "fitted values: SVD vs normal equations, both in double: worst |error| / (its "
                              "bound, kappa eps and kappa^2 eps), eq. (4), <= 1",
-                             fmax(fmax(dsvd, 0) / esvd, fmax(dne, 0) / ene), 0, 1);
-            mm_res_method_stat(res, "svd_fit_error", fmax(dsvd, 0));
-            mm_res_method_stat(res, "normal_equations_fit_error", fmax(dne, 0));
+                             fmax(two.dev_svd / two.bound_svd, two.dev_ne / two.bound_ne), 0, 1);
+            mm_res_method_stat(res, "svd_fit_error", two.dev_svd);
+            mm_res_method_stat(res, "normal_equations_fit_error", two.dev_ne);
         } else {
             mm_res_warn(res, "the normal equations A^T A a = A^T y are too ill-conditioned here (cond^2 = %.2g) "
-                        "to serve as a second solution: this is why polyfit works on A itself", kappa * kappa);
+                        "to serve as a second solution: this is why polyfit works on A itself", mi.cond * mi.cond);
         }
     }
 
     /* check: closed forms for the mean (degree 0) and the regression line
      * (eq. 5), in double, each within the rounding of its own sums */
-    double ybar = 0, mean = 0;
-    for (int i = 0; i < n; i++) {
-        ybar += y[i];
-        mean += x[i];
-    }
-    ybar /= n;
-    mean /= n;
+    mm_poly_line line;
+    mm_poly_line_fit(n, x, y, &line);
     if (d == 0) {
-        mm_res_check_abs(res, "c0 = mean of y", c[0], ybar, (n + 1) * U * ymax + ce[0]);
+        mm_res_check_abs(res, "c0 = mean of y", c[0], line.mean_y, line.mean_y_err + ce[0]);
     } else if (d == 1) {
-        double sxx = 0, sxy = 0, ax = 0, axy = 0;
-        for (int i = 0; i < n; i++) {
-            sxx += (x[i] - mean) * (x[i] - mean);
-            sxy += (x[i] - mean) * (y[i] - ybar);
-            ax += fabs(x[i] - mean) * (fabs(x[i]) + fabs(mean));
-            axy += fabs(x[i] - mean) * (fabs(y[i]) + fabs(ybar)) + fabs(y[i] - ybar) * (fabs(x[i]) + fabs(mean));
-        }
-        /* rounding of the sums: (n + 3) u relative to the sums of |terms|,
-         * the means' own rounding included */
-        double slope = sxy / sxx, icpt = ybar - slope * mean;
-        double es = (n + 4) * U * (axy / sxx + fabs(slope) * ax / sxx) + U * fabs(slope);
-        mm_res_check_abs(res, "c0 = S_xy / S_xx (regression line, eq. 5), within its rounding", c[0], slope,
-                         1.01 * es + ce[0]);
-        mm_res_check_abs(res, "c1 = mean(y) - c0 mean(x) (eq. 5), within its rounding", c[1], icpt,
-                         1.01 * ((n + 2) * U * (ymax + fabs(slope * mean)) + es * fabs(mean)) + ce[1]);
+        mm_res_check_abs(res, "c0 = S_xy / S_xx (regression line, eq. 5), within its rounding", c[0], line.slope,
+                         1.01 * line.slope_err + ce[0]);
+        mm_res_check_abs(res, "c1 = mean(y) - c0 mean(x) (eq. 5), within its rounding", c[1], line.intercept,
+                         1.01 * line.intercept_err + ce[1]);
     }
 
     /* plots: the data, and the fitted curve a little beyond them, from the
      * coefficients in t (no cancellation) */
-    enum { NP = 201 };
-    mm_series *sd = mm_res_series(res, O_DATA, n), *sf = mm_res_series(res, O_FIT, NP);
-    if (!sd || !sf)
+    if (mm_num_fit_plot(res, O_DATA, O_FIT, n, x, y, m, bt, info.mu, info.scale))
         return MM_ENOMEM;
-    for (int i = 0; i < n; i++) {
-        sd->x[i] = x[i];
-        sd->y[i] = y[i];
-    }
-    double margin = xhi > xlo ? 0.05 * (xhi - xlo) : 1;
-    mm_linspace(xlo - margin, xhi + margin, NP, sf->x);
-    for (int i = 0; i < NP; i++)
-        sf->y[i] = mm_poly_eval(m, bt, (sf->x[i] - info.mu) / info.scale, NULL);
 
     mm_res_method(res, "polyfit: least squares by SVD on centred, scaled x (LAPACK dgelsd) in double; the numbers "
                        "printed by Householder QR in double-double", 0);
@@ -319,18 +220,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_num_polyfit = {
-    .id = "num-polyfit",
-    .chapter = 1,
-    .section = "1.4.2",
-    .title = "Least-squares polynomial fit",
+    .id = "num-polyfit", .chapter = 1, .section = "1.4.2", .title = "Least-squares polynomial fit",
     .summary = "The polynomial of a given degree closest to data points in the least-squares sense, like MATLAB's polyfit.",
-    .tags = "least squares, regression, polynomial fit, normal equations",
-    .theory = "exercises/num/polyfit.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "least squares, regression, polynomial fit, normal equations", .theory = "exercises/num/polyfit.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };
