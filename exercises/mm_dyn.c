@@ -725,7 +725,9 @@ double mm_dyn_dpend_separation(const double *ya, const double *yb, int n, const 
     for (int i = 0; i < n; i++) {
         d[i] = mm_dyn_dpend_distance(ya + 4 * i, yb + 4 * i, wf);
         plot[i] = fmax(d[i], DBL_EPSILON * d0);
-        if (t_h < 0 && d[i] > 1e-3) {
+        if (t_h < 0 && d[i] > 1e-3 && i == 0)
+            t_h = x[0];                 /* apart by more already at the start: no point before it to read */
+        else if (t_h < 0 && d[i] > 1e-3) {
             double dp = mm_dyn_dpend_distance(ya + 4 * (i - 1), yb + 4 * (i - 1), wf);
             /* log-linear interpolation between the two grid points */
             t_h = x[i - 1] + (x[i] - x[i - 1]) * log(1e-3 / dp) / log(d[i] / dp);

@@ -190,7 +190,8 @@ double mm_dyn_dpend_distance(const double *a, const double *b, double wf);
 /* The separation of two runs ya, yb of the double pendulum (n states on
  * the times x): d[i] by mm_dyn_dpend_distance, and plot[i] the same
  * floored at eps d0 (a log axis).  Returns the time the two are 1e-3 apart
- * (log-linear between the grid points), or -1 when they never are.
+ * (log-linear between the grid points; x[0] when they start apart by more),
+ * or -1 when they never are.
  * Cannot fail. */
 double mm_dyn_dpend_separation(const double *ya, const double *yb, int n, const double *x, double wf, double d0,
                                double *d, double *plot);

@@ -162,6 +162,21 @@ static void double_pendulum_defaults_should_be_chaotic(void **state)
     cJSON_Delete(d);
 }
 
+static void double_pendulum_twins_apart_from_the_start_should_have_horizon_zero(void **state)
+{
+    (void)state;
+    /* separation at its limit 1e-3: with the state-space weights the twins
+     * can start more than 1e-3 apart, so the horizon is the start itself.
+     * The search read the grid point before the first (index -1) here and
+     * printed no horizon (found by the num/dyn helper, 2026-12-07) */
+    for (int k = 0; k < 2; k++) {
+        cJSON *d = solve_ok("dyn-double-pendulum", k ? "separation=1e-3&theta2_0=0.7" : "separation=1e-3&theta2_0=0.1");
+        assert_true(has_scalar(d, "t_horizon"));
+        assert_true(scalar(d, "t_horizon") == 0);
+        cJSON_Delete(d);
+    }
+}
+
 /* ---- dyn-robot-2link -------------------------------------------------------------- */
 
 static void expect_unreachable(const char *query, const char *param)
@@ -593,6 +608,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(pendulum_defaults_should_give_the_elliptic_period),
+        cmocka_unit_test(double_pendulum_twins_apart_from_the_start_should_have_horizon_zero),
         cmocka_unit_test(pendulum_at_the_separatrix_should_give_no_period_and_stay_up),
         cmocka_unit_test(pendulum_just_below_the_separatrix_should_have_the_logarithmic_period),
         cmocka_unit_test(pendulum_pushed_over_the_top_should_turn),
