@@ -382,3 +382,90 @@ int mm_kin_check_window(double t0, double t1, double t, mm_error *err)
         return mm_error_set(err, MM_ERANGE, "t", "t must lie within the motion shown, %g to %g s; got %g s", t0, t1, t);
     return MM_OK;
 }
+
+/* ---- the idioms the chapter's files share ----------------------------------------------- */
+
+int mm_kin_samples_init(mm_kin_samples *s, mm_result *res, int n, int k, mm_error *err)
+{
+    s->n = n, s->ns = (n + 7) / 8, s->k = k;
+    s->t = mm_res_alloc(res, (size_t)s->ns * sizeof *s->t);
+    s->d1 = mm_res_alloc(res, (size_t)k * (size_t)s->ns * sizeof *s->d1);
+    s->d2 = mm_res_alloc(res, (size_t)k * (size_t)s->ns * sizeof *s->d2);
+    if (!s->t || !s->d1 || !s->d2)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    return MM_OK;
+}
+
+int mm_kin_sample(mm_kin_samples *s, int i, double t, const double *d1, const double *d2)
+{
+    if (i % 8 != 0 && i != s->n - 1)
+        return 0;
+    int j = i % 8 == 0 ? i / 8 : s->ns - 1;
+    s->t[j] = t;
+    for (int c = 0; c < s->k; c++) {
+        s->d1[s->k * j + c] = d1[c];
+        if (d2)
+            s->d2[s->k * j + c] = d2[c];
+    }
+    return 1;
+}
+
+int mm_kin_sample2(mm_kin_samples *s, int i, double t, mm_v2 v, mm_v2 a)
+{
+    const double d1[2] = {v.x, v.y}, d2[2] = {a.x, a.y};
+    return mm_kin_sample(s, i, t, d1, d2);
+}
+
+int mm_kin_sample3(mm_kin_samples *s, int i, double t, mm_v3 v, mm_v3 a)
+{
+    const double d1[3] = {v.x, v.y, v.z}, d2[3] = {a.x, a.y, a.z};
+    return mm_kin_sample(s, i, t, d1, d2);
+}
+
+typedef struct at_ctx {
+    mm_kin_at_fn at;
+    void *ctx;
+    const double *t;
+} at_ctx;
+
+static int at_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+{
+    at_ctx *c = ctx;
+    return c->at(c->t[i], h, q, qerr, c->ctx, err);
+}
+
+int mm_kin_fd_samples(mm_result *res, int out_v, int out_a, const char *what_v, const char *what_a, mm_kin_at_fn at,
+                      void *ctx, const mm_kin_samples *s, double h0, mm_error *err)
+{
+    at_ctx c = {at, ctx, s->t};
+    return mm_kin_fd_va(res, out_v, out_a, what_v, what_a, at_pos, &c, s->k, NULL, s->ns, s->d1, s->d2, h0, 0, 0, err);
+}
+
+mm_shape *mm_kin_path(mm_kin_draw *d, const char *name, const mm_series *s)
+{
+    mm_shape *p = mm_kin_shape(d, name, MM_SHAPE_PATH, 0, s->n);
+    for (int i = 0; p && i < s->n; i++)
+        mm_kin_pt(p, 0, i, s->x[i], s->y[i]);
+    return p;
+}
+
+mm_shape *mm_kin_circle(mm_kin_draw *d, const char *name, int moving, double r)
+{
+    mm_shape *c = mm_kin_shape(d, name, MM_SHAPE_CIRCLE, moving, 1);
+    if (c)
+        c->radius = r;
+    return c;
+}
+
+double mm_kin_frame_t(mm_kin_draw *d, int f, double t0, double t1)
+{
+    double t = t0 + (t1 - t0) * f / (d->nf - 1);
+    d->anim->t[f] = t;
+    return t;
+}
+
+void mm_kin_iso(mm_v3 p, double *x, double *y)
+{
+    *x = (p.y - p.x) * M_SQRT1_2;
+    *y = (2 * p.z - p.x - p.y) / sqrt(6.0);
+}

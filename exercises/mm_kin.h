@@ -15,6 +15,7 @@
 #define MM_KIN_H
 
 #include "mm_exercise.h"
+#include "mm_geom.h"
 
 /* ---- drawing ------------------------------------------------------------------------ */
 
@@ -178,5 +179,57 @@ int mm_kin_joints_table(mm_result *res, int out, const char *spec, mm_error *err
  * m x n matrix: the largest one counted as zero is at rounding, the
  * smallest one counted as non-zero is clear of it */
 void mm_kin_rank_checks(mm_result *res, const double *sv, int k, int rank, int m, int n);
+
+/* ---- the idioms the chapter's files share ----------------------------------------------- */
+
+/* The output of a difference study: its worst error against the step h
+ * (mm_kin_fd_study's series), log-log, as dots, in the figure "difference
+ * error"; un the unit of the error, hu the step's. */
+#define MM_KIN_FD_SERIES(nm, lb, un, hu)                                                     \
+    MM_SERIES(nm, lb, un, "step h", hu, .x_scale = "log", .y_scale = "log", .mark = "dots", \
+              .figure = "difference error")
+
+/* The samples of a motion's difference study: one plotted point in 8 (i =
+ * 0, 8, 16, ...) and the last, which takes the last place; with the
+ * analytic first and second derivatives of its k coordinates. */
+typedef struct mm_kin_samples {
+    int n, ns, k;                 /* plotted points, samples ((n + 7) / 8), coordinates */
+    double *t, *d1, *d2;          /* ns times; ns x k first, second derivatives */
+} mm_kin_samples;
+
+/* Room in res's arena for the samples of n points.  MM_OK or MM_ENOMEM
+ * (err filled). */
+int mm_kin_samples_init(mm_kin_samples *s, mm_result *res, int n, int k, mm_error *err);
+
+/* Point i (of the n) at t, its derivatives d1 and d2 (k each; d2 may be
+ * NULL): kept when it is a sample.  Returns 1 when kept, else 0. */
+int mm_kin_sample(mm_kin_samples *s, int i, double t, const double *d1, const double *d2);
+
+/* The same for a plane point (k = 2) and a space point (k = 3). */
+int mm_kin_sample2(mm_kin_samples *s, int i, double t, mm_v2 v, mm_v2 a);
+int mm_kin_sample3(mm_kin_samples *s, int i, double t, mm_v3 v, mm_v3 a);
+
+/* The positions of a sample at t displaced by h: the k coordinates into
+ * q, a bound of their error (as mm_kin_pos_fn's) into *qerr. */
+typedef int (*mm_kin_at_fn)(double t, double h, double *q, double *qerr, void *ctx, mm_error *err);
+
+/* mm_kin_fd_va over the samples s (unweighted, the analytic derivatives
+ * closed forms): the velocity and acceleration checked against central
+ * differences of the positions at, steps from h0.  MM_OK or at's code. */
+int mm_kin_fd_samples(mm_result *res, int out_v, int out_a, const char *what_v, const char *what_a, mm_kin_at_fn at,
+                      void *ctx, const mm_kin_samples *s, double h0, mm_error *err);
+
+/* A still path through the points of series s.  NULL when out of memory. */
+mm_shape *mm_kin_path(mm_kin_draw *d, const char *name, const mm_series *s);
+
+/* A circle of radius r, moving (nf frames) or not.  NULL when out of memory. */
+mm_shape *mm_kin_circle(mm_kin_draw *d, const char *name, int moving, double r);
+
+/* The time of frame f of a motion shown from t0 to t1, t0 + (t1 - t0) f /
+ * (nf - 1), written into the animation and returned. */
+double mm_kin_frame_t(mm_kin_draw *d, int f, double t0, double t1);
+
+/* The isometric view of a space point (x, y, z up): its screen x, y. */
+void mm_kin_iso(mm_v3 p, double *x, double *y);
 
 #endif

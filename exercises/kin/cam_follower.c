@@ -76,10 +76,8 @@ static const mm_output outputs[] = {
     [O_PROF] = MM_SERIES("profile", "cam profile", "m", "x", "m", .aspect = "equal", .figure = "cam"),
     [O_PITCH] = MM_SERIES("pitch_curve", "pitch curve (path of the roller's centre)", "m", "x", "m", .aspect = "equal",
                           .figure = "cam", .role = "reference"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of s vs s'", "m", "step h", "rad",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs s''", "m", "step h", "rad",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of s vs s'", "m", "rad"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs s''", "m", "rad"),
     [O_ANIM] = MM_ANIMATION("the cam turning, the roller follower rising and falling, its velocity"),
 };
 
@@ -366,19 +364,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_cam_follower = {
-    .id = "kin-cam-follower",
-    .chapter = 2,
-    .section = "2.4.4",
+    .id = "kin-cam-follower", .chapter = 2, .section = "2.4.4",
     .title = "Cam and roller follower",
     .summary = "A disc cam lifting a roller follower: motion laws, velocity, acceleration and jerk, pressure "
                "angle, the cam profile and its undercutting.",
     .tags = "kinematics, mechanism, cam, follower, motion law, pressure angle, undercutting",
     .theory = "exercises/kin/cam_follower.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -92,10 +92,9 @@ static const mm_output outputs[] = {
     [O_SMU] = MM_SERIES("mu", "transmission angle", "rad", "crank angle", "rad", .figure = "transmission angle"),
     [O_SCOUP] = MM_SERIES("coupler_curve", "path of the coupler point P", "m", "x", "m", .aspect = "equal",
                           .figure = "coupler curve"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of theta3, theta4 vs d/dtheta2", "rad",
-                        "step h", "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs d2/dtheta2^2", "rad", "step h", "rad",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of theta3, theta4 vs d/dtheta2",
+                               "rad", "rad"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs d2/dtheta2^2", "rad", "rad"),
     [O_ANIM] = MM_ANIMATION("crank, coupler and rocker over the cycle, the coupler curve, the velocity and "
                             "acceleration of P"),
 };
@@ -422,19 +421,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_four_bar = {
-    .id = "kin-four-bar",
-    .chapter = 2,
-    .section = "2.4.4",
+    .id = "kin-four-bar", .chapter = 2, .section = "2.4.4",
     .title = "Four-bar linkage",
     .summary = "Angles, angular velocities and accelerations of coupler and rocker; Grashof's condition, "
                "transmission angle, coupler curve, toggles and change points.",
     .tags = "kinematics, mechanism, four-bar, Grashof, Freudenstein, transmission angle, coupler curve",
     .theory = "exercises/kin/four_bar.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

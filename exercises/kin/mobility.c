@@ -433,18 +433,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_mobility = {
-    .id = "kin-mobility",
-    .chapter = 2,
-    .section = "2.4.2",
+    .id = "kin-mobility", .chapter = 2, .section = "2.4.2",
     .title = "Mobility: counting degrees of freedom",
     .summary = "The Grubler-Kutzbach count of a linkage against the rank of its constraint equations: where the "
                "count is right, and the overconstrained linkages where it is wrong.",
     .tags = "kinematics, mechanism, mobility, degrees of freedom, Grubler, Kutzbach, overconstrained, Bennett",
     .theory = "exercises/kin/mobility.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .solve = solve,
 };

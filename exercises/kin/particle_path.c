@@ -61,8 +61,7 @@ static const mm_output outputs[] = {
     [O_AAY] = MM_SCALAR("a_avg_y", "average acceleration over [t, t+dt], y", "m/s^2"),
     [O_PATH] = MM_SERIES("path", "path of the particle", "m", "x", "m", .aspect = "equal", .figure = "path"),
     [O_SV] = MM_SERIES("v", "speed", "m/s", "t", "s", .figure = "speed"),
-    [O_FD] = MM_SERIES("fd_error", "worst error of the central difference of r vs Ridders' v", "m/s", "step h", "s",
-                       .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FD] = MM_KIN_FD_SERIES("fd_error", "worst error of the central difference of r vs Ridders' v", "m/s", "s"),
     [O_ANIM] = MM_ANIMATION("the particle moving along its path with its velocity and acceleration"),
 };
 
@@ -255,19 +254,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_particle_path = {
-    .id = "kin-particle-path",
-    .chapter = 2,
-    .section = "2.2.1",
+    .id = "kin-particle-path", .chapter = 2, .section = "2.2.1",
     .title = "Position, velocity and acceleration of a particle",
     .summary = "A path typed as x(t), y(t): velocity and acceleration vectors, average against instantaneous, "
                "and the error of a finite difference against its step.",
     .tags = "kinematics, particle, velocity, acceleration, numerical differentiation, Ridders",
     .theory = "exercises/kin/particle_path.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -54,8 +54,7 @@ static const mm_output outputs[] = {
                          .figure = "path", .mark = "dots"),
     [O_SAT] = MM_SERIES("a_t", "tangential acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
     [O_SAN] = MM_SERIES("a_n", "normal acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
-    [O_FD] = MM_SERIES("fd_error", "worst error of the central difference of the speed vs a_t", "m/s^2", "step h", "s",
-                       .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FD] = MM_KIN_FD_SERIES("fd_error", "worst error of the central difference of the speed vs a_t", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the particle with its tangential and normal accelerations and the osculating circle"),
 };
 
@@ -270,19 +269,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_path_coordinates = {
-    .id = "kin-path-coordinates",
-    .chapter = 2,
-    .section = "2.2.5",
+    .id = "kin-path-coordinates", .chapter = 2, .section = "2.2.5",
     .title = "Tangential and normal coordinates",
     .summary = "Along any path typed as x(t), y(t): tangential and normal accelerations, curvature, radius "
                "and centre of curvature, the osculating circle.",
     .tags = "kinematics, particle, tangential, normal, curvature, osculating circle",
     .theory = "exercises/kin/path_coordinates.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -61,10 +61,8 @@ static const mm_output outputs[] = {
     [O_SW] = MM_SERIES("omega", "angular velocity", "rad/s", "theta", "rad", .figure = "omega"),
     [O_SVB] = MM_SERIES("v_B", "velocity of B", "m/s", "theta", "rad", .figure = "v_B"),
     [O_SPATH] = MM_SERIES("path", "path of P", "m", "x", "m", .aspect = "equal", .figure = "path of P"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of P vs eq. (3)", "m/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs eq. (4)", "m/s^2", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of P vs eq. (3)", "m/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs eq. (4)", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the ladder sliding, its instantaneous centre on the space centrode, the body centrode "
                             "rolling on it, and the velocity field"),
 };
@@ -251,18 +249,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_plane_motion = {
-    .id = "kin-plane-motion",
-    .chapter = 2,
-    .section = "2.3.3",
+    .id = "kin-plane-motion", .chapter = 2, .section = "2.3.3",
     .title = "Plane motion: the sliding ladder",
     .summary = "A ladder sliding down a wall: instantaneous centre, centrodes, the velocity field, angular "
                "acceleration and the acceleration pole.",
     .tags = "kinematics, rigid body, plane motion, instantaneous centre, centrode, acceleration pole",
     .theory = "exercises/kin/plane_motion.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .solve = solve,
 };

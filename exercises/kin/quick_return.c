@@ -63,10 +63,9 @@ static const mm_output outputs[] = {
     [O_SV] = MM_SERIES("v_ram", "ram velocity", "m/s", "crank angle", "rad", .figure = "ram velocity"),
     [O_SA] = MM_SERIES("a_ram", "ram acceleration", "m/s^2", "crank angle", "rad", .figure = "ram acceleration"),
     [O_STH4] = MM_SERIES("theta4", "lever angle", "rad", "crank angle", "rad", .figure = "lever angle"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of (theta4, X) vs eq. (2)'s derivative",
-                        "", "step h", "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference", "", "step h", "rad", .x_scale = "log",
-                        .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v",
+                               "worst error of the central difference of (theta4, X) vs eq. (2)'s derivative", "", "rad"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference", "", "rad"),
     [O_ANIM] = MM_ANIMATION("crank, slotted lever and ram over a turn, with the ram's velocity"),
 };
 
@@ -350,19 +349,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_quick_return = {
-    .id = "kin-quick-return",
-    .chapter = 2,
-    .section = "2.4.4",
+    .id = "kin-quick-return", .chapter = 2, .section = "2.4.4",
     .title = "Quick-return mechanism: crank and slotted lever",
     .summary = "A shaper's crank and slotted lever: ram position, velocity and acceleration, the stroke, the "
                "dead centres and the time ratio of cutting to return.",
     .tags = "kinematics, mechanism, quick return, shaper, slotted lever, time ratio",
     .theory = "exercises/kin/quick_return.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

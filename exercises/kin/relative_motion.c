@@ -67,10 +67,8 @@ static const mm_output outputs[] = {
                           .role = "reference"),
     [O_SV] = MM_SERIES("v", "absolute speed", "m/s", "t", "s", .figure = "speed"),
     [O_SA] = MM_SERIES("a_coriolis", "Coriolis acceleration", "m/s^2", "t", "s", .figure = "Coriolis"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of r vs eq. (2)", "m/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs eq. (3)", "m/s^2", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of r vs eq. (2)", "m/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs eq. (3)", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the turning table with its slot and slider, the absolute path, v and the Coriolis term"),
 };
 
@@ -245,19 +243,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_relative_motion = {
-    .id = "kin-relative-motion",
-    .chapter = 2,
-    .section = "2.2.4",
+    .id = "kin-relative-motion", .chapter = 2, .section = "2.2.4",
     .title = "Relative motion: a slider on a turntable",
     .summary = "Absolute velocity and acceleration from the relative motion in a turning frame: transport "
                "terms and the Coriolis acceleration.",
     .tags = "kinematics, moving frame, relative motion, Coriolis, transport acceleration",
     .theory = "exercises/kin/relative_motion.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -68,10 +68,8 @@ static const mm_output outputs[] = {
     [O_PATH] = MM_SERIES("path", "path of P", "m", "x", "m", .aspect = "equal", .figure = "path"),
     [O_SV] = MM_SERIES("v", "speed of P", "m/s", "t", "s", .figure = "speed"),
     [O_SA] = MM_SERIES("a", "acceleration of P", "m/s^2", "t", "s", .figure = "acceleration"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of P vs eq. (2)", "m/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs eq. (3)", "m/s^2", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of P vs eq. (2)", "m/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs eq. (3)", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the wheel rolling, P's path, velocity and acceleration, the contact point"),
 };
 
@@ -342,19 +340,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_rolling_wheel = {
-    .id = "kin-rolling-wheel",
-    .chapter = 2,
-    .section = "2.3.5",
+    .id = "kin-rolling-wheel", .chapter = 2, .section = "2.3.5",
     .title = "Rolling without slipping: the cycloid",
     .summary = "A rolling wheel: the contact point at rest as instantaneous centre, the velocity and "
                "acceleration of any point, the cycloid's curvature and length.",
     .tags = "kinematics, rigid body, rolling, cycloid, trochoid, instantaneous centre",
     .theory = "exercises/kin/rolling_wheel.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -64,10 +64,8 @@ static const mm_output outputs[] = {
     [O_SV] = MM_SERIES("v", "speed", "m/s", "t", "s", .figure = "speed"),
     [O_SAR] = MM_SERIES("a_r", "radial acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
     [O_SAT] = MM_SERIES("a_theta", "transverse acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of (x, y) vs v", "m/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs a", "m/s^2", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of (x, y) vs v", "m/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs a", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the arm turning about O with the point on it, its velocity and acceleration"),
 };
 
@@ -269,19 +267,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_rotation_plane = {
-    .id = "kin-rotation-plane",
-    .chapter = 2,
-    .section = "2.2.6",
+    .id = "kin-rotation-plane", .chapter = 2, .section = "2.2.6",
     .title = "Motion about a fixed point: polar coordinates",
     .summary = "Radial and transverse velocity and acceleration of a point on a turning arm: the centripetal "
                "and Coriolis terms, and circular motion as the special case.",
     .tags = "kinematics, particle, polar coordinates, rotation, Coriolis, centripetal",
     .theory = "exercises/kin/rotation_plane.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

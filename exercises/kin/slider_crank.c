@@ -79,10 +79,8 @@ static const mm_output outputs[] = {
     [O_STH3] = MM_SERIES("theta3", "rod angle", "rad", "crank angle", "rad", .figure = "rod angle"),
     [O_SMID] = MM_SERIES("rod_midpoint", "path of the rod's midpoint", "m", "x", "m", .aspect = "equal",
                          .figure = "rod midpoint"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of x vs dx/dphi", "m", "step h",
-                        "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference of x vs d2x/dphi2", "m", "step h",
-                        "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of x vs dx/dphi", "m", "rad"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference of x vs d2x/dphi2", "m", "rad"),
     [O_ANIM] = MM_ANIMATION("the crank, the rod and the slider over the cycle, with the slider's velocity and acceleration"),
 };
 
@@ -401,19 +399,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_slider_crank = {
-    .id = "kin-slider-crank",
-    .chapter = 2,
-    .section = "2.4.4",
+    .id = "kin-slider-crank", .chapter = 2, .section = "2.4.4",
     .title = "Slider-crank mechanism",
     .summary = "Position, velocity and acceleration of the slider over a turn: dead centres, stroke, "
                "offset and quick return, toggles of a short rod.",
     .tags = "kinematics, mechanism, slider-crank, loop closure, Newton-Raphson, dead centre",
     .theory = "exercises/kin/slider_crank.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

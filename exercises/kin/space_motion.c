@@ -79,10 +79,9 @@ static const mm_output outputs[] = {
     [O_SANG] = MM_SERIES("theta", "second angle", "rad", "t", "s", .figure = "second angle"),
     [O_SDET] = MM_SERIES("det_B", "det B: zero at a gimbal lock", "", "t", "s", .figure = "det B"),
     [O_SW] = MM_SERIES("omega", "magnitude of the angular velocity", "rad/s", "t", "s", .figure = "omega"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of R vs [w]x R", "1/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs ([w']x + [w]x^2) R", "1/s^2", "step h",
-                        "s", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of R vs [w]x R", "1/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs ([w']x + [w]x^2) R",
+                               "1/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the body (a box) turning about the fixed point, its axes and angular velocity"),
 };
 
@@ -364,19 +363,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_space_motion = {
-    .id = "kin-space-motion",
-    .chapter = 2,
-    .section = "2.3.4",
+    .id = "kin-space-motion", .chapter = 2, .section = "2.3.4",
     .title = "Motion in space: rotation matrices and Euler angles",
     .summary = "A body turning about a fixed point: its rotation matrix from Euler angles, the angular velocity "
                "from their rates, the angles read back, and gimbal lock.",
     .tags = "kinematics, rigid body, rotation matrix, Euler angles, angular velocity, gimbal lock, quaternion",
     .theory = "exercises/kin/space_motion.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };
