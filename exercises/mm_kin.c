@@ -469,3 +469,122 @@ void mm_kin_iso(mm_v3 p, double *x, double *y)
     *x = (p.y - p.x) * M_SQRT1_2;
     *y = (2 * p.z - p.x - p.y) / sqrt(6.0);
 }
+
+/* ---- the chapter's drawings ------------------------------------------------------------- */
+
+int mm_kin_anim_turntable(mm_result *res, int nf, double t_show, double size, double h, const mm_series *path,
+                          double vmax, double amax, void (*frame)(double t, mm_kin_slot_state *k, void *ctx),
+                          void *ctx, mm_error *err)
+{
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 2 * size);
+    mm_shape *disc = an ? mm_kin_shape(&d, "table", MM_SHAPE_POLYGON, 1, 24) : NULL;
+    mm_shape *sl = mm_kin_shape(&d, "slot", MM_SHAPE_LINE, 1, 2);
+    mm_shape *blk = mm_kin_shape(&d, "slider", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *piv = mm_kin_pivot(&d, "O", 0, 0);
+    mm_shape *tr = mm_kin_path(&d, "absolute path", path);
+    mm_shape *vv = mm_kin_arrow_shape(&d, "v", "m/s", vmax), *vr = mm_kin_arrow_shape(&d, "v_rel", "m/s", vmax);
+    mm_shape *ac = mm_kin_arrow_shape(&d, "a_coriolis", "m/s^2", amax), *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
+    if (!disc || !sl || !blk || !piv || !tr || !vv || !vr || !ac || !aa)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    vr->scale = vv->scale;                                 /* velocities on one scale, accelerations on another */
+    ac->scale = aa->scale;
+    for (int f = 0; f < nf; f++) {
+        mm_kin_slot_state k;
+        frame(mm_kin_frame_t(&d, f, 0, t_show), &k, ctx);
+        for (int j = 0; j < 24; j++) {
+            mm_v2 q = mm_v2_polar(size * (j == 0 ? 0.92 : 1), k.th + 2 * M_PI * j / 24);   /* a notch shows the turn */
+            mm_kin_pt(disc, f, j, q.x, q.y);
+        }
+        mm_v2 a0 = mm_v2_rotate((mm_v2){-size, h}, k.th), a1 = mm_v2_rotate((mm_v2){size, h}, k.th);
+        mm_kin_pt(sl, f, 0, a0.x, a0.y);
+        mm_kin_pt(sl, f, 1, a1.x, a1.y);
+        mm_kin_block(blk, f, k.r.x, k.r.y, 0.08 * size, 0.05 * size, k.th);
+        mm_kin_arrow(vv, f, k.r.x, k.r.y, k.v.x, k.v.y);
+        mm_kin_arrow(vr, f, k.r.x, k.r.y, k.vrel.x, k.vrel.y);
+        mm_kin_arrow(ac, f, k.r.x, k.r.y, k.acor.x, k.acor.y);
+        mm_kin_arrow(aa, f, k.r.x, k.r.y, k.a.x, k.a.y);
+    }
+    return mm_kin_draw_finish(&d);
+}
+
+int mm_kin_anim_axis(mm_result *res, int nf, double t_show, mm_v3 u, mm_v3 r0, double R, double drift, double vmax,
+                     double amax, void (*frame)(double t, mm_kin_axis_state *k, void *ctx), void *ctx, mm_error *err)
+{
+    /* e1, e2 across the axis */
+    mm_v3 e1 = fabs(u.x) < 0.9 ? (mm_v3){1, 0, 0} : (mm_v3){0, 1, 0};
+    e1 = mm_v3_sub(e1, mm_v3_scale(u, mm_v3_dot(e1, u)));
+    e1 = mm_v3_scale(e1, 1 / mm_v3_norm(e1));
+    mm_v3 e2 = mm_v3_cross(u, e1);
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 2.6 * R + drift);
+    mm_shape *plate = an ? mm_kin_shape(&d, "body", MM_SHAPE_POLYGON, 1, 6) : NULL;
+    mm_shape *ax = mm_kin_circle(&d, "axis", 1, 0.04 * R);
+    mm_shape *arm = mm_kin_shape(&d, "radius to P", MM_SHAPE_LINE, 1, 2);
+    mm_shape *tr = mm_kin_shape(&d, "path of P", MM_SHAPE_PATH, 0, 121);
+    mm_shape *vv = mm_kin_arrow_shape(&d, "v_P", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a_P", "m/s^2", amax);
+    if (!plate || !ax || !arm || !tr || !vv || !aa)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_kin_axis_state k;
+    for (int j = 0; j <= 120; j++) {
+        frame(t_show * j / 120, &k, ctx);
+        mm_kin_pt(tr, 0, j, mm_v3_dot(k.P, e1), mm_v3_dot(k.P, e2));
+    }
+    double ang0 = atan2(mm_v3_dot(r0, e2), mm_v3_dot(r0, e1));
+    for (int f = 0; f < nf; f++) {
+        frame(mm_kin_frame_t(&d, f, 0, t_show), &k, ctx);
+        double ox = mm_v3_dot(k.O, e1), oy = mm_v3_dot(k.O, e2), a = ang0 + k.th;
+        for (int j = 0; j < 6; j++)                      /* a hexagonal plate turning with the body */
+            mm_kin_pt(plate, f, j, ox + 1.3 * R * cos(a + M_PI * j / 3), oy + 1.3 * R * sin(a + M_PI * j / 3));
+        mm_kin_pt(ax, f, 0, ox, oy);
+        double px = mm_v3_dot(k.P, e1), py = mm_v3_dot(k.P, e2);
+        mm_kin_pt(arm, f, 0, ox, oy);
+        mm_kin_pt(arm, f, 1, px, py);
+        mm_kin_arrow(vv, f, px, py, mm_v3_dot(k.v, e1), mm_v3_dot(k.v, e2));
+        mm_kin_arrow(aa, f, px, py, mm_v3_dot(k.a, e1), mm_v3_dot(k.a, e2));
+    }
+    return mm_kin_draw_finish(&d);
+}
+
+int mm_kin_anim_ladder(mm_result *res, int nf, const mm_kin_ladder_state *k, double L, const mm_series *path,
+                       double vmax, mm_error *err)
+{
+    enum { NV = 5, NC = 17 };
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 1.3 * L);
+    mm_shape *fl = an ? mm_kin_shape(&d, "floor", MM_SHAPE_LINE, 0, 2) : NULL;
+    mm_shape *wl = mm_kin_shape(&d, "wall", MM_SHAPE_LINE, 0, 2);
+    mm_shape *lad = mm_kin_shape(&d, "ladder", MM_SHAPE_LINE, 1, 2);
+    mm_shape *sc = mm_kin_shape(&d, "space centrode", MM_SHAPE_PATH, 0, 25);
+    mm_shape *bc = mm_kin_shape(&d, "body centrode", MM_SHAPE_LINE, 1, NC);
+    mm_shape *ic = mm_kin_circle(&d, "instantaneous centre", 1, 0.02 * L);
+    mm_shape *pp = mm_kin_path(&d, "path of P", path);
+    mm_shape *va[NV];
+    for (int j = 0; j < NV; j++)
+        va[j] = mm_kin_arrow_shape(&d, j == 0 ? "v_A" : j == NV - 1 ? "v_B" : "v", "m/s", vmax);
+    if (!fl || !wl || !lad || !sc || !bc || !ic || !pp || !va[NV - 1])
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    fl->style = wl->style = "ground";
+    mm_kin_pt(fl, 0, 0, 0, 0), mm_kin_pt(fl, 0, 1, 1.1 * L, 0);
+    mm_kin_pt(wl, 0, 0, 0, 0), mm_kin_pt(wl, 0, 1, 0, 1.1 * L);
+    ic->style = "highlight";
+    for (int j = 0; j < 25; j++)
+        mm_kin_pt(sc, 0, j, L * cos(M_PI / 2 * j / 24), L * sin(M_PI / 2 * j / 24));
+    for (int f = 0; f < nf; f++) {
+        const mm_kin_ladder_state *kf = k + f;
+        an->t[f] = kf->t;
+        mm_kin_pt(lad, f, 0, kf->A.x, kf->A.y), mm_kin_pt(lad, f, 1, kf->B.x, kf->B.y);
+        mm_kin_pt(ic, f, 0, kf->I.x, kf->I.y);
+        mm_v2 mid = mm_v2_scale(mm_v2_add(kf->A, kf->B), 0.5);
+        for (int j = 0; j < NC; j++) {                           /* the circle on AB as diameter */
+            mm_v2 q = mm_v2_add(mid, mm_v2_polar(0.5 * L, 2 * M_PI * j / (NC - 1)));
+            mm_kin_pt(bc, f, j, q.x, q.y);
+        }
+        for (int j = 0; j < NV; j++) {                           /* the velocity field along AB */
+            mm_v2 Pj = mm_v2_add(kf->A, mm_v2_scale(mm_v2_sub(kf->B, kf->A), (double)j / (NV - 1)));
+            mm_v2 vj = mm_v2_scale(mm_v2_perp(mm_v2_sub(Pj, kf->I)), kf->w);
+            mm_kin_arrow(va[j], f, Pj.x, Pj.y, vj.x, vj.y);
+        }
+    }
+    return mm_kin_draw_finish(&d);
+}

@@ -232,4 +232,51 @@ double mm_kin_frame_t(mm_kin_draw *d, int f, double t0, double t1);
 /* The isometric view of a space point (x, y, z up): its screen x, y. */
 void mm_kin_iso(mm_v3 p, double *x, double *y);
 
+/* ---- the chapter's drawings ------------------------------------------------------------- */
+
+/* kin-relative-motion: a turntable of radius size turning about O (a notch
+ * shows the turn), its slot at distance h from O, the slider on it, its
+ * absolute path (the series path), and at the slider v and v_rel on one
+ * scale (vmax), a_coriolis and a on another (amax); nf frames over
+ * [0, t_show], frame(t) giving the table's angle and the slider's terms.
+ * MM_OK or MM_ENOMEM (err filled). */
+typedef struct mm_kin_slot_state {
+    double th;
+    mm_v2 r, v, vrel, acor, a;
+} mm_kin_slot_state;
+
+int mm_kin_anim_turntable(mm_result *res, int nf, double t_show, double size, double h, const mm_series *path,
+                          double vmax, double amax, void (*frame)(double t, mm_kin_slot_state *k, void *ctx),
+                          void *ctx, mm_error *err);
+
+/* kin-rigid-rotation: a body turning about the unit axis u, seen along it:
+ * a hexagonal plate of radius 1.3 R turning with the body (a corner at
+ * r0's direction at th = 0), the axis through O(t) as a small circle, the
+ * radius from it to the point P, P's path (121 points over [0, t_show]),
+ * v_P and a_P at P; drift the distance the axis moves.  nf frames over
+ * [0, t_show], frame(t) giving the angle turned, O, P, v, a.  MM_OK or
+ * MM_ENOMEM (err filled). */
+typedef struct mm_kin_axis_state {
+    double th;
+    mm_v3 O, P, v, a;
+} mm_kin_axis_state;
+
+int mm_kin_anim_axis(mm_result *res, int nf, double t_show, mm_v3 u, mm_v3 r0, double R, double drift, double vmax,
+                     double amax, void (*frame)(double t, mm_kin_axis_state *k, void *ctx), void *ctx, mm_error *err);
+
+/* kin-plane-motion: a ladder of length L with A on the floor and B at the
+ * wall, its instantaneous centre I on the space centrode (the quarter
+ * circle of radius L about the corner), the body centrode (the circle on
+ * AB as diameter) rolling on it, P's path (the series path), and the
+ * velocity field w k x (X - I) at five points X along AB (v_A, v, v_B, on
+ * the scale of vmax); frame f at k[f].  MM_OK or MM_ENOMEM (err filled). */
+typedef struct mm_kin_ladder_state {
+    double t;
+    mm_v2 A, B, I;
+    double w;
+} mm_kin_ladder_state;
+
+int mm_kin_anim_ladder(mm_result *res, int nf, const mm_kin_ladder_state *k, double L, const mm_series *path,
+                       double vmax, mm_error *err);
+
 #endif

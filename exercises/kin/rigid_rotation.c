@@ -99,6 +99,15 @@ static mm_v3 pos(const body *b, double t, mm_v3 *v, mm_v3 *a)
     return mm_v3_add(mm_v3_scale(b->vax, t), r);
 }
 
+/* the animation's frame at t */
+static void frame(double t, mm_kin_axis_state *k, void *ctx)
+{
+    const body *b = ctx;
+    k->th = b->w0 * t + 0.5 * b->al * t * t;
+    k->P = pos(b, t, &k->v, &k->a);
+    k->O = mm_v3_scale(b->vax, t);
+}
+
 static int fd_pos(double ts, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     (void)err;
@@ -170,43 +179,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (rc != MM_OK)
         return rc;
 
-    /* ---- the animation: seen along the axis (e1, e2 across it) ---- */
-    mm_v3 e1 = fabs(b.u.x) < 0.9 ? (mm_v3){1, 0, 0} : (mm_v3){0, 1, 0};
-    e1 = mm_v3_sub(e1, mm_v3_scale(b.u, mm_v3_dot(e1, b.u)));
-    e1 = mm_v3_scale(e1, 1 / mm_v3_norm(e1));
-    mm_v3 e2 = mm_v3_cross(b.u, e1);
+    /* ---- the animation: seen along the axis ---- */
     double t_show;
     int nf = mm_scene_frames(t_end, wm > 0 ? 2 * M_PI / wm : 0, &t_show);
     double R = fmax(rho, 0.05 * mm_v3_norm(b.r0) + 1e-3), drift = mm_v3_norm(b.vax) * t_show;
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 2.6 * R + drift);
-    mm_shape *plate = an ? mm_kin_shape(&d, "body", MM_SHAPE_POLYGON, 1, 6) : NULL;
-    mm_shape *ax = mm_kin_circle(&d, "axis", 1, 0.04 * R);
-    mm_shape *arm = mm_kin_shape(&d, "radius to P", MM_SHAPE_LINE, 1, 2);
-    mm_shape *tr = mm_kin_shape(&d, "path of P", MM_SHAPE_PATH, 0, 121);
-    mm_shape *vv = mm_kin_arrow_shape(&d, "v_P", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a_P", "m/s^2", amax);
-    if (!plate || !ax || !arm || !tr || !vv || !aa)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    for (int k = 0; k <= 120; k++) {
-        mm_v3 Pk = pos(&b, t_show * k / 120, NULL, NULL);
-        mm_kin_pt(tr, 0, k, mm_v3_dot(Pk, e1), mm_v3_dot(Pk, e2));
-    }
-    double ang0 = atan2(mm_v3_dot(b.r0, e2), mm_v3_dot(b.r0, e1));
-    for (int f = 0; f < nf; f++) {
-        double tf = mm_kin_frame_t(&d, f, 0, t_show), th = b.w0 * tf + 0.5 * b.al * tf * tf;
-        mm_v3 vf, af, Pf = pos(&b, tf, &vf, &af), O = mm_v3_scale(b.vax, tf);
-        double ox = mm_v3_dot(O, e1), oy = mm_v3_dot(O, e2);
-        for (int k = 0; k < 6; k++)                      /* a hexagonal plate turning with the body */
-            mm_kin_pt(plate, f, k, ox + 1.3 * R * cos(ang0 + th + M_PI * k / 3), oy + 1.3 * R * sin(ang0 + th + M_PI * k / 3));
-        mm_kin_pt(ax, f, 0, ox, oy);
-        double px = mm_v3_dot(Pf, e1), py = mm_v3_dot(Pf, e2);
-        mm_kin_pt(arm, f, 0, ox, oy);
-        mm_kin_pt(arm, f, 1, px, py);
-        mm_kin_arrow(vv, f, px, py, mm_v3_dot(vf, e1), mm_v3_dot(vf, e2));
-        mm_kin_arrow(aa, f, px, py, mm_v3_dot(af, e1), mm_v3_dot(af, e2));
-    }
     mm_res_method(res, "closed form (cross products), positions by Rodrigues' rotation", 0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_axis(res, nf, t_show, b.u, b.r0, R, drift, vmax, amax, frame, &b, err);
 }
 
 static const char *const references[] = {
