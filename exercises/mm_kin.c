@@ -588,3 +588,25 @@ int mm_kin_anim_ladder(mm_result *res, int nf, const mm_kin_ladder_state *k, dou
     }
     return mm_kin_draw_finish(&d);
 }
+
+int mm_kin_anim_particle(mm_result *res, int nf, const double *t, double (*P)[2], double (*V)[2], double (*A)[2],
+                         const mm_series *path, double size, mm_error *err)
+{
+    double vmax = 0, amax = 0;
+    for (int f = 0; f < nf; f++)
+        vmax = fmax(vmax, hypot(V[f][0], V[f][1])), amax = fmax(amax, hypot(A[f][0], A[f][1]));
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", size);
+    mm_shape *tr = an ? mm_kin_path(&d, "path", path) : NULL;
+    mm_shape *pt = mm_kin_circle(&d, "particle", 1, 0.015 * d.size);
+    mm_shape *va = mm_kin_arrow_shape(&d, "v", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
+    if (!tr || !pt || !va || !aa)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int f = 0; f < nf; f++) {
+        an->t[f] = t[f];
+        mm_kin_pt(pt, f, 0, P[f][0], P[f][1]);
+        mm_kin_arrow(va, f, P[f][0], P[f][1], V[f][0], V[f][1]);
+        mm_kin_arrow(aa, f, P[f][0], P[f][1], A[f][0], A[f][1]);
+    }
+    return mm_kin_draw_finish(&d);
+}

@@ -279,4 +279,11 @@ typedef struct mm_kin_ladder_state {
 int mm_kin_anim_ladder(mm_result *res, int nf, const mm_kin_ladder_state *k, double L, const mm_series *path,
                        double vmax, mm_error *err);
 
+/* kin-particle-path: a particle on its path (the series path) with its
+ * velocity and acceleration (each arrow on the scale of its largest),
+ * frame f at t[f], the particle at P[f], v = V[f], a = A[f]; size the
+ * scene's.  MM_OK or MM_ENOMEM (err filled). */
+int mm_kin_anim_particle(mm_result *res, int nf, const double *t, double (*P)[2], double (*V)[2], double (*A)[2],
+                         const mm_series *path, double size, mm_error *err);
+
 #endif

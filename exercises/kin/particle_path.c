@@ -26,6 +26,7 @@
 
 #include "mm_geom.h"
 #include "mm_kin.h"
+#include "mm_quad.h"
 
 enum { P_X, P_Y, P_T0, P_T1, P_T, P_DT, P_POINTS };
 
@@ -112,11 +113,7 @@ static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error 
 static int gauss(mm_kin_curve *c, double a, double b, int np, double h0, double iv[2], double ev[2],
                  double ia[2], double ea[2], mm_error *err)
 {
-    static const double x5[5] = {-0.906179845938663992797626878299, -0.538469310105683091036314420700, 0,
-                                 0.538469310105683091036314420700, 0.906179845938663992797626878299};
-    static const double w5[5] = {0.236926885056189087514264040720, 0.478628670499366468041291514836,
-                                 0.568888888888888888888888888889, 0.478628670499366468041291514836,
-                                 0.236926885056189087514264040720};
+    const double *x5 = mm_quad_gl5_node, *w5 = mm_quad_gl5_weight;
     for (int i = 0; i < 2; i++)
         iv[i] = ev[i] = ia[i] = ea[i] = 0;
     double hw = 0.5 * (b - a) / np;
@@ -185,9 +182,8 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
 
     /* ---- the path over [t0, t1] ---- */
     mm_series *path = mm_res_series(res, O_PATH, n), *sv = mm_res_series(res, O_SV, n);
-    int ns = (n + 7) / 8;
-    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *dd = mm_res_alloc(res, 2 * (size_t)ns * sizeof *dd);
-    if (!path || !sv || !ts || !dd)
+    mm_kin_samples smp;
+    if (!path || !sv || mm_kin_samples_init(&smp, res, n, 2, err) != MM_OK)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(t0, t1, n, sv->x);
     double derr = 0, size = 0, vmax_path = 0;
@@ -199,48 +195,28 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
         sv->y[i] = hypot(vi[0], vi[1]);
         vmax_path = fmax(vmax_path, sv->y[i]);
         size = fmax(size, fmax(fabs(ri[0]), fabs(ri[1])));
-        if (i % 8 == 0 || i == n - 1) {
-            int j = i % 8 == 0 ? i / 8 : ns - 1;
-            ts[j] = sv->x[i], dd[2 * j] = vi[0], dd[2 * j + 1] = vi[1];
+        if (mm_kin_sample(&smp, i, sv->x[i], vi, NULL))
             derr = fmax(derr, fmax(ei[0], ei[1]));
-        }
     }
     /* the plain central difference against Ridders: error vs step, order 2 */
-    fd_ctx fc = {c, ts, vmax_path};
+    fd_ctx fc = {c, smp.t, vmax_path};
     mm_kin_fd fd;
-    if ((rc = mm_kin_fd_study(res, O_FD, "dr/dt", fd_pos, &fc, 2, NULL, ns, dd, 1, 0.5 * h0, 26, derr, &fd, err)) !=
-        MM_OK)
+    if ((rc = mm_kin_fd_study(res, O_FD, "dr/dt", fd_pos, &fc, 2, NULL, smp.ns, smp.d1, 1, 0.5 * h0, 26, derr, &fd,
+                              err)) != MM_OK)
         return rc;
 
     /* ---- the animation ---- */
     enum { NF = 72 };
-    double vmax = 0, amax = 0, V[NF][2], A[NF][2], P[NF][2], T[NF];
+    double V[NF][2], A[NF][2], P[NF][2], T[NF];
     for (int f = 0; f < NF; f++) {
         double e[2], g[2];
         T[f] = t0 + (t1 - t0) * f / (NF - 1);
         if ((rc = mm_kin_curve_at(c, T[f], h0, P[f], V[f], e, A[f], g, err)) != MM_OK)
             return rc;
-        vmax = fmax(vmax, hypot(V[f][0], V[f][1])), amax = fmax(amax, hypot(A[f][0], A[f][1]));
-    }
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, NF, "t", "s", 2 * size + 1e-6);
-    mm_shape *tr = an ? mm_kin_shape(&d, "path", MM_SHAPE_PATH, 0, n) : NULL;
-    mm_shape *pt = mm_kin_shape(&d, "particle", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *va = mm_kin_arrow_shape(&d, "v", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
-    if (!tr || !pt || !va || !aa)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    pt->radius = 0.015 * d.size;
-    for (int i = 0; i < n; i++)
-        mm_kin_pt(tr, 0, i, path->x[i], path->y[i]);
-    for (int f = 0; f < NF; f++) {
-        an->t[f] = T[f];
-        mm_kin_pt(pt, f, 0, P[f][0], P[f][1]);
-        mm_kin_arrow(va, f, P[f][0], P[f][1], V[f][0], V[f][1]);
-        mm_kin_arrow(aa, f, P[f][0], P[f][1], A[f][0], A[f][1]);
     }
     mm_res_method(res, "Ridders' extrapolation of central differences (derivatives of muParser expressions)", 0);
     mm_res_method_stat(res, "first_step", h0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_particle(res, NF, T, P, V, A, path, 2 * size + 1e-6, err);
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)

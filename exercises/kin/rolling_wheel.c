@@ -24,8 +24,10 @@
 #include <float.h>
 #include <math.h>
 
+#include "mm_elliptic.h"
 #include "mm_geom.h"
 #include "mm_kin.h"
+#include "mm_quad.h"
 #include "mm_scene.h"
 
 enum { P_R, P_B, P_W, P_AL, P_T, P_TEND, P_POINTS };
@@ -100,23 +102,6 @@ static int check(const mm_value *in, mm_error *err)
     return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
 }
 
-/* the complete elliptic integral of the second kind E(k), by the
- * arithmetic-geometric mean (Abramowitz & Stegun 17.6): converges
- * quadratically, to rounding in a handful of steps */
-static double ellip_E(double k)
-{
-    double a = 1, g = sqrt((1 - k) * (1 + k)), c = k, sum = 0.5 * c * c, p2 = 0.5;
-    for (int i = 0; i < 40 && fabs(c) > DBL_EPSILON * a; i++) {
-        double an = 0.5 * (a + g);
-        c = 0.5 * (a - g);
-        g = sqrt(a * g);
-        a = an;
-        p2 *= 2;
-        sum += p2 * c * c;
-    }
-    return M_PI / (2 * a) * (1 - sum);
-}
-
 /* |dP/dphi| = sqrt((R - b)^2 + 4 R b sin^2(phi/2)) integrated over one
  * turn: twice the integral over [0, pi] by 5-point Gauss-Legendre on
  * panels that halve towards phi = 0, where for b near R the integrand has
@@ -124,11 +109,7 @@ static double ellip_E(double k)
  * split = 2 halves every panel, for the error estimate */
 static double arch_quad(const wheel *m, int split)
 {
-    static const double x5[5] = {-0.906179845938663992797626878299, -0.538469310105683091036314420700, 0,
-                                 0.538469310105683091036314420700, 0.906179845938663992797626878299};
-    static const double w5[5] = {0.236926885056189087514264040720, 0.478628670499366468041291514836,
-                                 0.568888888888888888888888888889, 0.478628670499366468041291514836,
-                                 0.236926885056189087514264040720};
+    const double *x5 = mm_quad_gl5_node, *w5 = mm_quad_gl5_weight;
     enum { LEVELS = 48 };
     double sum = 0;
     for (int j = 0; j <= LEVELS; j++) {
@@ -247,7 +228,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     /* one arch: 4 (R + b) E(k), k^2 = 4 R b / (R + b)^2 (8 R for b = R) */
     if (m.b > 0) {
-        double k = 2 * sqrt(m.R * m.b) / (m.R + m.b), L = 4 * (m.R + m.b) * ellip_E(k);
+        double k = 2 * sqrt(m.R * m.b) / (m.R + m.b), L = 4 * (m.R + m.b) * mm_elliptic_E(k);
         if (m.b == m.R)
             L = 8 * m.R;
         mm_res_scalar(res, O_ARC, L);
