@@ -52,10 +52,12 @@ static void gl5_should_integrate_degree_9_exactly_and_not_degree_10(void **state
 
 /* ---- mm_elliptic_E ------------------------------------------------------------------- */
 
-static void e_should_meet_its_limit_and_the_singular_value(void **state)
+static void e_should_meet_its_limits_and_the_singular_value(void **state)
 {
     (void)state;
     check_rel(mm_elliptic_E(0), PI / 2, 2 * EPS, "E(0) = pi/2");
+    check_rel(mm_elliptic_E(1), 1, 2 * EPS, "E(1) = 1 (the AGM of 1 and 0 does not converge)");
+    check_rel(mm_elliptic_E(1 - 1e-12), 1, 1e-10, "E near 1: 1 + kc^2 (ln(4/kc) - 1/2) / 2, kc = 1.4e-6");
     /* k = 1/sqrt 2: E = K/2 + pi/(4K), K = Gamma(1/4)^2 / (4 sqrt pi); tgamma to a few eps */
     double K = tgamma(0.25) * tgamma(0.25) / (4 * sqrt(PI));
     check_rel(mm_elliptic_E(sqrt(0.5)), K / 2 + PI / (4 * K), 16 * EPS, "E(1/sqrt 2) = K/2 + pi/(4K)");
@@ -98,7 +100,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(gl5_nodes_should_be_the_roots_of_p5_with_their_weights),
         cmocka_unit_test(gl5_should_integrate_degree_9_exactly_and_not_degree_10),
-        cmocka_unit_test(e_should_meet_its_limit_and_the_singular_value),
+        cmocka_unit_test(e_should_meet_its_limits_and_the_singular_value),
         cmocka_unit_test(e_should_satisfy_legendres_relation),
         cmocka_unit_test(e_should_match_its_integral_by_gauss_kronrod),
     };
