@@ -374,6 +374,18 @@ int mm_kin_curve_solve(const mm_value *in, int px, int py,
     return rc;
 }
 
+int mm_kin_curve_work(const char *x, const char *y, double points, double extra, mm_error *err)
+{
+    const double max_work = 8e5;
+    double len = fmax((double)(strlen(x) + strlen(y)), 32);
+    if ((points + extra) * len > max_work)
+        return mm_error_set(err, MM_ERANGE, "points",
+                            "points must be at most %.0f with these expressions of %.0f characters (each point "
+                            "costs 21 evaluations of x and y, and a long expression costs more to evaluate); got %.0f",
+                            floor(max_work / len - extra), len, points);
+    return MM_OK;
+}
+
 int mm_kin_check_window(double t0, double t1, double t, mm_error *err)
 {
     if (!(t1 > t0))
@@ -468,6 +480,19 @@ void mm_kin_iso(mm_v3 p, double *x, double *y)
 {
     *x = (p.y - p.x) * M_SQRT1_2;
     *y = (2 * p.z - p.x - p.y) / sqrt(6.0);
+}
+
+int mm_kin_circle3(int (*p)(double t, double e, mm_v2 *P, void *ctx), void *ctx, double t, double h, double R[3])
+{
+    for (int k = 0; k < 3; k++) {
+        mm_v2 P[3], c;
+        for (int j = 0; j < 3; j++)
+            if (!p(t, (j - 1) * h / (1 << k), &P[j], ctx))
+                return 0;
+        if (!mm_geom_circumcircle(P[0], P[1], P[2], &c, &R[k]))
+            return 0;
+    }
+    return 1;
 }
 
 /* ---- the chapter's drawings ------------------------------------------------------------- */
@@ -607,6 +632,63 @@ int mm_kin_anim_particle(mm_result *res, int nf, const double *t, double (*P)[2]
         mm_kin_pt(pt, f, 0, P[f][0], P[f][1]);
         mm_kin_arrow(va, f, P[f][0], P[f][1], V[f][0], V[f][1]);
         mm_kin_arrow(aa, f, P[f][0], P[f][1], A[f][0], A[f][1]);
+    }
+    return mm_kin_draw_finish(&d);
+}
+
+int mm_kin_anim_arm(mm_result *res, int nf, double t_show, const mm_series *path, double vmax, double amax,
+                    void (*frame)(double t, mm_kin_arm_state *k, void *ctx), void *ctx, mm_error *err)
+{
+    double size = 0;
+    for (int i = 0; i < path->n; i++)
+        size = fmax(size, hypot(path->x[i], path->y[i]));
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 2 * size + 1e-3);
+    mm_shape *piv = an ? mm_kin_pivot(&d, "O", 0, 0) : NULL;
+    mm_shape *arm = mm_kin_shape(&d, "arm", MM_SHAPE_LINE, 1, 2);
+    mm_shape *pt = mm_kin_circle(&d, "point", 1, 0.02 * d.size);
+    mm_shape *tr = mm_kin_path(&d, "path", path);
+    mm_shape *va = mm_kin_arrow_shape(&d, "v", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
+    if (!piv || !arm || !pt || !tr || !va || !aa)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int f = 0; f < nf; f++) {
+        mm_kin_arm_state k;
+        frame(mm_kin_frame_t(&d, f, 0, t_show), &k, ctx);
+        mm_v2 tip = mm_v2_polar(fmax(size, 1e-3) * 1.1, k.th);          /* the arm runs past the point */
+        mm_kin_pt(arm, f, 0, 0, 0);
+        mm_kin_pt(arm, f, 1, tip.x, tip.y);
+        mm_kin_pt(pt, f, 0, k.x.x, k.x.y);
+        mm_kin_arrow(va, f, k.x.x, k.x.y, k.v.x, k.v.y);
+        mm_kin_arrow(aa, f, k.x.x, k.x.y, k.a.x, k.a.y);
+    }
+    return mm_kin_draw_finish(&d);
+}
+
+int mm_kin_anim_osculating(mm_result *res, int nf, const mm_kin_osc_state *k, const mm_series *path, double size,
+                           double amax, mm_error *err)
+{
+    enum { NC = 13 };
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", size);
+    mm_shape *tr = an ? mm_kin_path(&d, "path", path) : NULL;
+    mm_shape *pt = mm_kin_circle(&d, "particle", 1, 0.015 * d.size);
+    mm_shape *oc = mm_kin_shape(&d, "osculating circle", MM_SHAPE_LINE, 1, NC);
+    mm_shape *at = mm_kin_arrow_shape(&d, "a_t", "m/s^2", amax), *ann = mm_kin_arrow_shape(&d, "a_n", "m/s^2", amax);
+    if (!tr || !pt || !oc || !at || !ann)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int f = 0; f < nf; f++) {
+        const mm_kin_osc_state *g = k + f;
+        an->t[f] = g->t;
+        mm_kin_pt(pt, f, 0, g->P.x, g->P.y);
+        mm_kin_arrow(at, f, g->P.x, g->P.y, g->at.x, g->at.y);
+        mm_kin_arrow(ann, f, g->P.x, g->P.y, g->an.x, g->an.y);
+        /* the osculating circle, its radius capped at 3 sizes of the path */
+        double R = g->k != 0 ? fmin(g->rho, 3 * d.size) : 3 * d.size, s = g->k >= 0 ? 1 : -1;
+        mm_v2 C = mm_v2_add(g->P, mm_v2_scale(g->N, s * R));
+        for (int j = 0; j < NC; j++) {
+            mm_v2 q = mm_v2_add(C, mm_v2_scale(mm_v2_rotate(g->N, 2 * M_PI * j / (NC - 1)), -s * R));
+            mm_kin_pt(oc, f, j, q.x, q.y);
+        }
     }
     return mm_kin_draw_finish(&d);
 }

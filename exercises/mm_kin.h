@@ -143,6 +143,15 @@ int mm_kin_curve_solve(const mm_value *in, int px, int py,
                        int (*run)(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *err),
                        mm_result *res, mm_error *err);
 
+/* The work of an exercise on a typed curve: every point it computes costs
+ * a Ridders derivative (21 evaluations of x and y), an evaluation about 9
+ * ns a character (4.4 us for 500), so (points + extra) * (len(x) +
+ * len(y)) <= 8e5 (the length counted as at least 32) keeps the worst
+ * request near 150 ms; with short expressions every points is allowed.
+ * extra: the points computed besides the plotted ones.  MM_OK or
+ * MM_ERANGE naming "points" with the largest allowed. */
+int mm_kin_curve_work(const char *x, const char *y, double points, double extra, mm_error *err);
+
 /* The joint limits of a motion shown from t0 to t1 and asked at t:
  * t1 > t0 (else MM_ERANGE naming "t1"), t within [t0, t1] (naming "t"). */
 int mm_kin_check_window(double t0, double t1, double t, mm_error *err);
@@ -232,6 +241,15 @@ double mm_kin_frame_t(mm_kin_draw *d, int f, double t0, double t1);
 /* The isometric view of a space point (x, y, z up): its screen x, y. */
 void mm_kin_iso(mm_v3 p, double *x, double *y);
 
+/* A radius of curvature measured from three points of a path: R[k] the
+ * radius of the circle through p(t - h_k), p(t), p(t + h_k), h_k = h / 2^k
+ * for k = 0, 1, 2 (R(h) - rho = O(h): in the asymptotic regime R[2] lies
+ * within 2 |R[1] - R[2]| of rho).  p writes the point at t + e (the
+ * offset e = (j - 1) h / 2^k given apart, for a path taken relative to
+ * p(t)) and returns 0 when it cannot.  Returns 1 when all three circles
+ * were found, else 0. */
+int mm_kin_circle3(int (*p)(double t, double e, mm_v2 *P, void *ctx), void *ctx, double t, double h, double R[3]);
+
 /* ---- the chapter's drawings ------------------------------------------------------------- */
 
 /* kin-relative-motion: a turntable of radius size turning about O (a notch
@@ -285,5 +303,33 @@ int mm_kin_anim_ladder(mm_result *res, int nf, const mm_kin_ladder_state *k, dou
  * scene's.  MM_OK or MM_ENOMEM (err filled). */
 int mm_kin_anim_particle(mm_result *res, int nf, const double *t, double (*P)[2], double (*V)[2], double (*A)[2],
                          const mm_series *path, double size, mm_error *err);
+
+/* kin-rotation-plane: an arm turning about the pivot O at the angle th,
+ * the point x on it, its path (the series path, which sets the scene's
+ * size), v and a at the point (arrows on the scales of vmax, amax); nf
+ * frames over [0, t_show], frame(t) giving th, x, v, a.  MM_OK or
+ * MM_ENOMEM (err filled). */
+typedef struct mm_kin_arm_state {
+    double th;
+    mm_v2 x, v, a;
+} mm_kin_arm_state;
+
+int mm_kin_anim_arm(mm_result *res, int nf, double t_show, const mm_series *path, double vmax, double amax,
+                    void (*frame)(double t, mm_kin_arm_state *k, void *ctx), void *ctx, mm_error *err);
+
+/* kin-path-coordinates: a particle on its path (the series path) with its
+ * tangential and normal accelerations (arrows on the scale of amax) and
+ * its osculating circle (of radius rho and curvature k, capped at 3 sizes
+ * of the scene), frame f at k[f]: the particle at P, a_t = at, a_n = an
+ * (towards the centre), N the left normal.  MM_OK or MM_ENOMEM (err
+ * filled). */
+typedef struct mm_kin_osc_state {
+    double t;
+    mm_v2 P, at, an, N;
+    double k, rho;
+} mm_kin_osc_state;
+
+int mm_kin_anim_osculating(mm_result *res, int nf, const mm_kin_osc_state *k, const mm_series *path, double size,
+                           double amax, mm_error *err);
 
 #endif

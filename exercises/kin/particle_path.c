@@ -22,7 +22,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
 #include "mm_geom.h"
 #include "mm_kin.h"
@@ -66,28 +65,13 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the particle moving along its path with its velocity and acceleration"),
 };
 
-/* The work: every plotted point, animation frame and quadrature node costs
- * a Ridders derivative (21 evaluations of x and y), each sample of the
- * difference study 48 more; an evaluation costs about 9 ns a character
- * (4.4 us for 500 characters).  (points + 480) * (len(x) + len(y)) <= 8e5
- * keeps the worst request near 150 ms; with the default expressions every
- * points is allowed. */
-#define MAX_WORK 8e5
-
-static double work(const mm_value *in)
-{
-    return (in[P_POINTS].x + 480) * fmax((double)(strlen(in[P_X].text) + strlen(in[P_Y].text)), 32);
-}
-
+/* The work (mm_kin_curve_work): every plotted point, animation frame and
+ * quadrature node costs a Ridders derivative, each sample of the
+ * difference study 48 more: as many as 480 points besides the plotted. */
 static int check(const mm_value *in, mm_error *err)
 {
-    if (work(in) > MAX_WORK)
-        return mm_error_set(err, MM_ERANGE, "points",
-                            "points must be at most %.0f with these expressions of %zu characters (each point "
-                            "costs 21 evaluations of x and y, and a long expression costs more to evaluate); got %.0f",
-                            floor(MAX_WORK / fmax((double)(strlen(in[P_X].text) + strlen(in[P_Y].text)), 32) - 480),
-                            strlen(in[P_X].text) + strlen(in[P_Y].text), in[P_POINTS].x);
-    return mm_kin_check_window(in[P_T0].x, in[P_T1].x, in[P_T].x, err);
+    int rc = mm_kin_curve_work(in[P_X].text, in[P_Y].text, in[P_POINTS].x, 480, err);
+    return rc != MM_OK ? rc : mm_kin_check_window(in[P_T0].x, in[P_T1].x, in[P_T].x, err);
 }
 
 typedef struct fd_ctx {
