@@ -692,3 +692,48 @@ int mm_kin_anim_osculating(mm_result *res, int nf, const mm_kin_osc_state *k, co
     }
     return mm_kin_draw_finish(&d);
 }
+
+int mm_kin_anim_wheel(mm_result *res, int nf, double t_show, double R, double b, double vmax, double amax,
+                      void (*frame)(double t, mm_kin_wheel_state *k, void *ctx), void *ctx, mm_error *err)
+{
+    mm_kin_wheel_state k;
+    double x0 = INFINITY, x1 = -INFINITY;
+    for (int f = 0; f < nf; f++) {
+        frame(t_show * f / (nf - 1), &k, ctx);
+        x0 = fmin(x0, k.O.x - fmax(R, b)), x1 = fmax(x1, k.O.x + fmax(R, b));
+    }
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", fmax(x1 - x0, 2 * (R + b)));
+    mm_shape *gr = an ? mm_kin_shape(&d, "ground", MM_SHAPE_LINE, 0, 2) : NULL;
+    mm_shape *wh = mm_kin_circle(&d, "wheel", 1, R);
+    mm_shape *sp1 = mm_kin_shape(&d, "spoke", MM_SHAPE_LINE, 1, 2), *sp2 = mm_kin_shape(&d, "spoke 2", MM_SHAPE_LINE, 1, 2);
+    mm_shape *arm = mm_kin_shape(&d, "centre to P", MM_SHAPE_LINE, 1, 2);
+    mm_shape *ic = mm_kin_circle(&d, "contact point (instantaneous centre)", 1, 0.04 * R);
+    mm_shape *tr = mm_kin_shape(&d, "path of P", MM_SHAPE_PATH, 0, 121);
+    mm_shape *vv = mm_kin_arrow_shape(&d, "v_P", "m/s", vmax), *vt = mm_kin_arrow_shape(&d, "v_top", "m/s", vmax);
+    mm_shape *vo = mm_kin_arrow_shape(&d, "v_O", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a_P", "m/s^2", amax);
+    if (!gr || !wh || !sp1 || !sp2 || !arm || !ic || !tr || !vv || !vt || !vo || !aa)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    vt->scale = vo->scale = vv->scale;
+    gr->style = "ground";
+    mm_kin_pt(gr, 0, 0, x0, 0), mm_kin_pt(gr, 0, 1, x1, 0);
+    ic->style = "highlight";
+    for (int j = 0; j <= 120; j++) {
+        frame(t_show * j / 120, &k, ctx);
+        mm_kin_pt(tr, 0, j, k.P.x, k.P.y);
+    }
+    for (int f = 0; f < nf; f++) {
+        frame(mm_kin_frame_t(&d, f, 0, t_show), &k, ctx);
+        mm_kin_pt(wh, f, 0, k.O.x, k.O.y);
+        mm_v2 e = mm_v2_polar(R, -k.phi);                          /* the wheel turns clockwise */
+        mm_kin_pt(sp1, f, 0, k.O.x - e.x, k.O.y - e.y), mm_kin_pt(sp1, f, 1, k.O.x + e.x, k.O.y + e.y);
+        mm_kin_pt(sp2, f, 0, k.O.x + e.y, k.O.y - e.x), mm_kin_pt(sp2, f, 1, k.O.x - e.y, k.O.y + e.x);
+        mm_kin_pt(arm, f, 0, k.O.x, k.O.y), mm_kin_pt(arm, f, 1, k.P.x, k.P.y);
+        mm_kin_pt(ic, f, 0, k.O.x, 0);
+        mm_kin_arrow(vv, f, k.P.x, k.P.y, k.v.x, k.v.y);
+        mm_kin_arrow(aa, f, k.P.x, k.P.y, k.a.x, k.a.y);
+        mm_kin_arrow(vo, f, k.O.x, k.O.y, k.w * R, 0);
+        mm_kin_arrow(vt, f, k.O.x, 2 * R, 2 * k.w * R, 0);
+    }
+    return mm_kin_draw_finish(&d);
+}

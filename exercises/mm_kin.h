@@ -332,4 +332,19 @@ typedef struct mm_kin_osc_state {
 int mm_kin_anim_osculating(mm_result *res, int nf, const mm_kin_osc_state *k, const mm_series *path, double size,
                            double amax, mm_error *err);
 
+/* kin-rolling-wheel: a wheel of radius R rolling on the ground (two
+ * spokes show its turn, clockwise for phi > 0), the line from its centre
+ * O to the point P at distance b, the contact point (the instantaneous
+ * centre), P's path (121 points over [0, t_show]), and the arrows v_P,
+ * v_top, v_O (one scale, vmax) and a_P (amax); nf frames over [0,
+ * t_show], frame(t) giving phi, phi', O, P, v, a.  MM_OK or MM_ENOMEM (err
+ * filled). */
+typedef struct mm_kin_wheel_state {
+    double phi, w;
+    mm_v2 O, P, v, a;
+} mm_kin_wheel_state;
+
+int mm_kin_anim_wheel(mm_result *res, int nf, double t_show, double R, double b, double vmax, double amax,
+                      void (*frame)(double t, mm_kin_wheel_state *k, void *ctx), void *ctx, mm_error *err);
+
 #endif

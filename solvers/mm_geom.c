@@ -1,5 +1,6 @@
 /* mm_geom.c — planar and spatial geometry (see mm_geom.h). */
 #include "mm_geom.h"
+#include "mm_quad.h"
 
 #include <assert.h>
 #include <float.h>
@@ -415,4 +416,24 @@ void mm_geom_frame_mul(const double A[12], const double B[12], double C[12])
         T[4 * i + 3] += A[4 * i + 3];
     }
     memcpy(C, T, sizeof T);
+}
+
+/* ---- added for the kinematics chapter ------------------------------------------------ */
+
+double mm_geom_trochoid_arch(double R, double b, int split)
+{
+    const double *x5 = mm_quad_gl5_node, *w5 = mm_quad_gl5_weight;
+    enum { LEVELS = 48 };
+    double sum = 0;
+    for (int j = 0; j <= LEVELS; j++) {
+        double hi = ldexp(M_PI, -j), lo = j < LEVELS ? 0.5 * hi : 0;
+        for (int p = 0; p < split; p++) {
+            double a = lo + (hi - lo) * p / split, c = lo + (hi - lo) * (p + 1) / split, hw = 0.5 * (c - a);
+            for (int k = 0; k < 5; k++) {
+                double sn = sin(0.5 * (a + hw * (1 + x5[k])));
+                sum += w5[k] * hw * sqrt((R - b) * (R - b) + 4 * R * b * sn * sn);
+            }
+        }
+    }
+    return 2 * sum;
 }

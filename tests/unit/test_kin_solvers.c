@@ -2,12 +2,14 @@
  * shared solver modules (each in a block headed "added for the kinematics
  * chapter"), against closed forms, identities and second methods:
  *   - mm_quad: the 5-point Gauss-Legendre nodes and weights;
- *   - mm_elliptic: E(k), the complete integral of the second kind. */
+ *   - mm_elliptic: E(k), the complete integral of the second kind;
+ *   - mm_geom: the length of a trochoid's arch. */
 #include "mm_test.h"
 
 #include <float.h>
 
 #include "mm_elliptic.h"
+#include "mm_geom.h"
 #include "mm_quad.h"
 
 #define PI 3.14159265358979323846
@@ -95,6 +97,26 @@ static void e_should_match_its_integral_by_gauss_kronrod(void **state)
     }
 }
 
+/* ---- mm_geom_trochoid_arch ------------------------------------------------------------ */
+
+static void trochoid_arch_should_match_its_closed_forms(void **state)
+{
+    (void)state;
+    /* the cycloid (b = R): 8 R, though |dP/dphi| has a corner at phi = 0 */
+    check_rel(mm_geom_trochoid_arch(0.5, 0.5, 2), 4, 16 * EPS, "cycloid: 8 R");
+    /* b = 0: the centre's straight path over a turn, 2 pi R */
+    check_rel(mm_geom_trochoid_arch(0.3, 0, 1), 2 * PI * 0.3, 16 * EPS, "b = 0: 2 pi R");
+    /* curtate, prolate, and b a hair from R: 4 (R + b) E(k) by the AGM;
+     * |Q(2n) - Q(n)| with rounding bounds the error */
+    static const double bs[] = {0.1, 0.45, 0.4999, 0.5001, 0.9, 3};
+    for (unsigned i = 0; i < sizeof bs / sizeof bs[0]; i++) {
+        double R = 0.5, b = bs[i], k = 2 * sqrt(R * b) / (R + b), L = 4 * (R + b) * mm_elliptic_E(k);
+        double q1 = mm_geom_trochoid_arch(R, b, 1), q2 = mm_geom_trochoid_arch(R, b, 2);
+        check_abs(q2, L, fabs(q2 - q1) + 64 * EPS * L, "arch vs 4 (R + b) E(k)");
+        assert_true(fabs(q2 - L) < 1e-12 * L);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -103,6 +125,7 @@ int main(void)
         cmocka_unit_test(e_should_meet_its_limits_and_the_singular_value),
         cmocka_unit_test(e_should_satisfy_legendres_relation),
         cmocka_unit_test(e_should_match_its_integral_by_gauss_kronrod),
+        cmocka_unit_test(trochoid_arch_should_match_its_closed_forms),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
