@@ -25,6 +25,7 @@
 #include <string.h>
 
 #include "mm_kin.h"
+#include "mm_linkage.h"
 #include "mm_mech.h"
 
 enum { P_R, P_D, P_H, P_W, P_TH, P_POINTS };
@@ -69,70 +70,8 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("crank, slotted lever and ram over a turn, with the ram's velocity"),
 };
 
-typedef struct qr {
-    double r, d, H;
-} qr;
-
-/* eq. (2) and its derivatives by th2 */
-typedef struct qr_pos {
-    double t4, t4p, t4pp, X, Xp, Xpp;
-} qr_pos;
-
-static qr_pos closed(const qr *m, double th)
-{
-    qr_pos p;
-    double c = cos(th), s = sin(th), N = m->r * c, D = m->d + m->r * s, q = N * N + D * D;
-    p.t4 = atan2(D, N);
-    p.t4p = m->r * (m->r + m->d * s) / q;                               /* d/dth2 of atan2(D, N) */
-    double qp = 2 * m->d * m->r * c;                                      /* dq/dth2 */
-    p.t4pp = (m->r * m->d * c * q - m->r * (m->r + m->d * s) * qp) / (q * q);
-    p.X = m->H * N / D;
-    p.Xp = -m->H * m->r * (m->d * s + m->r) / (D * D);
-    p.Xpp = -m->H * m->r * c * (m->d * D - 2 * m->r * (m->d * s + m->r)) / (D * D * D);
-    return p;
-}
-
-/* eq. (1) for mm_mech: q = (th4, s, X, s2), t = th2 */
-static int phi_fn(const double *q, double t, double *F, void *ctx)
-{
-    const qr *m = ctx;
-    double c4 = cos(q[0]), s4 = sin(q[0]);
-    F[0] = q[1] * c4 - m->r * cos(t);
-    F[1] = q[1] * s4 - m->d - m->r * sin(t);
-    F[2] = q[3] * c4 - q[2];
-    F[3] = q[3] * s4 - m->H;
-    return 0;
-}
-
-static int jac_fn(const double *q, double t, double *J, void *ctx)
-{
-    (void)t, (void)ctx;
-    double c4 = cos(q[0]), s4 = sin(q[0]);
-    double Jv[16] = {-q[1] * s4, c4, 0, 0, q[1] * c4, s4, 0, 0, -q[3] * s4, 0, -1, c4, q[3] * c4, 0, 0, s4};
-    memcpy(J, Jv, sizeof Jv);
-    return 0;
-}
-
-static int nu_fn(const double *q, double t, double *nu, void *ctx)
-{
-    (void)q;
-    const qr *m = ctx;
-    nu[0] = -m->r * sin(t), nu[1] = m->r * cos(t), nu[2] = nu[3] = 0;
-    return 0;
-}
-
-static int gamma_fn(const double *q, const double *qd, double t, double *g, void *ctx)
-{
-    const qr *m = ctx;
-    double c4 = cos(q[0]), s4 = sin(q[0]), w = qd[0];
-    g[0] = 2 * qd[1] * s4 * w + q[1] * c4 * w * w - m->r * cos(t);
-    g[1] = -2 * qd[1] * c4 * w + q[1] * s4 * w * w - m->r * sin(t);
-    g[2] = 2 * qd[3] * s4 * w + q[3] * c4 * w * w;
-    g[3] = -2 * qd[3] * c4 * w + q[3] * s4 * w * w;
-    return 0;
-}
-
-static const unsigned char is_length[4] = {0, 1, 1, 1};
+typedef mm_quick_return qr;
+typedef mm_qr_pos qr_pos;
 
 static int check(const mm_value *in, mm_error *err)
 {
@@ -145,13 +84,6 @@ static int check(const mm_value *in, mm_error *err)
         return mm_error_set(err, MM_ERANGE, "H", "the ram's line must pass above the crank circle, H > d + r = %g m; "
                             "got %g m", d + r, H);
     return MM_OK;
-}
-
-static void start(const qr *m, double th, double *q)
-{
-    qr_pos p = closed(m, th);
-    q[0] = p.t4 + 0.01, q[1] = hypot(m->r * cos(th), m->d + m->r * sin(th)) * 1.01;   /* a rough guess */
-    q[2] = p.X * 0.99, q[3] = m->H / sin(p.t4) * 1.01;
 }
 
 typedef struct fd_ctx {
@@ -180,8 +112,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* the lever is drawn long enough to reach the ram at its dead centres */
     const double L = 1.15 * m.H * m.d / sqrt((m.d - m.r) * (m.d + m.r));
     const int n = (int)in[P_POINTS].x;
-    mm_mech_problem prob = {.n = 4, .m = 4, .phi = phi_fn, .jac = jac_fn, .nu = nu_fn, .gamma = gamma_fn,
-                            .is_length = is_length, .params = &m};
+    mm_mech_problem prob;
+    mm_linkage_qr_problem(&m, &prob);
     mm_mech_options opt;
     mm_mech_options_init(&opt);
     opt.length = m.H, opt.phi_scale = m.H + m.d + m.r + L;
@@ -192,7 +124,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     const double al = asin(m.r / m.d), root = sqrt((m.d - m.r) * (m.d + m.r));
 
     /* ---- at theta2: the closed form printed, Newton and the solves checked ---- */
-    qr_pos c = closed(&m, th);
+    qr_pos c = mm_linkage_qr_closed(&m, th);
     mm_res_scalar(res, O_TH4, c.t4);
     mm_res_scalar(res, O_W4, w * c.t4p);
     mm_res_scalar(res, O_A4, w * w * c.t4pp);
@@ -200,7 +132,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_V, w * c.Xp);
     mm_res_scalar(res, O_A, w * w * c.Xpp);
     double q[4], qd[4], qdd[4];
-    start(&m, th, q);
+    mm_linkage_qr_guess(&m, th, q);
     mm_mech_info info;
     if ((rc = mm_mech_position(&prob, &opt, wk, th, q, &info, err)) != MM_OK ||
         (rc = mm_mech_velocity(&prob, &opt, wk, th, q, qd, NULL, err)) != MM_OK ||
@@ -237,13 +169,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         goto out;
     }
     mm_kin_grid(0, 2 * M_PI, n, sx->x);
-    start(&m, 0, Q);
+    mm_linkage_qr_guess(&m, 0, Q);
     mm_mech_sweep s = {.nt = n, .t = sx->x, .q = Q, .qd = QD, .qdd = QDD, .watch = 2};
     if ((rc = mm_mech_sweep_solve(&prob, &opt, wk, &s, err)) != MM_OK)
         goto out;
     double worst = -1, wv = 0, wr = 0, wt = 1;
     for (int i = 0; i < n; i++) {
-        qr_pos ci = closed(&m, sx->x[i]);
+        qr_pos ci = mm_linkage_qr_closed(&m, sx->x[i]);
         sv->x[i] = sa->x[i] = st->x[i] = sx->x[i];
         sx->y[i] = Q[4 * i + 2], sv->y[i] = w * QD[4 * i + 2], sa->y[i] = w * w * QDD[4 * i + 2];
         st->y[i] = Q[4 * i];
