@@ -1,7 +1,7 @@
-/* mm_kin_linkage.c — what kin-four-bar and kin-slider-crank share beyond
- * their closed forms (solvers/mm_linkage.c): a sweep of the four-bar over
- * a grid from the angle asked, the positions a difference study needs, and
- * the two animations.
+/* mm_kin_linkage.c — what the chapter's linkages need beyond their closed
+ * forms (solvers/mm_linkage.c): a sweep of the four-bar over a grid from
+ * the angle asked, the positions a difference study needs, and the
+ * animations of the four-bar, the slider-crank and the quick return.
  */
 #include <float.h>
 #include <math.h>
@@ -228,5 +228,48 @@ int mm_kin_sc_animate(const mm_slider_crank *m, double omega, int partial, doubl
         mm_kin_arrow(aa, f, x, m->e - 0.3 * bw, omega * omega * qdd[2 * f + 1], 0);
     }
     mm_kin_pt(mid, 0, NF, mid->x[0], mid->y[0]);          /* close the path */
+    return mm_kin_draw_finish(&d);
+}
+
+/* ---- the quick return: the animation ---- */
+
+int mm_kin_qr_animate(const mm_quick_return *m, double omega, double L, double stroke, const mm_mech_problem *prob,
+                      const mm_mech_options *opt, mm_mech_work *w, const double *q0, mm_result *res, mm_error *err)
+{
+    enum { NF = 72 };
+    double t[NF], qa[4 * NF], qva[4 * NF], vmax = 0;
+    for (int f = 0; f < NF; f++)
+        t[f] = 2 * M_PI * f / NF;
+    memcpy(qa, q0, 4 * sizeof *qa);
+    mm_mech_sweep sa2 = {.nt = NF, .t = t, .q = qa, .qd = qva, .watch = -1};
+    int rc = mm_mech_sweep_solve(prob, opt, w, &sa2, err);
+    if (rc != MM_OK)
+        return rc;
+    for (int f = 0; f < NF; f++)
+        vmax = fmax(vmax, fabs(omega * qva[4 * f + 2]));
+    mm_kin_draw d;
+    double xr = stroke / 2;
+    mm_anim *an = mm_kin_draw_start(&d, res, NF, "crank angle", "rad", fmax(L, 2 * xr) + 0.2 * m->H);
+    mm_shape *p4 = an ? mm_kin_pivot(&d, "O4", 0, 0) : NULL, *p2 = mm_kin_pivot(&d, "O2", 0, m->d);
+    mm_shape *guide = mm_kin_shape(&d, "ram guide", MM_SHAPE_LINE, 0, 2);
+    mm_shape *crank = mm_kin_shape(&d, "crank", MM_SHAPE_LINE, 1, 2);
+    mm_shape *lever = mm_kin_shape(&d, "lever", MM_SHAPE_LINE, 1, 2);
+    mm_shape *blk = mm_kin_shape(&d, "slider block", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *ram = mm_kin_shape(&d, "ram", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *va = mm_kin_arrow_shape(&d, "v_ram", "m/s", vmax);
+    if (!p4 || !p2 || !guide || !crank || !lever || !blk || !ram || !va)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    guide->style = "ground";
+    double bh = 0.06 * m->H;
+    mm_kin_pt(guide, 0, 0, -xr - 0.6 * m->H, m->H + bh), mm_kin_pt(guide, 0, 1, xr + 0.6 * m->H, m->H + bh);
+    for (int f = 0; f < NF; f++) {
+        an->t[f] = t[f];
+        double *qf = qa + 4 * f, Ax = m->r * cos(t[f]), Ay = m->d + m->r * sin(t[f]);
+        mm_kin_pt(crank, f, 0, 0, m->d), mm_kin_pt(crank, f, 1, Ax, Ay);
+        mm_kin_pt(lever, f, 0, 0, 0), mm_kin_pt(lever, f, 1, L * cos(qf[0]), L * sin(qf[0]));
+        mm_kin_block(blk, f, Ax, Ay, 0.08 * m->H, 0.04 * m->H, qf[0]);
+        mm_kin_block(ram, f, qf[2], m->H, 0.5 * m->H, bh, 0);
+        mm_kin_arrow(va, f, qf[2], m->H + 2 * bh, omega * qva[4 * f + 2], 0);
+    }
     return mm_kin_draw_finish(&d);
 }

@@ -1,6 +1,7 @@
-/* mm_kin_linkage.h — sweeps, difference samples and animations shared by
- * kin-four-bar and kin-slider-crank (their closed forms are in
- * solvers/mm_linkage.h).  Results go into the answer's arena. */
+/* mm_kin_linkage.h — sweeps, difference samples and animations of the
+ * chapter's linkages: kin-four-bar, kin-slider-crank, kin-quick-return
+ * (their closed forms are in solvers/mm_linkage.h).  Results go into the
+ * answer's arena. */
 #ifndef MM_KIN_LINKAGE_H
 #define MM_KIN_LINKAGE_H
 
@@ -51,5 +52,12 @@ int mm_kin_fb_animate(const mm_kin_fb_run *r, const mm_fourbar_class *k, int sid
 int mm_kin_sc_animate(const mm_slider_crank *m, double omega, int partial, double lo, double hi,
                       const mm_mech_problem *prob, const mm_mech_options *opt, mm_mech_work *w, mm_result *res,
                       mm_error *err);
+
+/* kin-quick-return over a turn of the crank (72 frames) from the assembly
+ * q0 (the solved positions at theta2 = 0): the pivots O4, O2, the ram's
+ * guide, the crank, the lever drawn to length L, the block in its slot,
+ * the ram and its velocity at crank speed omega; stroke the ram's */
+int mm_kin_qr_animate(const mm_quick_return *m, double omega, double L, double stroke, const mm_mech_problem *prob,
+                      const mm_mech_options *opt, mm_mech_work *w, const double *q0, mm_result *res, mm_error *err);
 
 #endif

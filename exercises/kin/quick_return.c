@@ -25,6 +25,7 @@
 #include <string.h>
 
 #include "mm_kin.h"
+#include "mm_kin_linkage.h"
 #include "mm_linkage.h"
 #include "mm_mech.h"
 
@@ -228,48 +229,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             goto out;
     }
 
-    /* ---- the animation ---- */
-    {
-        enum { NF = 72 };
-        double t[NF], qa[4 * NF], qva[4 * NF], vmax = 0;
-        for (int f = 0; f < NF; f++)
-            t[f] = 2 * M_PI * f / NF;
-        memcpy(qa, Q, 4 * sizeof *qa);
-        mm_mech_sweep sa2 = {.nt = NF, .t = t, .q = qa, .qd = qva, .watch = -1};
-        if ((rc = mm_mech_sweep_solve(&prob, &opt, wk, &sa2, err)) != MM_OK)
-            goto out;
-        for (int f = 0; f < NF; f++)
-            vmax = fmax(vmax, fabs(w * qva[4 * f + 2]));
-        mm_kin_draw d;
-        double xr = stroke / 2;
-        mm_anim *an = mm_kin_draw_start(&d, res, NF, "crank angle", "rad", fmax(L, 2 * xr) + 0.2 * m.H);
-        mm_shape *p4 = an ? mm_kin_pivot(&d, "O4", 0, 0) : NULL, *p2 = mm_kin_pivot(&d, "O2", 0, m.d);
-        mm_shape *guide = mm_kin_shape(&d, "ram guide", MM_SHAPE_LINE, 0, 2);
-        mm_shape *crank = mm_kin_shape(&d, "crank", MM_SHAPE_LINE, 1, 2);
-        mm_shape *lever = mm_kin_shape(&d, "lever", MM_SHAPE_LINE, 1, 2);
-        mm_shape *blk = mm_kin_shape(&d, "slider block", MM_SHAPE_POLYGON, 1, 4);
-        mm_shape *ram = mm_kin_shape(&d, "ram", MM_SHAPE_POLYGON, 1, 4);
-        mm_shape *va = mm_kin_arrow_shape(&d, "v_ram", "m/s", vmax);
-        if (!p4 || !p2 || !guide || !crank || !lever || !blk || !ram || !va) {
-            rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
-            goto out;
-        }
-        guide->style = "ground";
-        double bh = 0.06 * m.H;
-        mm_kin_pt(guide, 0, 0, -xr - 0.6 * m.H, m.H + bh), mm_kin_pt(guide, 0, 1, xr + 0.6 * m.H, m.H + bh);
-        for (int f = 0; f < NF; f++) {
-            an->t[f] = t[f];
-            double *qf = qa + 4 * f, Ax = m.r * cos(t[f]), Ay = m.d + m.r * sin(t[f]);
-            mm_kin_pt(crank, f, 0, 0, m.d), mm_kin_pt(crank, f, 1, Ax, Ay);
-            mm_kin_pt(lever, f, 0, 0, 0), mm_kin_pt(lever, f, 1, L * cos(qf[0]), L * sin(qf[0]));
-            mm_kin_block(blk, f, Ax, Ay, 0.08 * m.H, 0.04 * m.H, qf[0]);
-            mm_kin_block(ram, f, qf[2], m.H, 0.5 * m.H, bh, 0);
-            mm_kin_arrow(va, f, qf[2], m.H + 2 * bh, w * qva[4 * f + 2], 0);
-        }
-        mm_kin_draw_finish(&d);
-    }
     mm_res_method(res, "Newton-Raphson on the loop closure, Jacobian solves for velocity and acceleration", 0);
     mm_res_method_stat(res, "error_estimate", s.err_est);
+    rc = mm_kin_qr_animate(&m, w, L, stroke, &prob, &opt, wk, Q, res, err);
 out:
     mm_mech_work_free(wk);
     return rc;
