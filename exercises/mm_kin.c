@@ -408,9 +408,14 @@ int mm_kin_samples_init(mm_kin_samples *s, mm_result *res, int n, int k, mm_erro
     return MM_OK;
 }
 
+int mm_kin_sampled(const mm_kin_samples *s, int i)
+{
+    return i % 8 == 0 || i == s->n - 1;
+}
+
 int mm_kin_sample(mm_kin_samples *s, int i, double t, const double *d1, const double *d2)
 {
-    if (i % 8 != 0 && i != s->n - 1)
+    if (!mm_kin_sampled(s, i))
         return 0;
     int j = i % 8 == 0 ? i / 8 : s->ns - 1;
     s->t[j] = t;
@@ -734,6 +739,65 @@ int mm_kin_anim_wheel(mm_result *res, int nf, double t_show, double R, double b,
         mm_kin_arrow(aa, f, k.P.x, k.P.y, k.a.x, k.a.y);
         mm_kin_arrow(vo, f, k.O.x, k.O.y, k.w * R, 0);
         mm_kin_arrow(vt, f, k.O.x, 2 * R, 2 * k.w * R, 0);
+    }
+    return mm_kin_draw_finish(&d);
+}
+
+int mm_kin_anim_box(mm_result *res, int nf, double t_show, double wmax, mm_v3 p,
+                    void (*frame)(double t, double R[9], mm_v3 *w, void *ctx), void *ctx, mm_error *err)
+{
+    static const double hx = 0.3, hy = 0.2, hz = 0.1;
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 1.6);
+    mm_shape *bot = an ? mm_kin_shape(&d, "box bottom", MM_SHAPE_POLYGON, 1, 4) : NULL;
+    mm_shape *top = mm_kin_shape(&d, "box top", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *edge[4], *ba[3], *sx[3];
+    static const char *const en[4] = {"edge 1", "edge 2", "edge 3", "edge 4"};
+    static const char *const bn[3] = {"body x", "body y", "body z"}, *const sn[3] = {"space x", "space y", "space z"};
+    for (int k = 0; k < 4; k++)
+        edge[k] = mm_kin_shape(&d, en[k], MM_SHAPE_LINE, 1, 2);
+    for (int k = 0; k < 3; k++) {
+        ba[k] = mm_kin_shape(&d, bn[k], MM_SHAPE_ARROW, 1, 2);
+        sx[k] = mm_kin_shape(&d, sn[k], MM_SHAPE_LINE, 0, 2);
+    }
+    mm_shape *wa = mm_kin_arrow_shape(&d, "omega", "rad/s", wmax);
+    mm_shape *pth = mm_kin_shape(&d, "path of the point", MM_SHAPE_PATH, 0, 121);
+    if (!bot || !top || !edge[3] || !ba[2] || !sx[2] || !wa || !pth)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    for (int k = 0; k < 3; k++) {
+        mm_v3 e = {k == 0, k == 1, k == 2};
+        double x, y;
+        mm_kin_iso(mm_v3_scale(e, 0.7), &x, &y);
+        sx[k]->style = "ground";
+        mm_kin_pt(sx[k], 0, 0, 0, 0), mm_kin_pt(sx[k], 0, 1, x, y);
+        ba[k]->unit = "m", ba[k]->scale = 1;
+    }
+    double R[9], x, y;
+    mm_v3 w;
+    for (int k = 0; k <= 120; k++) {
+        frame(t_show * k / 120, R, &w, ctx);
+        mm_kin_iso(mm_geom_m3_apply(R, p), &x, &y);
+        mm_kin_pt(pth, 0, k, x, y);
+    }
+    for (int f = 0; f < nf; f++) {
+        frame(mm_kin_frame_t(&d, f, 0, t_show), R, &w, ctx);
+        double X[8], Y[8];
+        for (int c = 0; c < 8; c++) {                        /* corners: bottom 0-3, top 4-7 */
+            int q = c & 3;
+            mm_v3 corner = {(q == 1 || q == 2) ? hx : -hx, q >= 2 ? hy : -hy, c >= 4 ? hz : -hz};
+            mm_kin_iso(mm_geom_m3_apply(R, corner), &X[c], &Y[c]);
+        }
+        for (int c = 0; c < 4; c++) {
+            mm_kin_pt(bot, f, c, X[c], Y[c]);
+            mm_kin_pt(top, f, c, X[c + 4], Y[c + 4]);
+            mm_kin_pt(edge[c], f, 0, X[c], Y[c]), mm_kin_pt(edge[c], f, 1, X[c + 4], Y[c + 4]);
+        }
+        for (int k = 0; k < 3; k++) {
+            mm_kin_iso(mm_v3_make(0.5 * R[k], 0.5 * R[3 + k], 0.5 * R[6 + k]), &x, &y);   /* column k of R */
+            mm_kin_arrow(ba[k], f, 0, 0, x, y);
+        }
+        mm_kin_iso(w, &x, &y);
+        mm_kin_arrow(wa, f, 0, 0, x, y);
     }
     return mm_kin_draw_finish(&d);
 }

@@ -210,6 +210,9 @@ typedef struct mm_kin_samples {
  * (err filled). */
 int mm_kin_samples_init(mm_kin_samples *s, mm_result *res, int n, int k, mm_error *err);
 
+/* Whether point i (of the n) is a sample. */
+int mm_kin_sampled(const mm_kin_samples *s, int i);
+
 /* Point i (of the n) at t, its derivatives d1 and d2 (k each; d2 may be
  * NULL): kept when it is a sample.  Returns 1 when kept, else 0. */
 int mm_kin_sample(mm_kin_samples *s, int i, double t, const double *d1, const double *d2);
@@ -346,5 +349,14 @@ typedef struct mm_kin_wheel_state {
 
 int mm_kin_anim_wheel(mm_result *res, int nf, double t_show, double R, double b, double vmax, double amax,
                       void (*frame)(double t, mm_kin_wheel_state *k, void *ctx), void *ctx, mm_error *err);
+
+/* kin-space-motion: a box 0.6 x 0.4 x 0.2 m turning about its centre,
+ * seen isometrically: its bottom, top and edges, its body axes, the space
+ * axes, omega (on the scale of wmax) and the path of its point p (body
+ * coordinates; 121 points over [0, t_show]); nf frames over [0, t_show],
+ * frame(t) giving the rotation matrix R (body to space) and omega.  MM_OK
+ * or MM_ENOMEM (err filled). */
+int mm_kin_anim_box(mm_result *res, int nf, double t_show, double wmax, mm_v3 p,
+                    void (*frame)(double t, double R[9], mm_v3 *w, void *ctx), void *ctx, mm_error *err);
 
 #endif

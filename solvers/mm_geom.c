@@ -420,6 +420,24 @@ void mm_geom_frame_mul(const double A[12], const double B[12], double C[12])
 
 /* ---- added for the kinematics chapter ------------------------------------------------ */
 
+void mm_geom_euler_quat_matrix(const int seq[3], const double ang[3], double R[9])
+{
+    double q[4] = {1, 0, 0, 0};
+    for (int s = 0; s < 3; s++) {
+        double e[4] = {cos(0.5 * ang[s]), 0, 0, 0}, r[4];
+        e[1 + seq[s]] = sin(0.5 * ang[s]);
+        r[0] = q[0] * e[0] - q[1] * e[1] - q[2] * e[2] - q[3] * e[3];
+        r[1] = q[0] * e[1] + q[1] * e[0] + q[2] * e[3] - q[3] * e[2];
+        r[2] = q[0] * e[2] - q[1] * e[3] + q[2] * e[0] + q[3] * e[1];
+        r[3] = q[0] * e[3] + q[1] * e[2] - q[2] * e[1] + q[3] * e[0];
+        memcpy(q, r, sizeof q);
+    }
+    double w = q[0], x = q[1], y = q[2], z = q[3];
+    R[0] = 1 - 2 * (y * y + z * z), R[1] = 2 * (x * y - w * z), R[2] = 2 * (x * z + w * y);
+    R[3] = 2 * (x * y + w * z), R[4] = 1 - 2 * (x * x + z * z), R[5] = 2 * (y * z - w * x);
+    R[6] = 2 * (x * z - w * y), R[7] = 2 * (y * z + w * x), R[8] = 1 - 2 * (x * x + y * y);
+}
+
 double mm_geom_trochoid_arch(double R, double b, int split)
 {
     const double *x5 = mm_quad_gl5_node, *w5 = mm_quad_gl5_weight;

@@ -231,6 +231,13 @@ void mm_geom_frame_mul(const double A[12], const double B[12], double C[12]);
 
 /* ---- added for the kinematics chapter ------------------------------------------------ */
 
+/* The rotation matrix of the Euler angles ang about the axes seq (as
+ * mm_geom_euler_matrix) built the other way: the product of the three
+ * unit quaternions q_i(a) q_j(b) q_k(c), q_i(a) = (cos a/2, sin a/2 e_i),
+ * turned into a matrix.  An independent construction to check
+ * mm_geom_euler_matrix against.  Cannot fail. */
+void mm_geom_euler_quat_matrix(const int seq[3], const double ang[3], double R[9]);
+
 /* The length of one arch of the trochoid traced by a point at distance
  * b >= 0 from the centre of a circle of radius R > 0 rolling on a line:
  * |dP/dphi| = sqrt((R - b)^2 + 4 R b sin^2(phi/2)) integrated over a

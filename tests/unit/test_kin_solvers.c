@@ -3,7 +3,8 @@
  * chapter"), against closed forms, identities and second methods:
  *   - mm_quad: the 5-point Gauss-Legendre nodes and weights;
  *   - mm_elliptic: E(k), the complete integral of the second kind;
- *   - mm_geom: the length of a trochoid's arch. */
+ *   - mm_geom: the length of a trochoid's arch, the rotation matrix of
+ *     Euler angles by quaternions. */
 #include "mm_test.h"
 
 #include <float.h>
@@ -117,6 +118,38 @@ static void trochoid_arch_should_match_its_closed_forms(void **state)
     }
 }
 
+/* ---- mm_geom_euler_quat_matrix -------------------------------------------------------- */
+
+static void euler_by_quaternions_should_match_the_matrix_product(void **state)
+{
+    (void)state;
+    /* the twelve sequences: R_i(a) R_j(b) R_k(c) by matrices (mm_geom_euler_matrix) */
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < 3; k++) {
+                const int seq[3] = {i, j, k};
+                if (!mm_geom_euler_check(seq))
+                    continue;
+                const double ang[3] = {0.5 + i, -0.8 + 0.3 * j, 2.9 - k};
+                double R[9], Q[9], Rt[9], I[9];
+                mm_geom_euler_matrix(seq, ang, R);
+                mm_geom_euler_quat_matrix(seq, ang, Q);
+                for (int e = 0; e < 9; e++)
+                    check_abs(Q[e], R[e], 8 * EPS, "quaternions vs matrices, entry by entry");
+                mm_geom_m3_transpose(Q, Rt);
+                mm_geom_m3_mul(Rt, Q, I);
+                for (int e = 0; e < 9; e++)
+                    check_abs(I[e], e % 4 == 0, 8 * EPS, "Q^T Q = I");
+            }
+    /* a quarter turn about z: x to y */
+    const int zyx[3] = {2, 1, 0};
+    const double quarter[3] = {PI / 2, 0, 0};
+    double Q[9];
+    mm_geom_euler_quat_matrix(zyx, quarter, Q);
+    check_abs(Q[3], 1, 2 * EPS, "R e_x = e_y: entry (2, 1)");
+    check_abs(Q[1], -1, 2 * EPS, "R e_y = -e_x: entry (1, 2)");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -126,6 +159,7 @@ int main(void)
         cmocka_unit_test(e_should_satisfy_legendres_relation),
         cmocka_unit_test(e_should_match_its_integral_by_gauss_kronrod),
         cmocka_unit_test(trochoid_arch_should_match_its_closed_forms),
+        cmocka_unit_test(euler_by_quaternions_should_match_the_matrix_product),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
