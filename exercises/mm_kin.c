@@ -801,3 +801,40 @@ int mm_kin_anim_box(mm_result *res, int nf, double t_show, double wmax, mm_v3 p,
     }
     return mm_kin_draw_finish(&d);
 }
+
+int mm_kin_anim_cam(mm_result *res, const mm_cam *m, double omega, double vmax, double size, mm_error *err)
+{
+    enum { NF = 36, NP = 48 };
+    mm_kin_draw dr;
+    mm_anim *an = mm_kin_draw_start(&dr, res, NF, "cam angle", "rad", 2 * size + 2 * m->Rr);
+    mm_shape *cm = an ? mm_kin_shape(&dr, "cam", MM_SHAPE_POLYGON, 1, NP) : NULL;
+    mm_shape *pv = mm_kin_pivot(&dr, "cam centre", 0, 0);
+    mm_shape *rl = mm_kin_circle(&dr, "roller", 1, m->Rr > 0 ? m->Rr : 0.01 * size);
+    mm_shape *st = mm_kin_shape(&dr, "follower", MM_SHAPE_LINE, 1, 2);
+    mm_shape *gd = mm_kin_shape(&dr, "guide", MM_SHAPE_LINE, 0, 2);
+    mm_shape *va = mm_kin_arrow_shape(&dr, "v", "m/s", vmax);
+    if (!cm || !pv || !rl || !st || !gd || !va)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_v2 K[NP];
+    for (int j = 0; j < NP; j++) {
+        mm_v2 P;
+        mm_cam_points(m, 2 * M_PI * j / NP, &P, &K[j]);
+    }
+    gd->style = "ground";
+    mm_kin_pt(gd, 0, 0, m->e, m->s0 + m->h + 0.4 * size), mm_kin_pt(gd, 0, 1, m->e, m->s0 + m->h + 0.9 * size);
+    for (int f = 0; f < NF; f++) {
+        double thf = 2 * M_PI * f / NF, df[4];
+        int sf;
+        an->t[f] = thf;
+        mm_cam_motion(m, thf, df, &sf);
+        for (int j = 0; j < NP; j++) {
+            mm_v2 q = mm_v2_rotate(K[j], thf);            /* the cam frame turned by thf */
+            mm_kin_pt(cm, f, j, q.x, q.y);
+        }
+        double yc = m->s0 + df[0];
+        mm_kin_pt(rl, f, 0, m->e, yc);
+        mm_kin_pt(st, f, 0, m->e, yc), mm_kin_pt(st, f, 1, m->e, m->s0 + m->h + 0.9 * size);
+        mm_kin_arrow(va, f, m->e + 1.5 * rl->radius, yc, 0, omega * df[1]);
+    }
+    return mm_kin_draw_finish(&dr);
+}

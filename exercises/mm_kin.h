@@ -14,6 +14,7 @@
 #ifndef MM_KIN_H
 #define MM_KIN_H
 
+#include "mm_cam.h"
 #include "mm_exercise.h"
 #include "mm_geom.h"
 
@@ -358,5 +359,12 @@ int mm_kin_anim_wheel(mm_result *res, int nf, double t_show, double R, double b,
  * or MM_ENOMEM (err filled). */
 int mm_kin_anim_box(mm_result *res, int nf, double t_show, double wmax, mm_v3 p,
                     void (*frame)(double t, double R[9], mm_v3 *w, void *ctx), void *ctx, mm_error *err);
+
+/* kin-cam-follower: the cam turning (36 frames a turn; its profile from
+ * 48 points of mm_cam_points), its centre, the roller (of radius Rr, or a
+ * small dot for a knife edge) on the follower's stem in its guide, and the
+ * follower's velocity at cam speed omega (on the scale of vmax); size the
+ * pitch curve's.  MM_OK or MM_ENOMEM (err filled). */
+int mm_kin_anim_cam(mm_result *res, const mm_cam *m, double omega, double vmax, double size, mm_error *err);
 
 #endif
