@@ -5,6 +5,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "mm_kin.h"
@@ -272,4 +273,41 @@ int mm_kin_qr_animate(const mm_quick_return *m, double omega, double L, double s
         mm_kin_arrow(va, f, qf[2], m->H + 2 * bh, omega * qva[4 * f + 2], 0);
     }
     return mm_kin_draw_finish(&d);
+}
+
+/* ---- a crank that cannot turn round ---- */
+
+void mm_kin_warn_reach(mm_result *res, const char *what, double lo, double hi, const double gaps[2])
+{
+    if (fabs(lo + 2 * M_PI - hi - gaps[1]) <= 1e-9)     /* one arc: the gap is the rest of the turn */
+        mm_res_warn(res, "%s and cannot close from %.4g to %.4g rad", what, hi, lo + 2 * M_PI);
+    else
+        mm_res_warn(res, "%s and cannot close from %.4g to %.4g nor from %.4g to %.4g rad; the arc beyond those "
+                         "gaps is another assembly, reached only by taking the linkage apart",
+                    what, hi, hi + gaps[1], lo - gaps[0], lo);
+}
+
+int mm_kin_toggle_checks(mm_result *res, const mm_mech_problem *prob, const mm_mech_options *opt, mm_mech_work *w,
+                         double lo, double hi, const double gaps[2], void (*assemble)(double t, double *q, void *ctx),
+                         void *ctx, const char *why, mm_error *err)
+{
+    for (int end = 0; end < 2; end++) {
+        enum { NT = 9 };
+        double t[NT], qq[2 * NT];
+        /* past the toggle, but never past the middle of the gap: beyond it
+         * the linkage closes again, and a sweep could step across */
+        double past = fmin(0.05, 0.5 * gaps[end]);
+        double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + past : lo - past;
+        for (int i = 0; i < NT; i++)
+            t[i] = from + (to - from) * i / (NT - 1);
+        assemble(t[0], qq, ctx);
+        mm_mech_sweep s = {.nt = NT, .t = t, .q = qq, .watch = -1, .tol_t = 1e-13};
+        int rc = mm_mech_sweep_solve(prob, opt, w, &s, err);
+        if (rc != MM_OK)
+            return rc;
+        char name[200];
+        snprintf(name, sizeof name, "%s toggle: where the sweep stops closing vs %s", end ? "second" : "first", why);
+        mm_res_check_abs(res, name, s.t_limit, end ? hi : lo, 1e-9);
+    }
+    return MM_OK;
 }

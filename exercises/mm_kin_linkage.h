@@ -53,6 +53,24 @@ int mm_kin_sc_animate(const mm_slider_crank *m, double omega, int partial, doubl
                       const mm_mech_problem *prob, const mm_mech_options *opt, mm_mech_work *w, mm_result *res,
                       mm_error *err);
 
+/* ---- a crank that cannot turn round ---- */
+
+/* The warning of a crank that reaches only [lo, hi], between two toggles:
+ * what (the sentence that says so, formatted) followed by the arcs it
+ * cannot close: the rest of the turn, or (two gaps, gaps[0] below lo and
+ * gaps[1] above hi) both and the arc beyond them, another assembly. */
+void mm_kin_warn_reach(mm_result *res, const char *what, double lo, double hi, const double gaps[2]);
+
+/* The sweep run past each toggle lo, hi stops where the closed form says:
+ * 9 frames from a tenth of the arc inside to 0.05 rad past it (never past
+ * the middle of the gap, where the linkage closes again and a sweep could
+ * step across), from the assembly assemble(t) gives; checks named
+ * "first/second toggle: where the sweep stops closing vs <why>".  MM_OK or
+ * the sweep's code. */
+int mm_kin_toggle_checks(mm_result *res, const mm_mech_problem *prob, const mm_mech_options *opt, mm_mech_work *w,
+                         double lo, double hi, const double gaps[2], void (*assemble)(double t, double *q, void *ctx),
+                         void *ctx, const char *why, mm_error *err);
+
 /* kin-quick-return over a turn of the crank (72 frames) from the assembly
  * q0 (the solved positions at theta2 = 0): the pivots O4, O2, the ram's
  * guide, the crank, the lever drawn to length L, the block in its slot,

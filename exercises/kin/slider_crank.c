@@ -21,6 +21,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "mm_geom.h"
@@ -154,6 +155,13 @@ static int newton_at(const sc *m, const mm_mech_problem *prob, mm_mech_options *
         t->cell[3 * i + 2] = rows[i][1];
     }
     return MM_OK;
+}
+
+/* the assembly at phi (the slider right of the pin), for mm_kin_toggle_checks */
+static void assemble(double phi, double *q, void *ctx)
+{
+    sc_pos c = mm_linkage_sc_closed(ctx, phi, 1);
+    q[0] = c.t, q[1] = c.x;
 }
 
 /* ---- the answer ------------------------------------------------------------------------------ */
@@ -352,35 +360,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     } else {
         mm_res_scalar(res, O_TOG1, lo);
         mm_res_scalar(res, O_TOG2, hi);
-        if (fabs(lo + 2 * M_PI - hi - gaps[1]) <= 1e-9)      /* one arc: the gap is the rest of the turn */
-            mm_res_warn(res, "the rod is too short for the offset: the crank cannot turn a full revolution; it "
-                             "reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide) "
-                             "and cannot close from %.4g to %.4g rad", lo, hi, hi, lo + 2 * M_PI);
-        else
-            mm_res_warn(res, "the rod is too short for the offset: the crank cannot turn a full revolution; it "
-                             "reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide) "
-                             "and cannot close from %.4g to %.4g nor from %.4g to %.4g rad; the arc beyond those "
-                             "gaps is another assembly, reached only by taking the linkage apart",
-                        lo, hi, hi, hi + gaps[1], lo - gaps[0], lo);
+        char what[200];
+        snprintf(what, sizeof what, "the rod is too short for the offset: the crank cannot turn a full revolution; "
+                 "it reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide)", lo, hi);
+        mm_kin_warn_reach(res, what, lo, hi, gaps);
         /* the sweep run past each end stops where the closed form says */
-        for (int end = 0; end < 2; end++) {
-            enum { NT = 9 };
-            double t[NT], qq[2 * NT];
-            /* past the toggle, but never past the middle of the gap: beyond it
-             * the linkage closes again, and a sweep could step across */
-            double past = fmin(0.05, 0.5 * gaps[end]);
-            double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + past : lo - past;
-            for (int i = 0; i < NT; i++)
-                t[i] = from + (to - from) * i / (NT - 1);
-            c = mm_linkage_sc_closed(&m, t[0], 1);
-            qq[0] = c.t, qq[1] = c.x;
-            mm_mech_sweep e = {.nt = NT, .t = t, .q = qq, .watch = -1, .tol_t = 1e-13};
-            if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &e, err)) != MM_OK)
-                goto out;
-            mm_res_check_abs(res, end ? "second toggle: where the sweep stops closing vs sin(phi) = (e - l)/r or (e + l)/r"
-                                      : "first toggle: where the sweep stops closing vs sin(phi) = (e - l)/r or (e + l)/r",
-                             e.t_limit, end ? hi : lo, 1e-9);
-        }
+        if ((rc = mm_kin_toggle_checks(res, &prob, &opt, w, lo, hi, gaps, assemble, &m,
+                                       "sin(phi) = (e - l)/r or (e + l)/r", err)) != MM_OK)
+            goto out;
     }
     mm_res_method(res, "Newton-Raphson on the loop closure, Jacobian solves for velocity and acceleration", 0);
     mm_res_method_stat(res, "sweep_steps", s.steps);
