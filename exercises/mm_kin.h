@@ -1,9 +1,13 @@
 /* mm_kin.h — what the kinematics chapter's exercises share that is not
  * numerics: drawing links, pivots, sliders and vector arrows into an
- * answer's animation, and the finite-difference study that checks an
- * analytic velocity or acceleration against differences of the positions
- * (the error against the step, its observed order, the value within the
- * difference's own error bound).
+ * answer's animation; the finite-difference study that checks an analytic
+ * velocity or acceleration against differences of the positions (the
+ * error against the step, its observed order, the value within the
+ * difference's own error bound) and its samples; a plane curve typed as
+ * two expressions; the radius of curvature measured from three points;
+ * and the drawing of each particle and rigid-body exercise's animation,
+ * fed the state of a frame by the exercise (mm_kin_linkage.h draws the
+ * linkages).
  *
  *   mm_kin_draw d;
  *   if (!mm_kin_draw_start(&d, res, nf, "crank angle", "rad", size)) return MM_ENOMEM;

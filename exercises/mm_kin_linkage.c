@@ -311,3 +311,63 @@ int mm_kin_toggle_checks(mm_result *res, const mm_mech_problem *prob, const mm_m
     }
     return MM_OK;
 }
+
+/* ---- a linkage in natural coordinates: the animation ---- */
+
+int mm_kin_anim_linkage(mm_result *res, const mm_nat_model *m, int ntri, const int (*tri)[3], int nf, const double *t,
+                        const double *Q, int solved, mm_error *err)
+{
+    const mm_nat_linkage *s = m->s;
+    const int n = 2 * (s->npts - s->nfix);
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, s->amp > 0 ? "t" : "input angle", s->amp > 0 ? "s" : "rad", 1.3);
+    if (!an)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    /* binary links as lines, ternary ones as triangles, pivots, the slide */
+    for (int k2 = 0; k2 < s->nfix; k2++)
+        if (!mm_kin_pivot(&d, "ground pivot", s->p[k2][0], s->p[k2][1]))
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_shape *lk[MM_NAT_MAXC] = {0}, *tr[2] = {0}, *blk = NULL;
+    for (int c = 0; c < s->ncon; c++) {
+        int in_tri = 0;
+        for (int r = 0; r < ntri; r++) {
+            int hits = 0;
+            for (int v = 0; v < 3; v++)
+                hits += tri[r][v] == s->con[c][0] || tri[r][v] == s->con[c][1];
+            in_tri |= hits == 2;
+        }
+        if (!in_tri && !(lk[c] = mm_kin_shape(&d, "link", MM_SHAPE_LINE, 1, 2)))
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    }
+    for (int r = 0; r < ntri; r++)
+        if (!(tr[r] = mm_kin_shape(&d, "ternary link", MM_SHAPE_POLYGON, 1, 3)))
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    if (s->slide >= 0) {
+        mm_shape *g = mm_kin_shape(&d, "slide", MM_SHAPE_LINE, 0, 2);
+        blk = mm_kin_shape(&d, "slider", MM_SHAPE_POLYGON, 1, 4);
+        if (!g || !blk)
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        g->style = "ground";
+        mm_kin_pt(g, 0, 0, -0.2, m->y_slide), mm_kin_pt(g, 0, 1, 0.7, m->y_slide);
+    }
+    for (int f = 0; f < nf; f++) {
+        const double *qf = Q + (f < solved ? f : solved - 1) * n;
+        double x, y;
+        an->t[f] = t[f];
+        for (int c = 0; c < s->ncon; c++)
+            for (int e = 0; lk[c] && e < 2; e++) {
+                mm_nat_point(m, qf, s->con[c][e], &x, &y);
+                mm_kin_pt(lk[c], f, e, x, y);
+            }
+        for (int r = 0; r < ntri; r++)
+            for (int v = 0; v < 3; v++) {
+                mm_nat_point(m, qf, tri[r][v], &x, &y);
+                mm_kin_pt(tr[r], f, v, x, y);
+            }
+        if (blk) {
+            mm_nat_point(m, qf, s->slide, &x, &y);
+            mm_kin_block(blk, f, x, y, 0.08, 0.05, 0);
+        }
+    }
+    return mm_kin_draw_finish(&d);
+}

@@ -8,6 +8,7 @@
 #include "mm_exercise.h"
 #include "mm_linkage.h"
 #include "mm_mech.h"
+#include "mm_natural.h"
 
 /* the positions a difference study asks for (mm_kin_fd_study's pos
  * callback): Newton from the Taylor guess of sample i at t[i] + h */
@@ -70,6 +71,15 @@ void mm_kin_warn_reach(mm_result *res, const char *what, double lo, double hi, c
 int mm_kin_toggle_checks(mm_result *res, const mm_mech_problem *prob, const mm_mech_options *opt, mm_mech_work *w,
                          double lo, double hi, const double gaps[2], void (*assemble)(double t, double *q, void *ctx),
                          void *ctx, const char *why, mm_error *err);
+
+/* kin-mobility: a linkage in natural coordinates (m) over nf frames, frame
+ * f at t[f] (the drivers' time when they rock, their angle when they turn
+ * round) in the positions Q + f n (n = 2 (npts - nfix); the last solved
+ * one from frame `solved` on): pivots at its fixed points, bars as lines
+ * (those of a ternary link, tri[0..ntri-1], drawn as its triangle), the
+ * slide and the slider. */
+int mm_kin_anim_linkage(mm_result *res, const mm_nat_model *m, int ntri, const int (*tri)[3], int nf, const double *t,
+                        const double *Q, int solved, mm_error *err);
 
 /* kin-quick-return over a turn of the crank (72 frames) from the assembly
  * q0 (the solved positions at theta2 = 0): the pivots O4, O2, the ram's

@@ -269,7 +269,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * rounding of the largest term plus the rounding of the position
      * (residual eps (r + |e| + l) over the Jacobian's l cos theta3 = R)
      * carried through d/dR of eqs. (3); the frame nearest its bound */
-    double rx = -1, rv = -1, ra = -1, cx[3] = {0}, cv[3] = {0}, ca[3] = {0};
+    mm_kin_worst wx = {-1, 0, 0, 0}, wv = wx, wa = wx;
     for (int i = 0; i < n; i++) {
         double ph = sx->x[i];
         c = mm_linkage_sc_closed(&m, ph, 1);
@@ -286,18 +286,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double tv = 16 * DBL_EPSILON * (m.r + fabs(sg * s1) / R) + dR * fabs(sg * s1) / (R * R);
         double Ta = m.r + (s1 * s1 + fabs(sg * s2)) / R + sg * sg * s1 * s1 / (R * R * R);
         double ta = 16 * DBL_EPSILON * Ta + dR * ((s1 * s1 + fabs(sg * s2)) / (R * R) + 3 * sg * sg * s1 * s1 / (R * R * R * R));
-        double ex = fabs(Q[2 * i + 1] - c.x), ev = fabs(QD[2 * i + 1] - c.x1), ea = fabs(QDD[2 * i + 1] - c.x2);
-        if (ex / tx > rx)
-            rx = ex / tx, cx[0] = Q[2 * i + 1], cx[1] = c.x, cx[2] = tx;
-        if (ev / tv > rv)
-            rv = ev / tv, cv[0] = QD[2 * i + 1], cv[1] = c.x1, cv[2] = tv;
-        if (ea / ta > ra)
-            ra = ea / ta, ca[0] = QDD[2 * i + 1], ca[1] = c.x2, ca[2] = ta;
+        mm_kin_track(&wx, Q[2 * i + 1], c.x, tx);
+        mm_kin_track(&wv, QD[2 * i + 1], c.x1, tv);
+        mm_kin_track(&wa, QDD[2 * i + 1], c.x2, ta);
     }
-    mm_res_check_abs(res, "sweep: x vs closed form (2), the frame nearest its bound (the branch kept)", cx[0],
-                     cx[1], cx[2]);
-    mm_res_check_abs(res, "sweep: dx/dphi vs closed form (3), the frame nearest its bound", cv[0], cv[1], cv[2]);
-    mm_res_check_abs(res, "sweep: d2x/dphi2 vs closed form (3), the frame nearest its bound", ca[0], ca[1], ca[2]);
+    mm_res_check_abs(res, "sweep: x vs closed form (2), the frame nearest its bound (the branch kept)", wx.got, wx.ref,
+                     wx.tol);
+    mm_res_check_abs(res, "sweep: dx/dphi vs closed form (3), the frame nearest its bound", wv.got, wv.ref, wv.tol);
+    mm_res_check_abs(res, "sweep: d2x/dphi2 vs closed form (3), the frame nearest its bound", wa.got, wa.ref, wa.tol);
 
     /* the positions differenced: one sample in four, kept 4 h0 clear of
      * the toggles of a partial range (the steps must not leave it) */
