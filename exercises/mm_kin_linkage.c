@@ -371,3 +371,35 @@ int mm_kin_anim_linkage(mm_result *res, const mm_nat_model *m, int ntri, const i
     }
     return mm_kin_draw_finish(&d);
 }
+
+/* ---- the Bennett linkage: the animation ---- */
+
+int mm_kin_anim_bennett(mm_result *res, double a, double alpha, double beta, double *worst, mm_error *err)
+{
+    enum { NF = 72 };
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, NF, "input angle", "rad", 0.9);
+    mm_shape *loop = an ? mm_kin_shape(&d, "links", MM_SHAPE_POLYGON, 1, 4) : NULL, *ax[4];
+    static const char *const axn[4] = {"axis 1", "axis 2", "axis 3", "axis 4"};
+    for (int k = 0; k < 4; k++)
+        ax[k] = mm_kin_shape(&d, axn[k], MM_SHAPE_LINE, 1, 2);
+    if (!loop || !ax[3])
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    *worst = 0;
+    for (int f = 0; f < NF; f++) {
+        double th1 = 0.05 + (2 * M_PI - 0.1) * f / (NF - 1), g;   /* th1 = 0 folds the loop flat */
+        mm_v3 o[4], z[4];
+        an->t[f] = th1;
+        mm_linkage_bennett(a, alpha, beta, th1, o, z, &g);
+        *worst = fmax(*worst, g);
+        for (int k = 0; k < 4; k++) {
+            double x, y, x1, y1;
+            mm_kin_iso(o[k], &x, &y);
+            mm_kin_pt(loop, f, k, x, y);
+            mm_kin_iso(mm_v3_sub(o[k], mm_v3_scale(z[k], 0.12)), &x, &y);
+            mm_kin_iso(mm_v3_add(o[k], mm_v3_scale(z[k], 0.12)), &x1, &y1);
+            mm_kin_pt(ax[k], f, 0, x, y), mm_kin_pt(ax[k], f, 1, x1, y1);
+        }
+    }
+    return mm_kin_draw_finish(&d);
+}

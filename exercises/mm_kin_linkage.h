@@ -81,6 +81,12 @@ int mm_kin_toggle_checks(mm_result *res, const mm_mech_problem *prob, const mm_m
 int mm_kin_anim_linkage(mm_result *res, const mm_nat_model *m, int ntri, const int (*tri)[3], int nf, const double *t,
                         const double *Q, int solved, mm_error *err);
 
+/* kin-mobility's Bennett linkage (mm_linkage_bennett: a, alpha, beta)
+ * moved round its first joint (72 frames), seen isometrically: the loop of
+ * the joints' origins and their axes.  *worst receives the largest
+ * closing error max |T1 T2 T3 T4 - I| over the frames (for the check). */
+int mm_kin_anim_bennett(mm_result *res, double a, double alpha, double beta, double *worst, mm_error *err);
+
 /* kin-quick-return over a turn of the crank (72 frames) from the assembly
  * q0 (the solved positions at theta2 = 0): the pivots O4, O2, the ram's
  * guide, the crank, the lever drawn to length L, the block in its slot,

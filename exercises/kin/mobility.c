@@ -225,33 +225,12 @@ static int spatial_bennett(mm_result *res, mm_error *err)
     for (int k = 0; k < 4; k++)
         ss->x[k] = k + 1, ss->y[k] = fmax(sv[k], 1e-300);
     /* move it: th1 round the turn, th2 by Bennett's relation; the loop closes */
-    enum { NF = 72 };
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, NF, "input angle", "rad", 0.9);
-    mm_shape *loop = an ? mm_kin_shape(&d, "links", MM_SHAPE_POLYGON, 1, 4) : NULL, *ax[4];
-    static const char *const axn[4] = {"axis 1", "axis 2", "axis 3", "axis 4"};
-    for (int k = 0; k < 4; k++)
-        ax[k] = mm_kin_shape(&d, axn[k], MM_SHAPE_LINE, 1, 2);
-    if (!loop || !ax[3])
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    double worst = 0;
-    for (int f = 0; f < NF; f++) {
-        double th1 = 0.05 + (2 * M_PI - 0.1) * f / (NF - 1), g;   /* th1 = 0 folds the loop flat */
-        an->t[f] = th1;
-        mm_linkage_bennett(BA, BAL, BBE, th1, o, z, &g);
-        worst = fmax(worst, g);
-        for (int k = 0; k < 4; k++) {
-            double x, y, x1, y1;
-            mm_kin_iso(o[k], &x, &y);
-            mm_kin_pt(loop, f, k, x, y);
-            mm_kin_iso(mm_v3_sub(o[k], mm_v3_scale(z[k], 0.12)), &x, &y);
-            mm_kin_iso(mm_v3_add(o[k], mm_v3_scale(z[k], 0.12)), &x1, &y1);
-            mm_kin_pt(ax[k], f, 0, x, y), mm_kin_pt(ax[k], f, 1, x1, y1);
-        }
-    }
+    double worst;
+    if ((rc = mm_kin_anim_bennett(res, BA, BAL, BBE, &worst, err)) != MM_OK)
+        return rc;
     /* twelve products of four transforms of size ~1: a few dozen eps */
     mm_res_check_abs(res, "Bennett's loop closes on every frame: |T1 T2 T3 T4 - I|", worst, 0, 64 * DBL_EPSILON);
-    return mm_kin_draw_finish(&d);
+    return MM_OK;
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
