@@ -9,6 +9,7 @@
 #include "mm_exhelp.h"
 #include "mm_expr.h"
 #include "mm_geom.h"
+#include "mm_quad.h"
 
 /* ---- drawing ------------------------------------------------------------------------ */
 
@@ -288,6 +289,27 @@ int mm_kin_curve_at(mm_kin_curve *c, double t, double h0, double r[2], double d1
                             "defined there, or another time range", t, isfinite(q[0]) ? c->py : c->px,
                             isfinite(q[0]) ? q[1] : q[0]);
     }
+    return MM_OK;
+}
+
+int mm_kin_curve_integrals(mm_kin_curve *c, double a, double b, int np, double h0, double iv[2], double ev[2],
+                           double ia[2], double ea[2], mm_error *err)
+{
+    const double *x5 = mm_quad_gl5_node, *w5 = mm_quad_gl5_weight;
+    for (int i = 0; i < 2; i++)
+        iv[i] = ev[i] = ia[i] = ea[i] = 0;
+    double hw = 0.5 * (b - a) / np;
+    for (int p = 0; p < np; p++)
+        for (int j = 0; j < 5; j++) {
+            double r[2], d1[2], e1[2], d2[2], e2[2], t = a + hw * (2 * p + 1 + x5[j]);
+            int rc = mm_kin_curve_at(c, t, h0, r, d1, e1, d2, e2, err);
+            if (rc != MM_OK)
+                return rc;
+            for (int i = 0; i < 2; i++) {
+                iv[i] += w5[j] * hw * d1[i], ev[i] += w5[j] * hw * e1[i];
+                ia[i] += w5[j] * hw * d2[i], ea[i] += w5[j] * hw * e2[i];
+            }
+        }
     return MM_OK;
 }
 

@@ -171,6 +171,14 @@ int mm_kin_curve_eval(double t, double *out, void *ctx);
 int mm_kin_curve_at(mm_kin_curve *c, double t, double h0, double r[2], double d1[2], double e1[2], double d2[2],
                     double e2[2], mm_error *err);
 
+/* The integrals over [a, b] of r' and r'' of the curve by composite
+ * 5-point Gauss-Legendre on np panels (Ridders' derivatives at the nodes,
+ * h0 their first step), and the sums of the Ridders error estimates they
+ * met (weighted like the values): iv, ev for r'; ia, ea for r''.  MM_OK or
+ * mm_kin_curve_at's code. */
+int mm_kin_curve_integrals(mm_kin_curve *c, double a, double b, int np, double h0, double iv[2], double ev[2],
+                           double ia[2], double ea[2], mm_error *err);
+
 /* ---- small things ------------------------------------------------------------------------- */
 
 /* n points from a to b as short decimals: a + i * step with step = (b - a) / (n - 1)

@@ -25,7 +25,6 @@
 
 #include "mm_geom.h"
 #include "mm_kin.h"
-#include "mm_quad.h"
 
 enum { P_X, P_Y, P_T0, P_T1, P_T, P_DT, P_POINTS };
 
@@ -91,30 +90,6 @@ static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error 
     return MM_OK;
 }
 
-/* the integrals over [a, b] of v and a by composite 5-point
- * Gauss-Legendre on np panels, and the sums of the Ridders error estimates
- * they met (weighted like the values): iv, ev for v; ia, ea for a */
-static int gauss(mm_kin_curve *c, double a, double b, int np, double h0, double iv[2], double ev[2],
-                 double ia[2], double ea[2], mm_error *err)
-{
-    const double *x5 = mm_quad_gl5_node, *w5 = mm_quad_gl5_weight;
-    for (int i = 0; i < 2; i++)
-        iv[i] = ev[i] = ia[i] = ea[i] = 0;
-    double hw = 0.5 * (b - a) / np;
-    for (int p = 0; p < np; p++)
-        for (int j = 0; j < 5; j++) {
-            double r[2], d1[2], e1[2], d2[2], e2[2], t = a + hw * (2 * p + 1 + x5[j]);
-            int rc = mm_kin_curve_at(c, t, h0, r, d1, e1, d2, e2, err);
-            if (rc != MM_OK)
-                return rc;
-            for (int i = 0; i < 2; i++) {
-                iv[i] += w5[j] * hw * d1[i], ev[i] += w5[j] * hw * e1[i];
-                ia[i] += w5[j] * hw * d2[i], ea[i] += w5[j] * hw * e2[i];
-            }
-        }
-    return MM_OK;
-}
-
 static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *err)
 {
     const double t0 = in[P_T0].x, t1 = in[P_T1].x, t = in[P_T].x, dt = in[P_DT].x;
@@ -146,8 +121,8 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
     /* 8 and 16 panels of Gauss-Legendre (10th order): |Q16 - Q8| bounds Q8's
      * error and far more than Q16's */
     double q8[2][2], q16[2][2], b8[2][2], b16[2][2];
-    if ((rc = gauss(c, t, t2, 8, h0, q8[0], b8[0], q8[1], b8[1], err)) != MM_OK ||
-        (rc = gauss(c, t, t2, 16, h0, q16[0], b16[0], q16[1], b16[1], err)) != MM_OK)
+    if ((rc = mm_kin_curve_integrals(c, t, t2, 8, h0, q8[0], b8[0], q8[1], b8[1], err)) != MM_OK ||
+        (rc = mm_kin_curve_integrals(c, t, t2, 16, h0, q16[0], b16[0], q16[1], b16[1], err)) != MM_OK)
         return rc;
     for (int k = 1; k <= 2; k++) {
         for (int i = 0; i < 2; i++) {
