@@ -420,6 +420,14 @@ void mm_geom_frame_mul(const double A[12], const double B[12], double C[12])
 
 /* ---- added for the kinematics chapter ------------------------------------------------ */
 
+double mm_geom_m3_maxdiff(const double A[9], const double B[9])
+{
+    double d = 0;
+    for (int i = 0; i < 9; i++)
+        d = fmax(d, fabs(A[i] - B[i]));
+    return d;
+}
+
 void mm_geom_euler_quat_matrix(const int seq[3], const double ang[3], double R[9])
 {
     double q[4] = {1, 0, 0, 0};

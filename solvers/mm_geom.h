@@ -238,6 +238,10 @@ void mm_geom_frame_mul(const double A[12], const double B[12], double C[12]);
  * mm_geom_euler_matrix against.  Cannot fail. */
 void mm_geom_euler_quat_matrix(const int seq[3], const double ang[3], double R[9]);
 
+/* The largest entry of |A - B| (0 for equal matrices; NaN entries are
+ * skipped, as fmax does).  Cannot fail. */
+double mm_geom_m3_maxdiff(const double A[9], const double B[9]);
+
 /* The length of one arch of the trochoid traced by a point at distance
  * b >= 0 from the centre of a circle of radius R > 0 rolling on a line:
  * |dP/dphi| = sqrt((R - b)^2 + 4 R b sin^2(phi/2)) integrated over a

@@ -168,9 +168,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_check_abs(res, "R^T R = I: worst entry error", mm_geom_rot_orth_error(R, &det_err), 0, 16 * DBL_EPSILON);
     mm_res_check_abs(res, "det R = 1", det_err, 0, 16 * DBL_EPSILON);
     mm_geom_euler_quat_matrix(m.seq, m.a0, Rq);
-    double dq = 0;
-    for (int i = 0; i < 9; i++)
-        dq = fmax(dq, fabs(R[i] - Rq[i]));
+    double dq = mm_geom_m3_maxdiff(R, Rq);
     mm_res_check_abs(res, "R from three rotation matrices vs from three quaternions: worst entry", dq, 0,
                      (16 + 4 * big) * DBL_EPSILON);
     mm_v3 w, wd, axis;
@@ -203,18 +201,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     /* R rebuilt from the angles read back: rounding grows like cond near the lock */
     mm_geom_euler_matrix(m.seq, back, Rb);
-    double db = 0;
-    for (int i = 0; i < 9; i++)
-        db = fmax(db, fabs(R[i] - Rb[i]));
+    double db = mm_geom_m3_maxdiff(R, Rb);
     mm_res_check_abs(res, lock ? "R rebuilt from the angles read back (at the lock, with psi = 0)"
                                : "R rebuilt from the angles read back",
                      db, 0, lock ? 1e-7 : 32 * DBL_EPSILON * fmin(cond, 1e8));
     if (lock) {
         /* which sum survives: R is unchanged by phi + d, psi + d when it depends on phi - psi */
-        double sh[3] = {m.a0[0] + 0.1, m.a0[1], m.a0[2] + 0.1}, Rs[9], ds = 0;
+        double sh[3] = {m.a0[0] + 0.1, m.a0[1], m.a0[2] + 0.1}, Rs[9];
         mm_geom_euler_matrix(m.seq, sh, Rs);
-        for (int i = 0; i < 9; i++)
-            ds = fmax(ds, fabs(Rs[i] - R[i]));
+        double ds = mm_geom_m3_maxdiff(Rs, R);
         mm_res_warn(res, "gimbal lock: theta puts the first and third axes in line, so only %s is determined (psi "
                          "is read back as 0), det B = 0, and no angle rates give a turn about the axis square to both",
                     ds < 1e-6 ? "phi - psi" : "phi + psi");

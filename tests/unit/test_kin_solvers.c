@@ -4,7 +4,7 @@
  *   - mm_quad: the 5-point Gauss-Legendre nodes and weights;
  *   - mm_elliptic: E(k), the complete integral of the second kind;
  *   - mm_geom: the length of a trochoid's arch, the rotation matrix of
- *     Euler angles by quaternions. */
+ *     Euler angles by quaternions, the largest entry of a difference. */
 #include "mm_test.h"
 
 #include <float.h>
@@ -150,6 +150,15 @@ static void euler_by_quaternions_should_match_the_matrix_product(void **state)
     check_abs(Q[1], -1, 2 * EPS, "R e_y = -e_x: entry (1, 2)");
 }
 
+static void m3_maxdiff_should_give_the_largest_entry(void **state)
+{
+    (void)state;
+    const double A[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9}, B[9] = {1, 2, 3.5, 4, 5, 6, 7, 7, 9};
+    check_abs(mm_geom_m3_maxdiff(A, A), 0, 0, "equal matrices");
+    check_abs(mm_geom_m3_maxdiff(A, B), 1, 0, "entry (3, 2) differs by 1, (1, 3) by 0.5");
+    check_abs(mm_geom_m3_maxdiff(B, A), 1, 0, "symmetric");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -160,6 +169,7 @@ int main(void)
         cmocka_unit_test(e_should_match_its_integral_by_gauss_kronrod),
         cmocka_unit_test(trochoid_arch_should_match_its_closed_forms),
         cmocka_unit_test(euler_by_quaternions_should_match_the_matrix_product),
+        cmocka_unit_test(m3_maxdiff_should_give_the_largest_entry),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
