@@ -536,7 +536,8 @@ int mm_kin_anim_turntable(mm_result *res, int nf, double t_show, double size, do
     mm_shape *piv = mm_kin_pivot(&d, "O", 0, 0);
     mm_shape *tr = mm_kin_path(&d, "absolute path", path);
     mm_shape *vv = mm_kin_arrow_shape(&d, "v", "m/s", vmax), *vr = mm_kin_arrow_shape(&d, "v_rel", "m/s", vmax);
-    mm_shape *ac = mm_kin_arrow_shape(&d, "a_coriolis", "m/s^2", amax), *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
+    mm_shape *ac = mm_kin_arrow_shape(&d, "a_coriolis", "m/s^2", amax);
+    mm_shape *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
     if (!disc || !sl || !blk || !piv || !tr || !vv || !vr || !ac || !aa)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     vr->scale = vv->scale;                                 /* velocities on one scale, accelerations on another */
@@ -733,7 +734,8 @@ int mm_kin_anim_wheel(mm_result *res, int nf, double t_show, double R, double b,
     mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", fmax(x1 - x0, 2 * (R + b)));
     mm_shape *gr = an ? mm_kin_shape(&d, "ground", MM_SHAPE_LINE, 0, 2) : NULL;
     mm_shape *wh = mm_kin_circle(&d, "wheel", 1, R);
-    mm_shape *sp1 = mm_kin_shape(&d, "spoke", MM_SHAPE_LINE, 1, 2), *sp2 = mm_kin_shape(&d, "spoke 2", MM_SHAPE_LINE, 1, 2);
+    mm_shape *sp1 = mm_kin_shape(&d, "spoke", MM_SHAPE_LINE, 1, 2);
+    mm_shape *sp2 = mm_kin_shape(&d, "spoke 2", MM_SHAPE_LINE, 1, 2);
     mm_shape *arm = mm_kin_shape(&d, "centre to P", MM_SHAPE_LINE, 1, 2);
     mm_shape *ic = mm_kin_circle(&d, "contact point (instantaneous centre)", 1, 0.04 * R);
     mm_shape *tr = mm_kin_shape(&d, "path of P", MM_SHAPE_PATH, 0, 121);

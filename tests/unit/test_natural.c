@@ -14,7 +14,8 @@
 #define EPS DBL_EPSILON
 
 /* kin-mobility's four-bar: O2 (0, 0), O4 (0.6, 0), A, B; bars O2A, AB, O4B; the crank O2A driven */
-static const mm_nat_linkage four_bar = {2, 4, {{0, 0}, {0.6, 0}, {0.10806046117362795, 0.16829419696157930}, {0.55, 0.4}},
+static const mm_nat_linkage four_bar = {2, 4,
+                                        {{0, 0}, {0.6, 0}, {0.10806046117362795, 0.16829419696157930}, {0.55, 0.4}},
                                         3, {{0, 2}, {2, 3}, {1, 3}}, -1, 1, {{0, 2}}, 0};
 /* its slider-crank: O, A, B with B on y = 0 */
 static const mm_nat_linkage slider = {1, 3, {{0, 0}, {0.054030230586813977, 0.084147098480789651}, {0.45, 0}},
