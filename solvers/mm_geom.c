@@ -1,6 +1,5 @@
 /* mm_geom.c — planar and spatial geometry (see mm_geom.h). */
 #include "mm_geom.h"
-#include "mm_quad.h"
 
 #include <assert.h>
 #include <float.h>
@@ -419,6 +418,8 @@ void mm_geom_frame_mul(const double A[12], const double B[12], double C[12])
 }
 
 /* ---- added for the kinematics chapter ------------------------------------------------ */
+
+#include "mm_quad.h"          /* mm_geom_trochoid_arch's Gauss-Legendre table */
 
 double mm_geom_m3_maxdiff(const double A[9], const double B[9])
 {
