@@ -1,10 +1,11 @@
-/* mm_kin_linkage.c — what kin-four-bar and kin-slider-crank share beyond
- * their closed forms (solvers/mm_linkage.c): a sweep of the four-bar over
- * a grid from the angle asked, the positions a difference study needs, and
- * the two animations.
+/* mm_kin_linkage.c — what the chapter's linkages need beyond their closed
+ * forms (solvers/mm_linkage.c): a sweep of the four-bar over a grid from
+ * the angle asked, the positions a difference study needs, and the
+ * animations of the four-bar, the slider-crank and the quick return.
  */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "mm_kin.h"
@@ -228,5 +229,177 @@ int mm_kin_sc_animate(const mm_slider_crank *m, double omega, int partial, doubl
         mm_kin_arrow(aa, f, x, m->e - 0.3 * bw, omega * omega * qdd[2 * f + 1], 0);
     }
     mm_kin_pt(mid, 0, NF, mid->x[0], mid->y[0]);          /* close the path */
+    return mm_kin_draw_finish(&d);
+}
+
+/* ---- the quick return: the animation ---- */
+
+int mm_kin_qr_animate(const mm_quick_return *m, double omega, double L, double stroke, const mm_mech_problem *prob,
+                      const mm_mech_options *opt, mm_mech_work *w, const double *q0, mm_result *res, mm_error *err)
+{
+    enum { NF = 72 };
+    double t[NF], qa[4 * NF], qva[4 * NF], vmax = 0;
+    for (int f = 0; f < NF; f++)
+        t[f] = 2 * M_PI * f / NF;
+    memcpy(qa, q0, 4 * sizeof *qa);
+    mm_mech_sweep sa2 = {.nt = NF, .t = t, .q = qa, .qd = qva, .watch = -1};
+    int rc = mm_mech_sweep_solve(prob, opt, w, &sa2, err);
+    if (rc != MM_OK)
+        return rc;
+    for (int f = 0; f < NF; f++)
+        vmax = fmax(vmax, fabs(omega * qva[4 * f + 2]));
+    mm_kin_draw d;
+    double xr = stroke / 2;
+    mm_anim *an = mm_kin_draw_start(&d, res, NF, "crank angle", "rad", fmax(L, 2 * xr) + 0.2 * m->H);
+    mm_shape *p4 = an ? mm_kin_pivot(&d, "O4", 0, 0) : NULL, *p2 = mm_kin_pivot(&d, "O2", 0, m->d);
+    mm_shape *guide = mm_kin_shape(&d, "ram guide", MM_SHAPE_LINE, 0, 2);
+    mm_shape *crank = mm_kin_shape(&d, "crank", MM_SHAPE_LINE, 1, 2);
+    mm_shape *lever = mm_kin_shape(&d, "lever", MM_SHAPE_LINE, 1, 2);
+    mm_shape *blk = mm_kin_shape(&d, "slider block", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *ram = mm_kin_shape(&d, "ram", MM_SHAPE_POLYGON, 1, 4);
+    mm_shape *va = mm_kin_arrow_shape(&d, "v_ram", "m/s", vmax);
+    if (!p4 || !p2 || !guide || !crank || !lever || !blk || !ram || !va)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    guide->style = "ground";
+    double bh = 0.06 * m->H;
+    mm_kin_pt(guide, 0, 0, -xr - 0.6 * m->H, m->H + bh), mm_kin_pt(guide, 0, 1, xr + 0.6 * m->H, m->H + bh);
+    for (int f = 0; f < NF; f++) {
+        an->t[f] = t[f];
+        double *qf = qa + 4 * f, Ax = m->r * cos(t[f]), Ay = m->d + m->r * sin(t[f]);
+        mm_kin_pt(crank, f, 0, 0, m->d), mm_kin_pt(crank, f, 1, Ax, Ay);
+        mm_kin_pt(lever, f, 0, 0, 0), mm_kin_pt(lever, f, 1, L * cos(qf[0]), L * sin(qf[0]));
+        mm_kin_block(blk, f, Ax, Ay, 0.08 * m->H, 0.04 * m->H, qf[0]);
+        mm_kin_block(ram, f, qf[2], m->H, 0.5 * m->H, bh, 0);
+        mm_kin_arrow(va, f, qf[2], m->H + 2 * bh, omega * qva[4 * f + 2], 0);
+    }
+    return mm_kin_draw_finish(&d);
+}
+
+/* ---- a crank that cannot turn round ---- */
+
+void mm_kin_warn_reach(mm_result *res, const char *what, double lo, double hi, const double gaps[2])
+{
+    if (fabs(lo + 2 * M_PI - hi - gaps[1]) <= 1e-9)     /* one arc: the gap is the rest of the turn */
+        mm_res_warn(res, "%s and cannot close from %.4g to %.4g rad", what, hi, lo + 2 * M_PI);
+    else
+        mm_res_warn(res, "%s and cannot close from %.4g to %.4g nor from %.4g to %.4g rad; the arc beyond those "
+                         "gaps is another assembly, reached only by taking the linkage apart",
+                    what, hi, hi + gaps[1], lo - gaps[0], lo);
+}
+
+int mm_kin_toggle_checks(mm_result *res, const mm_mech_problem *prob, const mm_mech_options *opt, mm_mech_work *w,
+                         double lo, double hi, const double gaps[2], void (*assemble)(double t, double *q, void *ctx),
+                         void *ctx, const char *why, mm_error *err)
+{
+    for (int end = 0; end < 2; end++) {
+        enum { NT = 9 };
+        double t[NT], qq[2 * NT];
+        /* past the toggle, but never past the middle of the gap: beyond it
+         * the linkage closes again, and a sweep could step across */
+        double past = fmin(0.05, 0.5 * gaps[end]);
+        double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + past : lo - past;
+        for (int i = 0; i < NT; i++)
+            t[i] = from + (to - from) * i / (NT - 1);
+        assemble(t[0], qq, ctx);
+        mm_mech_sweep s = {.nt = NT, .t = t, .q = qq, .watch = -1, .tol_t = 1e-13};
+        int rc = mm_mech_sweep_solve(prob, opt, w, &s, err);
+        if (rc != MM_OK)
+            return rc;
+        char name[200];
+        snprintf(name, sizeof name, "%s toggle: where the sweep stops closing vs %s", end ? "second" : "first", why);
+        mm_res_check_abs(res, name, s.t_limit, end ? hi : lo, 1e-9);
+    }
+    return MM_OK;
+}
+
+/* ---- a linkage in natural coordinates: the animation ---- */
+
+int mm_kin_anim_linkage(mm_result *res, const mm_nat_model *m, int ntri, const int (*tri)[3], int nf, const double *t,
+                        const double *Q, int solved, mm_error *err)
+{
+    const mm_nat_linkage *s = m->s;
+    const int n = 2 * (s->npts - s->nfix);
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, nf, s->amp > 0 ? "t" : "input angle", s->amp > 0 ? "s" : "rad", 1.3);
+    if (!an)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    /* binary links as lines, ternary ones as triangles, pivots, the slide */
+    for (int k2 = 0; k2 < s->nfix; k2++)
+        if (!mm_kin_pivot(&d, "ground pivot", s->p[k2][0], s->p[k2][1]))
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_shape *lk[MM_NAT_MAXC] = {0}, *tr[2] = {0}, *blk = NULL;
+    for (int c = 0; c < s->ncon; c++) {
+        int in_tri = 0;
+        for (int r = 0; r < ntri; r++) {
+            int hits = 0;
+            for (int v = 0; v < 3; v++)
+                hits += tri[r][v] == s->con[c][0] || tri[r][v] == s->con[c][1];
+            in_tri |= hits == 2;
+        }
+        if (!in_tri && !(lk[c] = mm_kin_shape(&d, "link", MM_SHAPE_LINE, 1, 2)))
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    }
+    for (int r = 0; r < ntri; r++)
+        if (!(tr[r] = mm_kin_shape(&d, "ternary link", MM_SHAPE_POLYGON, 1, 3)))
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    if (s->slide >= 0) {
+        mm_shape *g = mm_kin_shape(&d, "slide", MM_SHAPE_LINE, 0, 2);
+        blk = mm_kin_shape(&d, "slider", MM_SHAPE_POLYGON, 1, 4);
+        if (!g || !blk)
+            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+        g->style = "ground";
+        mm_kin_pt(g, 0, 0, -0.2, m->y_slide), mm_kin_pt(g, 0, 1, 0.7, m->y_slide);
+    }
+    for (int f = 0; f < nf; f++) {
+        const double *qf = Q + (f < solved ? f : solved - 1) * n;
+        double x, y;
+        an->t[f] = t[f];
+        for (int c = 0; c < s->ncon; c++)
+            for (int e = 0; lk[c] && e < 2; e++) {
+                mm_nat_point(m, qf, s->con[c][e], &x, &y);
+                mm_kin_pt(lk[c], f, e, x, y);
+            }
+        for (int r = 0; r < ntri; r++)
+            for (int v = 0; v < 3; v++) {
+                mm_nat_point(m, qf, tri[r][v], &x, &y);
+                mm_kin_pt(tr[r], f, v, x, y);
+            }
+        if (blk) {
+            mm_nat_point(m, qf, s->slide, &x, &y);
+            mm_kin_block(blk, f, x, y, 0.08, 0.05, 0);
+        }
+    }
+    return mm_kin_draw_finish(&d);
+}
+
+/* ---- the Bennett linkage: the animation ---- */
+
+int mm_kin_anim_bennett(mm_result *res, double a, double alpha, double beta, double *worst, mm_error *err)
+{
+    enum { NF = 72 };
+    mm_kin_draw d;
+    mm_anim *an = mm_kin_draw_start(&d, res, NF, "input angle", "rad", 0.9);
+    mm_shape *loop = an ? mm_kin_shape(&d, "links", MM_SHAPE_POLYGON, 1, 4) : NULL, *ax[4];
+    static const char *const axn[4] = {"axis 1", "axis 2", "axis 3", "axis 4"};
+    for (int k = 0; k < 4; k++)
+        ax[k] = mm_kin_shape(&d, axn[k], MM_SHAPE_LINE, 1, 2);
+    if (!loop || !ax[3])
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    *worst = 0;
+    for (int f = 0; f < NF; f++) {
+        double th1 = 0.05 + (2 * M_PI - 0.1) * f / (NF - 1), g;   /* th1 = 0 folds the loop flat */
+        mm_v3 o[4], z[4];
+        an->t[f] = th1;
+        mm_linkage_bennett(a, alpha, beta, th1, o, z, &g);
+        *worst = fmax(*worst, g);
+        for (int k = 0; k < 4; k++) {
+            double x, y, x1, y1;
+            mm_kin_iso(o[k], &x, &y);
+            mm_kin_pt(loop, f, k, x, y);
+            mm_kin_iso(mm_v3_sub(o[k], mm_v3_scale(z[k], 0.12)), &x, &y);
+            mm_kin_iso(mm_v3_add(o[k], mm_v3_scale(z[k], 0.12)), &x1, &y1);
+            mm_kin_pt(ax[k], f, 0, x, y), mm_kin_pt(ax[k], f, 1, x1, y1);
+        }
+    }
     return mm_kin_draw_finish(&d);
 }

@@ -7,6 +7,7 @@
 #include <math.h>
 
 #include "mm_cam.h"
+#include "mm_opt.h"
 
 /* a rise of 1 over u in [0, 1]: the law and its derivatives by u, eq. (1) */
 void mm_cam_rise(int law, double u, double d[4])
@@ -104,4 +105,104 @@ double mm_cam_near_jump(const mm_cam *m, double th)
         if (fabs(th - b[k]) < fabs(th - best))
             best = b[k];
     return best;
+}
+
+/* ---- the extremes over a turn, added for kin-cam-follower ---- */
+
+/* the quantity whose extreme is sought: |pressure angle| (which = 0), or
+ * -rho of the pitch curve where it is convex (which = 1; -inf elsewhere) */
+typedef struct ext_ctx {
+    const mm_cam *m;
+    int which;
+} ext_ctx;
+
+static int ext_fn(double th, double *f, void *ctx)
+{
+    const ext_ctx *c = ctx;
+    double d[4];
+    int seg;
+    mm_cam_motion(c->m, th, d, &seg);
+    if (c->which == 0) {
+        *f = fabs(mm_cam_pressure(c->m, d));
+    } else {
+        double rp = mm_cam_rho_pitch(c->m, d);
+        *f = rp > 0 ? -rp : -INFINITY;
+    }
+    return 0;
+}
+
+/* The largest value over the turn: a scan of 3600 cam angles, a
+ * golden-section search between the best sample's neighbours, and both
+ * sides of every place where the law's s'' jumps (rho jumps there).  *at
+ * receives the place; *err an estimate: how much the value changes over
+ * the search's final bracket, at least 1e-12 of it. */
+static double extreme(const mm_cam *m, int which, double *at, double *err)
+{
+    enum { NS = 3600 };
+    ext_ctx c = {m, which};
+    double best = -INFINITY, f, step = 2 * M_PI / NS;
+    int kb = 0;
+    for (int k = 0; k < NS; k++) {
+        ext_fn(step * k, &f, &c);
+        if (f > best)
+            best = f, kb = k;
+    }
+    *at = step * kb, *err = 0;
+    if (!isfinite(best))
+        return best;
+    mm_opt_result r;
+    if (mm_opt_golden_max(ext_fn, &c, step * (kb - 1), step * (kb + 1), 1e-10, 200, &r, NULL) == MM_OK &&
+        r.fx > best) {
+        double fl, fr;
+        ext_fn(r.x - r.bracket, &fl, &c), ext_fn(r.x + r.bracket, &fr, &c);
+        best = r.fx, *at = r.x;
+        *err = fmax(fabs(r.fx - fl), fabs(r.fx - fr));
+    }
+    double jumps[7] = {0, m->br, m->br + m->bd, m->br + m->bd + m->bt, 2 * M_PI, 0.5 * m->br,
+                       m->br + m->bd + 0.5 * m->bt};
+    int near = 0;
+    for (int k = 0; k < 7 && which == 1; k++) {
+        near |= fabs(*at - jumps[k]) < 1e-6;
+        for (int side = -1; side <= 1; side += 2) {
+            ext_fn(jumps[k] + side * 1e-9, &f, &c);
+            if (f > best)
+                best = f, *at = jumps[k] + side * 1e-9, *err = 0, near = 1;
+        }
+    }
+    /* at a jump the extreme is a one-sided limit, reached to within the
+     * search's last step: 1e-6 of the value covers that */
+    *err = fmax(*err, (near ? 1e-6 : 1e-12) * fabs(best));
+    return best;
+}
+
+double mm_cam_pressure_max(const mm_cam *m, double *at, double *err)
+{
+    return extreme(m, 0, at, err);
+}
+
+double mm_cam_rho_pitch_min(const mm_cam *m, double *at, double *err)
+{
+    return -extreme(m, 1, at, err);
+}
+
+typedef struct peak_ctx {
+    const mm_cam *m;
+    int k, seg;            /* which derivative, and which segment's peak */
+} peak_ctx;
+
+static int peak_fn(double th, double *f, void *ctx)
+{
+    peak_ctx *c = ctx;
+    double d[4];
+    int seg;
+    mm_cam_motion(c->m, th, d, &seg);
+    *f = seg == c->seg ? fabs(d[c->k]) : 0;
+    return 0;
+}
+
+int mm_cam_peak_search(const mm_cam *m, int k, int seg, double a, double b, double tol, mm_opt_result *r,
+                       mm_error *err)
+{
+    peak_ctx pc = {m, k, seg};
+    return mm_opt_golden_max(peak_fn, &pc, a, b, tol, 200, r, err);
 }

@@ -146,3 +146,21 @@ void mm_elliptic_jacobi(double u, double k, double kc, double *sn, double *cn, d
     if (am)
         *am = ph;
 }
+
+/* ---- added for the kinematics chapter ------------------------------------------------ */
+
+double mm_elliptic_E(double k)
+{
+    double a = 1, g = sqrt((1 - k) * (1 + k)), c = k, sum = 0.5 * c * c, p2 = 0.5;
+    if (!(g > 0))
+        return 1;                  /* k = 1 (or rounds to it): the AGM of 1 and 0 never converges */
+    for (int i = 0; i < 40 && fabs(c) > DBL_EPSILON * a; i++) {
+        double an = 0.5 * (a + g);
+        c = 0.5 * (a - g);
+        g = sqrt(a * g);
+        a = an;
+        p2 *= 2;
+        sum += p2 * c * c;
+    }
+    return M_PI / (2 * a) * (1 - sum);
+}

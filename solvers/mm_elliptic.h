@@ -66,4 +66,15 @@ double mm_elliptic_F(double phi, double k, double kc);
 void mm_elliptic_jacobi(double u, double k, double kc, double *sn, double *cn, double *dn,
                         double *am);
 
+/* ---- added for the kinematics chapter ------------------------------------------------ */
+
+/* The complete elliptic integral of the second kind,
+ *     E(k) = integral_0^(pi/2) sqrt(1 - k^2 sin^2 t) dt,
+ * k in [0, 1], by the arithmetic-geometric mean (Abramowitz & Stegun
+ * 17.6.3-17.6.4): converges quadratically, to rounding in a handful of
+ * steps.  E(0) = pi/2, E(1) = 1 (also for a k that rounds to 1 from a kc
+ * far below eps, where E - 1 ~ kc^2 ln(4/kc) / 2 is below rounding).  The length of a trochoid's arch is
+ * 4 (R + b) E(2 sqrt(R b) / (R + b)).  Cannot fail. */
+double mm_elliptic_E(double k);
+
 #endif

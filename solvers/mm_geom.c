@@ -416,3 +416,51 @@ void mm_geom_frame_mul(const double A[12], const double B[12], double C[12])
     }
     memcpy(C, T, sizeof T);
 }
+
+/* ---- added for the kinematics chapter ------------------------------------------------ */
+
+#include "mm_quad.h"          /* mm_geom_trochoid_arch's Gauss-Legendre table */
+
+double mm_geom_m3_maxdiff(const double A[9], const double B[9])
+{
+    double d = 0;
+    for (int i = 0; i < 9; i++)
+        d = fmax(d, fabs(A[i] - B[i]));
+    return d;
+}
+
+void mm_geom_euler_quat_matrix(const int seq[3], const double ang[3], double R[9])
+{
+    double q[4] = {1, 0, 0, 0};
+    for (int s = 0; s < 3; s++) {
+        double e[4] = {cos(0.5 * ang[s]), 0, 0, 0}, r[4];
+        e[1 + seq[s]] = sin(0.5 * ang[s]);
+        r[0] = q[0] * e[0] - q[1] * e[1] - q[2] * e[2] - q[3] * e[3];
+        r[1] = q[0] * e[1] + q[1] * e[0] + q[2] * e[3] - q[3] * e[2];
+        r[2] = q[0] * e[2] - q[1] * e[3] + q[2] * e[0] + q[3] * e[1];
+        r[3] = q[0] * e[3] + q[1] * e[2] - q[2] * e[1] + q[3] * e[0];
+        memcpy(q, r, sizeof q);
+    }
+    double w = q[0], x = q[1], y = q[2], z = q[3];
+    R[0] = 1 - 2 * (y * y + z * z), R[1] = 2 * (x * y - w * z), R[2] = 2 * (x * z + w * y);
+    R[3] = 2 * (x * y + w * z), R[4] = 1 - 2 * (x * x + z * z), R[5] = 2 * (y * z - w * x);
+    R[6] = 2 * (x * z - w * y), R[7] = 2 * (y * z + w * x), R[8] = 1 - 2 * (x * x + y * y);
+}
+
+double mm_geom_trochoid_arch(double R, double b, int split)
+{
+    const double *x5 = mm_quad_gl5_node, *w5 = mm_quad_gl5_weight;
+    enum { LEVELS = 48 };
+    double sum = 0;
+    for (int j = 0; j <= LEVELS; j++) {
+        double hi = ldexp(M_PI, -j), lo = j < LEVELS ? 0.5 * hi : 0;
+        for (int p = 0; p < split; p++) {
+            double a = lo + (hi - lo) * p / split, c = lo + (hi - lo) * (p + 1) / split, hw = 0.5 * (c - a);
+            for (int k = 0; k < 5; k++) {
+                double sn = sin(0.5 * (a + hw * (1 + x5[k])));
+                sum += w5[k] * hw * sqrt((R - b) * (R - b) + 4 * R * b * sn * sn);
+            }
+        }
+    }
+    return 2 * sum;
+}

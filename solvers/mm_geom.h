@@ -229,4 +229,29 @@ void mm_geom_dh(double th, double a, double al, double T[12]);
 /* C = A B for transforms [R | p] stored row-major 3 x 4; C may alias A or B. */
 void mm_geom_frame_mul(const double A[12], const double B[12], double C[12]);
 
+/* ---- added for the kinematics chapter ------------------------------------------------ */
+
+/* The rotation matrix of the Euler angles ang about the axes seq (as
+ * mm_geom_euler_matrix) built the other way: the product of the three
+ * unit quaternions q_i(a) q_j(b) q_k(c), q_i(a) = (cos a/2, sin a/2 e_i),
+ * turned into a matrix.  An independent construction to check
+ * mm_geom_euler_matrix against.  Cannot fail. */
+void mm_geom_euler_quat_matrix(const int seq[3], const double ang[3], double R[9]);
+
+/* The largest entry of |A - B| (0 for equal matrices; NaN entries are
+ * skipped, as fmax does).  Cannot fail. */
+double mm_geom_m3_maxdiff(const double A[9], const double B[9]);
+
+/* The length of one arch of the trochoid traced by a point at distance
+ * b >= 0 from the centre of a circle of radius R > 0 rolling on a line:
+ * |dP/dphi| = sqrt((R - b)^2 + 4 R b sin^2(phi/2)) integrated over a
+ * turn, as twice the integral over [0, pi] by 5-point Gauss-Legendre on
+ * 49 panels that halve towards phi = 0 (where, for b near R, the
+ * integrand has a near-corner of width |R - b| / sqrt(R b); a corner for
+ * the cycloid), each panel cut in `split` equal parts: split = 2 against
+ * split = 1 estimates the error.  The closed form is 4 (R + b) E(k), k =
+ * 2 sqrt(R b) / (R + b) (mm_elliptic_E); 8 R for the cycloid.  Cannot
+ * fail. */
+double mm_geom_trochoid_arch(double R, double b, int split);
+
 #endif

@@ -442,3 +442,73 @@ void mm_linkage_bennett(double a, double alpha, double beta, double th1, mm_v3 o
             e = fmax(e, fabs(T[4 * i + j] - (i == j)));
     *gap = e;
 }
+
+/* ==== the quick-return mechanism (crank and slotted lever), added for kin-quick-return ==== */
+
+mm_qr_pos mm_linkage_qr_closed(const mm_quick_return *m, double th)
+{
+    mm_qr_pos p;
+    double c = cos(th), s = sin(th), N = m->r * c, D = m->d + m->r * s, q = N * N + D * D;
+    p.t4 = atan2(D, N);
+    p.t4p = m->r * (m->r + m->d * s) / q;                               /* d/dth2 of atan2(D, N) */
+    double qp = 2 * m->d * m->r * c;                                      /* dq/dth2 */
+    p.t4pp = (m->r * m->d * c * q - m->r * (m->r + m->d * s) * qp) / (q * q);
+    p.X = m->H * N / D;
+    p.Xp = -m->H * m->r * (m->d * s + m->r) / (D * D);
+    p.Xpp = -m->H * m->r * c * (m->d * D - 2 * m->r * (m->d * s + m->r)) / (D * D * D);
+    return p;
+}
+
+static int qr_phi(const double *q, double t, double *F, void *ctx)
+{
+    const mm_quick_return *m = ctx;
+    double c4 = cos(q[0]), s4 = sin(q[0]);
+    F[0] = q[1] * c4 - m->r * cos(t);
+    F[1] = q[1] * s4 - m->d - m->r * sin(t);
+    F[2] = q[3] * c4 - q[2];
+    F[3] = q[3] * s4 - m->H;
+    return 0;
+}
+
+static int qr_jac(const double *q, double t, double *J, void *ctx)
+{
+    (void)t, (void)ctx;
+    double c4 = cos(q[0]), s4 = sin(q[0]);
+    double Jv[16] = {-q[1] * s4, c4, 0, 0, q[1] * c4, s4, 0, 0, -q[3] * s4, 0, -1, c4, q[3] * c4, 0, 0, s4};
+    memcpy(J, Jv, sizeof Jv);
+    return 0;
+}
+
+static int qr_nu(const double *q, double t, double *nu, void *ctx)
+{
+    (void)q;
+    const mm_quick_return *m = ctx;
+    nu[0] = -m->r * sin(t), nu[1] = m->r * cos(t), nu[2] = nu[3] = 0;
+    return 0;
+}
+
+static int qr_gamma(const double *q, const double *qd, double t, double *g, void *ctx)
+{
+    const mm_quick_return *m = ctx;
+    double c4 = cos(q[0]), s4 = sin(q[0]), w = qd[0];
+    g[0] = 2 * qd[1] * s4 * w + q[1] * c4 * w * w - m->r * cos(t);
+    g[1] = -2 * qd[1] * c4 * w + q[1] * s4 * w * w - m->r * sin(t);
+    g[2] = 2 * qd[3] * s4 * w + q[3] * c4 * w * w;
+    g[3] = -2 * qd[3] * c4 * w + q[3] * s4 * w * w;
+    return 0;
+}
+
+static const unsigned char qr_is_length[4] = {0, 1, 1, 1};
+
+void mm_linkage_qr_problem(const mm_quick_return *m, mm_mech_problem *prob)
+{
+    *prob = (mm_mech_problem){.n = 4, .m = 4, .phi = qr_phi, .jac = qr_jac, .nu = qr_nu, .gamma = qr_gamma,
+                              .is_length = qr_is_length, .params = (void *)m};
+}
+
+void mm_linkage_qr_guess(const mm_quick_return *m, double th, double *q)
+{
+    mm_qr_pos p = mm_linkage_qr_closed(m, th);
+    q[0] = p.t4 + 0.01, q[1] = hypot(m->r * cos(th), m->d + m->r * sin(th)) * 1.01;   /* a rough guess */
+    q[2] = p.X * 0.99, q[3] = m->H / sin(p.t4) * 1.01;
+}

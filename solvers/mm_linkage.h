@@ -120,4 +120,32 @@ void mm_linkage_sc_problem(const mm_slider_crank *m, mm_mech_problem *prob);
  * max |T1 T2 T3 T4 - I| into *gap. */
 void mm_linkage_bennett(double a, double alpha, double beta, double th1, mm_v3 o[4], mm_v3 z[4], double *gap);
 
+/* ==== the quick-return mechanism (crank and slotted lever), added for kin-quick-return ==== */
+
+/* The crank O2A (r) turns about O2 = (0, d); its pin A slides in the slot
+ * of a lever pivoted at O4 = (0, 0), whose slot drives a block on the ram
+ * along y = H (H > d + r, r < d). */
+typedef struct mm_quick_return {
+    double r, d, H;
+} mm_quick_return;
+
+typedef struct mm_qr_pos {
+    double t4, t4p, t4pp;     /* the lever's angle and its derivatives by th2 */
+    double X, Xp, Xpp;        /* the ram's position and its derivatives by th2 */
+} mm_qr_pos;
+
+/* The closed form at the crank angle th2:
+ *     th4 = atan2(d + r sin th2, r cos th2),  X = H r cos th2 / (d + r sin th2) */
+mm_qr_pos mm_linkage_qr_closed(const mm_quick_return *m, double th2);
+
+/* The loop closure with q = (th4, s, X, s2), t = th2 (s = |O4 A|, s2 the
+ * block's distance from O4 along the lever):
+ *     s cos th4 = r cos th2,   s sin th4 = d + r sin th2,
+ *     s2 cos th4 = X,          s2 sin th4 = H */
+void mm_linkage_qr_problem(const mm_quick_return *m, mm_mech_problem *prob);
+
+/* A rough first guess of q at th2 (the closed form, each coordinate off
+ * by about 1 %), for Newton to start from. */
+void mm_linkage_qr_guess(const mm_quick_return *m, double th2, double *q);
+
 #endif

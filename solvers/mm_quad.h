@@ -89,4 +89,12 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
 int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_panels, double tol,
                mm_quad_result *r, mm_error *err);
 
+/* ---- added for the kinematics chapter ------------------------------------------------ */
+
+/* The nodes on [-1, 1] and the weights of 5-point Gauss-Legendre (exact
+ * for polynomials of degree 9), for callers that sum the rule themselves
+ * (the integrand carries its own error estimate, a corner is met by
+ * panels of their own). */
+extern const double mm_quad_gl5_node[5], mm_quad_gl5_weight[5];
+
 #endif

@@ -76,10 +76,8 @@ static const mm_output outputs[] = {
     [O_PROF] = MM_SERIES("profile", "cam profile", "m", "x", "m", .aspect = "equal", .figure = "cam"),
     [O_PITCH] = MM_SERIES("pitch_curve", "pitch curve (path of the roller's centre)", "m", "x", "m", .aspect = "equal",
                           .figure = "cam", .role = "reference"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of s vs s'", "m", "step h", "rad",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs s''", "m", "step h", "rad",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of s vs s'", "m", "rad"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs s''", "m", "rad"),
     [O_ANIM] = MM_ANIMATION("the cam turning, the roller follower rising and falling, its velocity"),
 };
 
@@ -98,105 +96,27 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-typedef struct fd_ctx {
-    const cam *m;
-    const double *th;
-} fd_ctx;
-
-static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+static int fd_pos(double ths, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     (void)err;
-    fd_ctx *c = ctx;
+    const cam *m = ctx;
     double d[4];
     int seg;
-    double th = c->th[i] + h;
-    mm_cam_motion(c->m, th, d, &seg);
+    double th = ths + h;
+    mm_cam_motion(m, th, d, &seg);
     q[0] = d[0];
     /* the law's polynomial or trigonometric terms (up to 31 h), and theta's
      * own rounding, reduced to a turn: s' eps (|theta| + 2 pi) */
-    *qerr = 64 * DBL_EPSILON * c->m->h + 4 * DBL_EPSILON * fabs(d[1]) * (fabs(th) + 2 * M_PI);
+    *qerr = 64 * DBL_EPSILON * m->h + 4 * DBL_EPSILON * fabs(d[1]) * (fabs(th) + 2 * M_PI);
     return MM_OK;
 }
 
-/* the quantity whose extreme is sought: |pressure angle| (which = 0), or
- * -rho of the pitch curve where it is convex (which = 1; -inf elsewhere) */
-typedef struct ext_ctx {
-    const cam *m;
-    int which;
-} ext_ctx;
-
-static int ext_fn(double th, double *f, void *ctx)
+/* the pitch curve at th + e, for mm_kin_circle3 */
+static int pitch_point(double th, double e, mm_v2 *P, void *ctx)
 {
-    const ext_ctx *c = ctx;
-    double d[4];
-    int seg;
-    mm_cam_motion(c->m, th, d, &seg);
-    if (c->which == 0) {
-        *f = fabs(mm_cam_pressure(c->m, d));
-    } else {
-        double rp = mm_cam_rho_pitch(c->m, d);
-        *f = rp > 0 ? -rp : -INFINITY;
-    }
-    return 0;
-}
-
-/* The largest value over the turn: a scan of 3600 cam angles, a
- * golden-section search between the best sample's neighbours, and both
- * sides of every place where the law's s'' jumps (rho jumps there).  *at
- * receives the place; *err an estimate: how much the value changes over
- * the search's final bracket, at least 1e-12 of it. */
-static double extreme(const cam *m, int which, double *at, double *err)
-{
-    enum { NS = 3600 };
-    ext_ctx c = {m, which};
-    double best = -INFINITY, f, step = 2 * M_PI / NS;
-    int kb = 0;
-    for (int k = 0; k < NS; k++) {
-        ext_fn(step * k, &f, &c);
-        if (f > best)
-            best = f, kb = k;
-    }
-    *at = step * kb, *err = 0;
-    if (!isfinite(best))
-        return best;
-    mm_opt_result r;
-    if (mm_opt_golden_max(ext_fn, &c, step * (kb - 1), step * (kb + 1), 1e-10, 200, &r, NULL) == MM_OK &&
-        r.fx > best) {
-        double fl, fr;
-        ext_fn(r.x - r.bracket, &fl, &c), ext_fn(r.x + r.bracket, &fr, &c);
-        best = r.fx, *at = r.x;
-        *err = fmax(fabs(r.fx - fl), fabs(r.fx - fr));
-    }
-    double jumps[7] = {0, m->br, m->br + m->bd, m->br + m->bd + m->bt, 2 * M_PI, 0.5 * m->br,
-                       m->br + m->bd + 0.5 * m->bt};
-    int near = 0;
-    for (int k = 0; k < 7 && which == 1; k++) {
-        near |= fabs(*at - jumps[k]) < 1e-6;
-        for (int side = -1; side <= 1; side += 2) {
-            ext_fn(jumps[k] + side * 1e-9, &f, &c);
-            if (f > best)
-                best = f, *at = jumps[k] + side * 1e-9, *err = 0, near = 1;
-        }
-    }
-    /* at a jump the extreme is a one-sided limit, reached to within the
-     * search's last step: 1e-6 of the value covers that */
-    *err = fmax(*err, (near ? 1e-6 : 1e-12) * fabs(best));
-    return best;
-}
-
-typedef struct peak_ctx {
-    const cam *m;
-    int k, seg;            /* which derivative, and which segment's peak */
-} peak_ctx;
-
-static int peak_fn(double th, double *f, void *ctx)
-{
-    peak_ctx *c = ctx;
-    double d[4];
-    int seg;
-    mm_cam_motion(c->m, th, d, &seg);
-    *f = seg == c->seg ? fabs(d[c->k]) : 0;
-    return 0;
+    mm_v2 K;
+    mm_cam_points(ctx, th + e, P, &K);
+    return 1;
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -225,10 +145,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     for (int k = 1; k <= 2; k++) {
         int s2 = (k == 1 ? vr >= vt : ar >= at) ? 0 : 2;
         double a0 = s2 == 0 ? 0 : m.br + m.bd, b0 = a0 + (s2 == 0 ? m.br : m.bt);
-        peak_ctx pc = {&m, k, s2};
         mm_opt_result r;
         /* |s''| of the constant-acceleration law is flat: any point is the peak */
-        int rc = mm_opt_golden_max(peak_fn, &pc, a0, b0 - 1e-12 * b0, 1e-9 * (b0 - a0), 200, &r, err);
+        int rc = mm_cam_peak_search(&m, k, s2, a0, b0 - 1e-12 * b0, 1e-9 * (b0 - a0), &r, err);
         if (rc != MM_OK)
             return rc;
         double want = k == 1 ? fmax(vr, vt) : fmax(ar, at);
@@ -256,7 +175,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(0, 2 * M_PI, n, ser[0]->x);
     const double h0 = 0.01 * fmin(m.br, m.bt);
-    double phimax = 0, tphi = 0, rmin = INFINITY, trmin = 0, size = m.s0 + m.h + m.Rr;
+    double phimax = 0, trmin = 0, size = m.s0 + m.h + m.Rr;
     for (int i = 0; i < n; i++) {
         double x = ser[0]->x[i], di[4];
         int si;
@@ -264,12 +183,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         for (int k = 1; k < 5; k++)
             ser[k]->x[i] = x;
         ser[0]->y[i] = di[0], ser[1]->y[i] = w * di[1], ser[2]->y[i] = w * w * di[2], ser[3]->y[i] = w * w * w * di[3];
-        double phi = mm_cam_pressure(&m, di), rp = mm_cam_rho_pitch(&m, di);
+        double phi = mm_cam_pressure(&m, di);
         ser[4]->y[i] = phi;
-        if (fabs(phi) > phimax)
-            phimax = fabs(phi), tphi = x;
-        if (rp > 0 && rp < rmin)
-            rmin = rp, trmin = x;
+        phimax = fmax(phimax, fabs(phi));
         mm_v2 P, K;
         mm_cam_points(&m, x, &P, &K);
         pitch->x[i] = P.x, pitch->y[i] = P.y, prof->x[i] = K.x, prof->y[i] = K.y;
@@ -279,10 +195,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             th[ns] = x, d1[ns] = di[1], d2[ns] = di[2], ns++;
     }
     /* the largest pressure angle and the smallest convex rho, refined */
-    double tphi2, ephi, phibest = extreme(&m, 0, &tphi2, &ephi);
+    double tphi2, ephi, phibest = mm_cam_pressure_max(&m, &tphi2, &ephi);
     mm_res_scalar_err(res, O_PHIMAX, phibest, ephi, MM_ERR_ESTIMATE);
-    (void)phimax, (void)tphi, (void)trmin;
-    double e, best = -extreme(&m, 1, &trmin, &e);
+    double e, best = mm_cam_rho_pitch_min(&m, &trmin, &e);
     if (isfinite(best)) {
         mm_res_scalar_err(res, O_RHOP, best, e, MM_ERR_ESTIMATE);
         mm_res_scalar_err(res, O_RHOC, best - m.Rr, e, MM_ERR_ESTIMATE);
@@ -298,13 +213,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         int s3;
         mm_cam_motion(&m, trmin, d3, &s3);
         double rp = mm_cam_rho_pitch(&m, d3), R3[3], dth = 0.02 * rp / hypot(m.s0 + d3[0], d3[1] - m.e);
-        int ok = 1;
-        for (int k = 0; k < 3; k++) {
-            mm_v2 A, B, C, K, cc;
-            double hk = dth / (1 << k);
-            mm_cam_points(&m, trmin - hk, &A, &K), mm_cam_points(&m, trmin, &B, &K), mm_cam_points(&m, trmin + hk, &C, &K);
-            ok &= mm_geom_circumcircle(A, B, C, &cc, &R3[k]);
-        }
+        int ok = mm_kin_circle3(pitch_point, &m, trmin, dth, R3);
         double ds = 0.005 * rp, rnd = 64 * DBL_EPSILON * (size + rp) * rp * rp / (ds * ds);
         /* not across a jump of s'' (harmonic and constant acceleration):
          * there rho itself jumps and the circle straddles the jump */
@@ -315,49 +224,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (phimax > 30 * M_PI / 180)
         mm_res_warn(res, "the pressure angle reaches %.1f degrees (above 30): the follower is pushed sideways in its "
                          "guide more than it is lifted", phimax * 180 / M_PI);
-    fd_ctx fc = {&m, th};
-    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "ds/dtheta", "d2s/dtheta2", fd_pos, &fc, 1, NULL, ns, d1, d2, h0, 0, 0,
-                          err);
+    mm_kin_samples smp = {n, ns, 1, th, d1, d2};
+    int rc = mm_kin_fd_samples(res, O_FDV, O_FDA, "ds/dtheta", "d2s/dtheta2", fd_pos, &m, &smp, h0, err);
     if (rc != MM_OK)
         return rc;
 
-    /* ---- the animation: the cam turning (36 frames a turn) ---- */
-    enum { NF = 36, NP = 48 };
-    double vmax = fabs(w) * fmax(vr, vt);
-    mm_kin_draw dr;
-    mm_anim *an = mm_kin_draw_start(&dr, res, NF, "cam angle", "rad", 2 * size + 2 * m.Rr);
-    mm_shape *cm = an ? mm_kin_shape(&dr, "cam", MM_SHAPE_POLYGON, 1, NP) : NULL;
-    mm_shape *pv = mm_kin_pivot(&dr, "cam centre", 0, 0);
-    mm_shape *rl = mm_kin_shape(&dr, "roller", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *st = mm_kin_shape(&dr, "follower", MM_SHAPE_LINE, 1, 2);
-    mm_shape *gd = mm_kin_shape(&dr, "guide", MM_SHAPE_LINE, 0, 2);
-    mm_shape *va = mm_kin_arrow_shape(&dr, "v", "m/s", vmax);
-    if (!cm || !pv || !rl || !st || !gd || !va)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    mm_v2 K[NP];
-    for (int j = 0; j < NP; j++) {
-        mm_v2 P;
-        mm_cam_points(&m, 2 * M_PI * j / NP, &P, &K[j]);
-    }
-    rl->radius = m.Rr > 0 ? m.Rr : 0.01 * size;
-    gd->style = "ground";
-    mm_kin_pt(gd, 0, 0, m.e, m.s0 + m.h + 0.4 * size), mm_kin_pt(gd, 0, 1, m.e, m.s0 + m.h + 0.9 * size);
-    for (int f = 0; f < NF; f++) {
-        double thf = 2 * M_PI * f / NF, df[4];
-        int sf;
-        an->t[f] = thf;
-        mm_cam_motion(&m, thf, df, &sf);
-        for (int j = 0; j < NP; j++) {
-            mm_v2 q = mm_v2_rotate(K[j], thf);            /* the cam frame turned by thf */
-            mm_kin_pt(cm, f, j, q.x, q.y);
-        }
-        double yc = m.s0 + df[0];
-        mm_kin_pt(rl, f, 0, m.e, yc);
-        mm_kin_pt(st, f, 0, m.e, yc), mm_kin_pt(st, f, 1, m.e, m.s0 + m.h + 0.9 * size);
-        mm_kin_arrow(va, f, m.e + 1.5 * rl->radius, yc, 0, w * df[1]);
-    }
     mm_res_method(res, "closed-form motion laws; pitch curve and profile by rotation; checked by central differences", 0);
-    return mm_kin_draw_finish(&dr);
+    return mm_kin_anim_cam(res, &m, w, fabs(w) * fmax(vr, vt), size, err);   /* 36 frames a turn */
 }
 
 static const char *const references[] = {
@@ -366,19 +239,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_cam_follower = {
-    .id = "kin-cam-follower",
-    .chapter = 2,
-    .section = "2.4.4",
+    .id = "kin-cam-follower", .chapter = 2, .section = "2.4.4",
     .title = "Cam and roller follower",
     .summary = "A disc cam lifting a roller follower: motion laws, velocity, acceleration and jerk, pressure "
                "angle, the cam profile and its undercutting.",
     .tags = "kinematics, mechanism, cam, follower, motion law, pressure angle, undercutting",
     .theory = "exercises/kin/cam_follower.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

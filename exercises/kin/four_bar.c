@@ -24,6 +24,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "mm_geom.h"
@@ -92,10 +93,9 @@ static const mm_output outputs[] = {
     [O_SMU] = MM_SERIES("mu", "transmission angle", "rad", "crank angle", "rad", .figure = "transmission angle"),
     [O_SCOUP] = MM_SERIES("coupler_curve", "path of the coupler point P", "m", "x", "m", .aspect = "equal",
                           .figure = "coupler curve"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of theta3, theta4 vs d/dtheta2", "rad",
-                        "step h", "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs d2/dtheta2^2", "rad", "step h", "rad",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of theta3, theta4 vs d/dtheta2",
+                               "rad", "rad"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs d2/dtheta2^2", "rad", "rad"),
     [O_ANIM] = MM_ANIMATION("crank, coupler and rocker over the cycle, the coupler curve, the velocity and "
                             "acceleration of P"),
 };
@@ -122,6 +122,18 @@ static int check(const mm_value *in, mm_error *err)
                             k.lo, k.hi);
     }
     return MM_OK;
+}
+
+/* the assembly at th2 on the side asked, for mm_kin_toggle_checks */
+typedef struct fb_side {
+    const fb *m;
+    int side;
+} fb_side;
+
+static void assemble(double th2, double *q, void *ctx)
+{
+    const fb_side *c = ctx;
+    mm_linkage_fb_assemble(c->m, th2, c->side, q);
 }
 
 /* ---- the answer ------------------------------------------------------------------------------ */
@@ -379,33 +391,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     } else {
         mm_res_scalar(res, O_TOG1, lo);
         mm_res_scalar(res, O_TOG2, hi);
-        if (fabs(lo + 2 * M_PI - hi - k.gap[1]) <= 1e-9)     /* one arc: the gap is the rest of the turn */
-            mm_res_warn(res, "%s: the crank cannot turn round; it rocks between the toggles at %.4g and %.4g "
-                             "rad, where coupler and rocker lie in line, and cannot close from %.4g to %.4g rad",
-                        k.name, lo, hi, hi, lo + 2 * M_PI);
-        else
-            mm_res_warn(res, "%s: the crank cannot turn round; it rocks between the toggles at %.4g and %.4g "
-                             "rad, where coupler and rocker lie in line, and cannot close from %.4g to %.4g nor "
-                             "from %.4g to %.4g rad; the arc beyond those gaps is another assembly, reached only "
-                             "by taking the linkage apart",
-                        k.name, lo, hi, hi, hi + k.gap[1], lo - k.gap[0], lo);
-        for (int end = 0; end < 2; end++) {
-            enum { NT = 9 };
-            double t[NT], qq2[2 * NT];
-            /* past the toggle, but never past the middle of the gap: beyond it
-             * the linkage closes again, and a sweep could step across */
-            double past = fmin(0.05, 0.5 * k.gap[end]);
-            double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + past : lo - past;
-            for (int i = 0; i < NT; i++)
-                t[i] = from + (to - from) * i / (NT - 1);
-            mm_linkage_fb_assemble(&m, t[0], side, qq2);
-            mm_mech_sweep s = {.nt = NT, .t = t, .q = qq2, .watch = -1, .tol_t = 1e-13};
-            if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &s, err)) != MM_OK)
-                goto out;
-            mm_res_check_abs(res, end ? "second toggle: where the sweep stops closing vs |O4 B| = b + c or |b - c|"
-                                      : "first toggle: where the sweep stops closing vs |O4 B| = b + c or |b - c|",
-                             s.t_limit, end ? hi : lo, 1e-9);
-        }
+        char what[200];
+        snprintf(what, sizeof what, "%s: the crank cannot turn round; it rocks between the toggles at %.4g and %.4g "
+                 "rad, where coupler and rocker lie in line,", k.name, lo, hi);
+        mm_kin_warn_reach(res, what, lo, hi, k.gap);
+        fb_side fs = {&m, side};
+        if ((rc = mm_kin_toggle_checks(res, &prob, &opt, w, lo, hi, k.gap, assemble, &fs, "|O4 B| = b + c or |b - c|",
+                                       err)) != MM_OK)
+            goto out;
     }
     mm_res_method(res, "Newton-Raphson on the loop closure, Jacobian solves for velocity and acceleration", 0);
     mm_res_method_stat(res, "error_estimate", info.err_est);
@@ -422,19 +415,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_four_bar = {
-    .id = "kin-four-bar",
-    .chapter = 2,
-    .section = "2.4.4",
+    .id = "kin-four-bar", .chapter = 2, .section = "2.4.4",
     .title = "Four-bar linkage",
     .summary = "Angles, angular velocities and accelerations of coupler and rocker; Grashof's condition, "
                "transmission angle, coupler curve, toggles and change points.",
     .tags = "kinematics, mechanism, four-bar, Grashof, Freudenstein, transmission angle, coupler curve",
     .theory = "exercises/kin/four_bar.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

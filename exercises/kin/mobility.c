@@ -32,9 +32,11 @@
 
 #include "mm_geom.h"
 #include "mm_kin.h"
+#include "mm_kin_linkage.h"
 #include "mm_linalg.h"
 #include "mm_linkage.h"
 #include "mm_mech.h"
+#include "mm_natural.h"
 
 enum { P_LINKAGE, P_LINKS, P_J1, P_J2 };
 
@@ -71,19 +73,11 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the linkage moved by as many drivers as it has freedoms"),
 };
 
-/* ---- planar presets in natural coordinates ------------------------------------------------ */
-
-#define MAXP 8
-#define MAXC 12
+/* ---- planar presets in natural coordinates (mm_natural) ------------------------------------ */
 
 typedef struct preset {
     int links, j1, j2;            /* for eq. (1) */
-    int nfix, npts;               /* points: the first nfix are fixed */
-    double p[MAXP][2];            /* an assembly; the lengths come from it */
-    int ncon, con[MAXC][2];       /* distances between points */
-    int slide;                    /* a point that runs on the line y = its own y (or -1) */
-    int ndrv, drv[2][2];          /* drivers: (fixed pivot, moving point) turning by angle */
-    double amp;                   /* 0: the drivers turn round; else they rock by amp [rad] */
+    mm_nat_linkage g;             /* points (an assembly), bars, slider, drivers */
     int ntri, tri[2][3];          /* ternary links, drawn as triangles */
     const char *joints;           /* "name:kind:f,..." */
     const char *note;
@@ -92,135 +86,49 @@ typedef struct preset {
 /* an overconstrained double parallelogram: O2 A B O4 a parallelogram, O6 E parallel to O2 A */
 #define DPA 0.10806046117362795, 0.16829419696157930
 static const preset presets[7] = {
-    {4, 4, 0, 2, 4, {{0, 0}, {0.6, 0}, {0.10806046117362795, 0.16829419696157930}, {0.55, 0.4}},
-     3, {{0, 2}, {2, 3}, {1, 3}}, -1, 1, {{0, 2}}, 0, 0, {{0}},
+    {4, 4, 0, {2, 4, {{0, 0}, {0.6, 0}, {0.10806046117362795, 0.16829419696157930}, {0.55, 0.4}},
+     3, {{0, 2}, {2, 3}, {1, 3}}, -1, 1, {{0, 2}}, 0}, 0, {{0}},
      "O2:pin:1,A:pin:1,B:pin:1,O4:pin:1", "the count is right: a four-bar has one freedom"},
-    {4, 4, 0, 1, 3, {{0, 0}, {0.054030230586813977, 0.084147098480789651}, {0.45, 0}},
-     2, {{0, 1}, {1, 2}}, 2, 1, {{0, 1}}, 0, 0, {{0}},
+    {4, 4, 0, {1, 3, {{0, 0}, {0.054030230586813977, 0.084147098480789651}, {0.45, 0}},
+     2, {{0, 1}, {1, 2}}, 2, 1, {{0, 1}}, 0}, 0, {{0}},
      "O:pin:1,A:pin:1,B:pin:1,B:slider:1", "the count is right: a slider-crank has one freedom"},
-    {5, 5, 0, 2, 5, {{0, 0}, {0.5, 0}, {0.054353, 0.139806}, {0.25, 0.45}, {0.465919, 0.146089}},
-     4, {{0, 2}, {2, 3}, {3, 4}, {4, 1}}, -1, 2, {{0, 2}, {1, 4}}, 0.35, 0, {{0}},
+    {5, 5, 0, {2, 5, {{0, 0}, {0.5, 0}, {0.054353, 0.139806}, {0.25, 0.45}, {0.465919, 0.146089}},
+     4, {{0, 2}, {2, 3}, {3, 4}, {4, 1}}, -1, 2, {{0, 2}, {1, 4}}, 0.35}, 0, {{0}},
      "O1:pin:1,A:pin:1,B:pin:1,C:pin:1,O2:pin:1", "the count is right: a five-bar needs two inputs"},
-    {6, 7, 0, 3, 7, {{0, 0}, {0.6, 0}, {1.1, 0.1}, {0.10806046117362795, 0.16829419696157930}, {0.55, 0.4},
-                     {0.8, 0.3}, {1.0, 0.55}},
-     7, {{0, 3}, {3, 4}, {1, 4}, {1, 5}, {4, 5}, {5, 6}, {6, 2}}, -1, 1, {{0, 3}}, 0.35, 1, {{1, 4, 5}},
+    {6, 7, 0, {3, 7, {{0, 0}, {0.6, 0}, {1.1, 0.1}, {0.10806046117362795, 0.16829419696157930}, {0.55, 0.4},
+                      {0.8, 0.3}, {1.0, 0.55}},
+     7, {{0, 3}, {3, 4}, {1, 4}, {1, 5}, {4, 5}, {5, 6}, {6, 2}}, -1, 1, {{0, 3}}, 0.35}, 1, {{1, 4, 5}},
      "O2:pin:1,A:pin:1,B:pin:1,O4:pin:1,C:pin:1,D:pin:1,O6:pin:1",
      "the count is right: Watt's chain (two ternary links joined) has one freedom"},
-    {6, 7, 0, 3, 7, {{0, 0}, {0.6, 0}, {0.9, 0.3}, {0.10806046117362795, 0.16829419696157930}, {0.55, 0.4},
-                     {0.35, 0.55}, {0.75, 0.75}},
-     7, {{0, 3}, {3, 4}, {1, 4}, {3, 5}, {4, 5}, {5, 6}, {6, 2}}, -1, 1, {{0, 3}}, 0.35, 1, {{3, 4, 5}},
+    {6, 7, 0, {3, 7, {{0, 0}, {0.6, 0}, {0.9, 0.3}, {0.10806046117362795, 0.16829419696157930}, {0.55, 0.4},
+                      {0.35, 0.55}, {0.75, 0.75}},
+     7, {{0, 3}, {3, 4}, {1, 4}, {3, 5}, {4, 5}, {5, 6}, {6, 2}}, -1, 1, {{0, 3}}, 0.35}, 1, {{3, 4, 5}},
      "O2:pin:1,A:pin:1,B:pin:1,O4:pin:1,C:pin:1,D:pin:1,O6:pin:1",
      "the count is right: Stephenson's chain (ternary links apart) has one freedom"},
-    {5, 6, 0, 3, 6, {{0, 0}, {0.6, 0}, {0.3, 0.1}, {DPA}, {0.70806046117362795, 0.16829419696157930},
-                     {0.40806046117362795, 0.26829419696157930}},
-     6, {{0, 3}, {1, 4}, {2, 5}, {3, 4}, {3, 5}, {4, 5}}, -1, 1, {{0, 3}}, 0, 1, {{3, 4, 5}},
+    {5, 6, 0, {3, 6, {{0, 0}, {0.6, 0}, {0.3, 0.1}, {DPA}, {0.70806046117362795, 0.16829419696157930},
+                      {0.40806046117362795, 0.26829419696157930}},
+     6, {{0, 3}, {1, 4}, {2, 5}, {3, 4}, {3, 5}, {4, 5}}, -1, 1, {{0, 3}}, 0}, 1, {{3, 4, 5}},
      "O2:pin:1,A:pin:1,B:pin:1,O4:pin:1,E:pin:1,O6:pin:1",
      "the count is WRONG: it says 0 (a structure), but the third crank is parallel and equal to the other two, "
      "so its constraint repeats theirs and the linkage moves with one freedom (overconstrained)"},
-    {3, 3, 0, 2, 3, {{0, 0}, {0.6, 0}, {0.25, 0.4}}, 2, {{0, 2}, {1, 2}}, -1, 0, {{0}}, 0, 0, {{0}},
+    {3, 3, 0, {2, 3, {{0, 0}, {0.6, 0}, {0.25, 0.4}}, 2, {{0, 2}, {1, 2}}, -1, 0, {{0}}, 0}, 0, {{0}},
      "O1:pin:1,A:pin:1,O2:pin:1", "the count is right: a triangle is a structure, it cannot move"},
 };
-
-typedef struct model {
-    const preset *s;
-    double L2[MAXC];              /* squared lengths */
-    double y_slide;
-    double th0[2];                /* drivers' angles at the start */
-} model;
-
-/* q holds the moving points' x, y: point i >= nfix at q[2 (i - nfix)] */
-static void pt(const model *m, const double *q, int i, double *x, double *y)
-{
-    if (i < m->s->nfix)
-        *x = m->s->p[i][0], *y = m->s->p[i][1];
-    else
-        *x = q[2 * (i - m->s->nfix)], *y = q[2 * (i - m->s->nfix) + 1];
-}
-
-static double drive(const model *m, int k, double t, double *rate)
-{
-    double a = m->s->amp;
-    if (rate)
-        *rate = a > 0 ? a * cos(t) : 1;
-    return m->th0[k] + (a > 0 ? a * sin(t) : t);
-}
-
-/* the constraints (3): distances, the slider, and (driven) the driver angles */
-typedef struct mctx {
-    const model *m;
-    int driven;
-} mctx;
-
-static int phi_fn(const double *q, double t, double *F, void *ctx)
-{
-    const mctx *c = ctx;
-    const preset *s = c->m->s;
-    int r = 0;
-    for (int k = 0; k < s->ncon; k++) {
-        double xi, yi, xj, yj;
-        pt(c->m, q, s->con[k][0], &xi, &yi), pt(c->m, q, s->con[k][1], &xj, &yj);
-        F[r++] = (xi - xj) * (xi - xj) + (yi - yj) * (yi - yj) - c->m->L2[k];
-    }
-    if (s->slide >= 0)
-        F[r++] = q[2 * (s->slide - s->nfix) + 1] - c->m->y_slide;
-    for (int k = 0; c->driven && k < s->ndrv; k++) {
-        double xo, yo, xa, ya, th = drive(c->m, k, t, NULL);
-        pt(c->m, q, s->drv[k][0], &xo, &yo), pt(c->m, q, s->drv[k][1], &xa, &ya);
-        F[r++] = (xa - xo) * sin(th) - (ya - yo) * cos(th);      /* A on the ray at th */
-    }
-    return 0;
-}
-
-static int jac_fn(const double *q, double t, double *J, void *ctx)
-{
-    const mctx *c = ctx;
-    const preset *s = c->m->s;
-    int n = 2 * (s->npts - s->nfix), r = 0;
-    int rows = s->ncon + (s->slide >= 0) + (c->driven ? s->ndrv : 0);
-    memset(J, 0, (size_t)rows * (size_t)n * sizeof *J);
-    for (int k = 0; k < s->ncon; k++, r++) {
-        int i = s->con[k][0], j = s->con[k][1];
-        double xi, yi, xj, yj;
-        pt(c->m, q, i, &xi, &yi), pt(c->m, q, j, &xj, &yj);
-        if (i >= s->nfix)
-            J[r * n + 2 * (i - s->nfix)] = 2 * (xi - xj), J[r * n + 2 * (i - s->nfix) + 1] = 2 * (yi - yj);
-        if (j >= s->nfix)
-            J[r * n + 2 * (j - s->nfix)] = -2 * (xi - xj), J[r * n + 2 * (j - s->nfix) + 1] = -2 * (yi - yj);
-    }
-    if (s->slide >= 0)
-        J[r * n + 2 * (s->slide - s->nfix) + 1] = 1, r++;
-    for (int k = 0; c->driven && k < s->ndrv; k++, r++) {
-        double th = drive(c->m, k, t, NULL);
-        int a = s->drv[k][1] - s->nfix;
-        J[r * n + 2 * a] = sin(th), J[r * n + 2 * a + 1] = -cos(th);
-    }
-    return 0;
-}
 
 /* the Bennett linkage (mm_linkage_bennett): a, alpha of links 1 and 3; b from sin(alpha)/a = sin(beta)/b */
 static const double BA = 0.3, BAL = M_PI / 3, BBE = M_PI / 4;
 
-static void view(mm_v3 p, double *x, double *y)
+static int planar(const preset *ps, mm_result *res, mm_error *err)
 {
-    *x = (p.y - p.x) * M_SQRT1_2;
-    *y = (2 * p.z - p.x - p.y) / sqrt(6.0);
-}
-
-static int planar(const preset *s, mm_result *res, mm_error *err)
-{
-    model m = {.s = s, .y_slide = s->slide >= 0 ? s->p[s->slide][1] : 0};
-    for (int k = 0; k < s->ncon; k++) {
-        double dx = s->p[s->con[k][0]][0] - s->p[s->con[k][1]][0], dy = s->p[s->con[k][0]][1] - s->p[s->con[k][1]][1];
-        m.L2[k] = dx * dx + dy * dy;
-    }
-    for (int k = 0; k < s->ndrv; k++)
-        m.th0[k] = atan2(s->p[s->drv[k][1]][1] - s->p[s->drv[k][0]][1], s->p[s->drv[k][1]][0] - s->p[s->drv[k][0]][0]);
-    const int n = 2 * (s->npts - s->nfix), nc = s->ncon + (s->slide >= 0);
-    double q[2 * MAXP], sv[2 * MAXP];
-    for (int i = s->nfix; i < s->npts; i++)
-        q[2 * (i - s->nfix)] = s->p[i][0], q[2 * (i - s->nfix) + 1] = s->p[i][1];
-    mctx fc = {&m, 0};
-    mm_mech_problem free_ = {.n = n, .m = nc, .phi = phi_fn, .jac = jac_fn, .params = &fc};
+    const mm_nat_linkage *s = &ps->g;
+    mm_nat_model m, md;                                    /* without and with the drivers */
+    double q[2 * MM_NAT_MAXP], sv[2 * MM_NAT_MAXP];
+    mm_nat_init(&m, s, 0, q);
+    mm_nat_init(&md, s, 1, NULL);
+    mm_mech_problem free_, prob;
+    mm_nat_problem(&m, &free_);
+    mm_nat_problem(&md, &prob);
+    const int n = free_.n, nc = free_.m;
     mm_mech_work *w = mm_mech_work_alloc(n, nc);
     if (!w)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
@@ -229,11 +137,11 @@ static int planar(const preset *s, mm_result *res, mm_error *err)
     mm_mech_work_free(w);
     if (rc != MM_OK)
         return rc;
-    int gk = 3 * (s->links - 1) - 2 * s->j1 - s->j2, M = n - rank;
+    int gk = 3 * (ps->links - 1) - 2 * ps->j1 - ps->j2, M = n - rank;
     mm_res_scalar(res, O_GK, gk);
     mm_res_scalar(res, O_M, M);
     mm_res_scalar(res, O_NQ, n), mm_res_scalar(res, O_NC, nc), mm_res_scalar(res, O_RANK, rank);
-    mm_res_scalar_text(res, O_OVER, M != gk, s->note);
+    mm_res_scalar_text(res, O_OVER, M != gk, ps->note);
     mm_res_check_abs(res, "Grubler-Kutzbach count (1) vs coordinates minus constraint equations", gk, n - nc, 0);
     mm_kin_rank_checks(res, sv, k, rank, nc, n);
     mm_series *ss = mm_res_series(res, O_SV, k);
@@ -241,32 +149,26 @@ static int planar(const preset *s, mm_result *res, mm_error *err)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     for (int i = 0; i < k; i++)
         ss->x[i] = i + 1, ss->y[i] = fmax(sv[i], 1e-300);
-    if ((rc = mm_kin_joints_table(res, O_PAIRS, s->joints, err)) != MM_OK)
+    if ((rc = mm_kin_joints_table(res, O_PAIRS, ps->joints, err)) != MM_OK)
         return rc;
     if (M != gk)
-        mm_res_warn(res, "%s", s->note);
+        mm_res_warn(res, "%s", ps->note);
 
     /* ---- moving it: one driver per freedom ---- */
     enum { NF = 72 };
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, NF, s->amp > 0 ? "t" : "input angle", s->amp > 0 ? "s" : "rad", 1.3);
-    if (!an)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    double Q[NF * 2 * MAXP], t[NF];
+    double Q[NF * 2 * MM_NAT_MAXP], t[NF];
     for (int f = 0; f < NF; f++)
         t[f] = 2 * M_PI * f / NF;
     memcpy(Q, q, (size_t)n * sizeof *Q);
     int solved = 1;
     if (s->ndrv > 0) {
-        mctx dc = {&m, 1};
-        mm_mech_problem prob = {.n = n, .m = nc + s->ndrv, .phi = phi_fn, .jac = jac_fn, .params = &dc};
         mm_mech_options opt;
         mm_mech_options_init(&opt);
-        mm_mech_work *wd = mm_mech_work_alloc(n, nc + s->ndrv);
+        mm_mech_work *wd = mm_mech_work_alloc(n, prob.m);
         if (!wd)
             return mm_error_set(err, MM_ENOMEM, "", "out of memory");
         int r2 = 0;
-        double sv2[2 * MAXP];
+        double sv2[2 * MM_NAT_MAXP];
         rc = mm_mech_rank(&prob, wd, 0, q, 0, sv2, &r2, err);
         mm_mech_sweep sw = {.nt = NF, .t = t, .q = Q, .watch = -1};
         if (rc == MM_OK)
@@ -284,56 +186,7 @@ static int planar(const preset *s, mm_result *res, mm_error *err)
         for (int f = 1; f < NF; f++)
             memcpy(Q + f * n, q, (size_t)n * sizeof *Q);
     }
-    /* draw: binary links as lines, ternary ones as triangles, pivots, the slide */
-    for (int k2 = 0; k2 < s->nfix; k2++)
-        if (!mm_kin_pivot(&d, "ground pivot", s->p[k2][0], s->p[k2][1]))
-            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    mm_shape *lk[MAXC] = {0}, *tr[2] = {0}, *blk = NULL;
-    for (int c = 0; c < s->ncon; c++) {
-        int in_tri = 0;
-        for (int r = 0; r < s->ntri; r++) {
-            int hits = 0;
-            for (int v = 0; v < 3; v++)
-                hits += s->tri[r][v] == s->con[c][0] || s->tri[r][v] == s->con[c][1];
-            in_tri |= hits == 2;
-        }
-        if (!in_tri && !(lk[c] = mm_kin_shape(&d, "link", MM_SHAPE_LINE, 1, 2)))
-            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    }
-    for (int r = 0; r < s->ntri; r++)
-        if (!(tr[r] = mm_kin_shape(&d, "ternary link", MM_SHAPE_POLYGON, 1, 3)))
-            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    if (s->slide >= 0) {
-        mm_shape *g = mm_kin_shape(&d, "slide", MM_SHAPE_LINE, 0, 2);
-        blk = mm_kin_shape(&d, "slider", MM_SHAPE_POLYGON, 1, 4);
-        if (!g || !blk)
-            return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-        g->style = "ground";
-        mm_kin_pt(g, 0, 0, -0.2, m.y_slide), mm_kin_pt(g, 0, 1, 0.7, m.y_slide);
-    }
-    for (int f = 0; f < NF; f++) {
-        const double *qf = Q + (f < solved ? f : solved - 1) * n;
-        an->t[f] = t[f];
-        for (int c = 0; c < s->ncon; c++)
-            if (lk[c])
-                for (int e = 0; e < 2; e++) {
-                    double x, y;
-                    pt(&m, qf, s->con[c][e], &x, &y);
-                    mm_kin_pt(lk[c], f, e, x, y);
-                }
-        for (int r = 0; r < s->ntri; r++)
-            for (int v = 0; v < 3; v++) {
-                double x, y;
-                pt(&m, qf, s->tri[r][v], &x, &y);
-                mm_kin_pt(tr[r], f, v, x, y);
-            }
-        if (blk) {
-            double x, y;
-            pt(&m, qf, s->slide, &x, &y);
-            mm_kin_block(blk, f, x, y, 0.08, 0.05, 0);
-        }
-    }
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_linkage(res, &m, ps->ntri, ps->tri, NF, t, Q, solved, err);
 }
 
 static int spatial_bennett(mm_result *res, mm_error *err)
@@ -372,33 +225,12 @@ static int spatial_bennett(mm_result *res, mm_error *err)
     for (int k = 0; k < 4; k++)
         ss->x[k] = k + 1, ss->y[k] = fmax(sv[k], 1e-300);
     /* move it: th1 round the turn, th2 by Bennett's relation; the loop closes */
-    enum { NF = 72 };
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, NF, "input angle", "rad", 0.9);
-    mm_shape *loop = an ? mm_kin_shape(&d, "links", MM_SHAPE_POLYGON, 1, 4) : NULL, *ax[4];
-    static const char *const axn[4] = {"axis 1", "axis 2", "axis 3", "axis 4"};
-    for (int k = 0; k < 4; k++)
-        ax[k] = mm_kin_shape(&d, axn[k], MM_SHAPE_LINE, 1, 2);
-    if (!loop || !ax[3])
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    double worst = 0;
-    for (int f = 0; f < NF; f++) {
-        double th1 = 0.05 + (2 * M_PI - 0.1) * f / (NF - 1), g;   /* th1 = 0 folds the loop flat */
-        an->t[f] = th1;
-        mm_linkage_bennett(BA, BAL, BBE, th1, o, z, &g);
-        worst = fmax(worst, g);
-        for (int k = 0; k < 4; k++) {
-            double x, y, x1, y1;
-            view(o[k], &x, &y);
-            mm_kin_pt(loop, f, k, x, y);
-            view(mm_v3_sub(o[k], mm_v3_scale(z[k], 0.12)), &x, &y);
-            view(mm_v3_add(o[k], mm_v3_scale(z[k], 0.12)), &x1, &y1);
-            mm_kin_pt(ax[k], f, 0, x, y), mm_kin_pt(ax[k], f, 1, x1, y1);
-        }
-    }
+    double worst;
+    if ((rc = mm_kin_anim_bennett(res, BA, BAL, BBE, &worst, err)) != MM_OK)
+        return rc;
     /* twelve products of four transforms of size ~1: a few dozen eps */
     mm_res_check_abs(res, "Bennett's loop closes on every frame: |T1 T2 T3 T4 - I|", worst, 0, 64 * DBL_EPSILON);
-    return mm_kin_draw_finish(&d);
+    return MM_OK;
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -433,18 +265,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_mobility = {
-    .id = "kin-mobility",
-    .chapter = 2,
-    .section = "2.4.2",
+    .id = "kin-mobility", .chapter = 2, .section = "2.4.2",
     .title = "Mobility: counting degrees of freedom",
     .summary = "The Grubler-Kutzbach count of a linkage against the rank of its constraint equations: where the "
                "count is right, and the overconstrained linkages where it is wrong.",
     .tags = "kinematics, mechanism, mobility, degrees of freedom, Grubler, Kutzbach, overconstrained, Bennett",
     .theory = "exercises/kin/mobility.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .solve = solve,
 };

@@ -22,7 +22,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
 #include "mm_geom.h"
 #include "mm_kin.h"
@@ -61,33 +60,17 @@ static const mm_output outputs[] = {
     [O_AAY] = MM_SCALAR("a_avg_y", "average acceleration over [t, t+dt], y", "m/s^2"),
     [O_PATH] = MM_SERIES("path", "path of the particle", "m", "x", "m", .aspect = "equal", .figure = "path"),
     [O_SV] = MM_SERIES("v", "speed", "m/s", "t", "s", .figure = "speed"),
-    [O_FD] = MM_SERIES("fd_error", "worst error of the central difference of r vs Ridders' v", "m/s", "step h", "s",
-                       .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FD] = MM_KIN_FD_SERIES("fd_error", "worst error of the central difference of r vs Ridders' v", "m/s", "s"),
     [O_ANIM] = MM_ANIMATION("the particle moving along its path with its velocity and acceleration"),
 };
 
-/* The work: every plotted point, animation frame and quadrature node costs
- * a Ridders derivative (21 evaluations of x and y), each sample of the
- * difference study 48 more; an evaluation costs about 9 ns a character
- * (4.4 us for 500 characters).  (points + 480) * (len(x) + len(y)) <= 8e5
- * keeps the worst request near 150 ms; with the default expressions every
- * points is allowed. */
-#define MAX_WORK 8e5
-
-static double work(const mm_value *in)
-{
-    return (in[P_POINTS].x + 480) * fmax((double)(strlen(in[P_X].text) + strlen(in[P_Y].text)), 32);
-}
-
+/* The work (mm_kin_curve_work): every plotted point, animation frame and
+ * quadrature node costs a Ridders derivative, each sample of the
+ * difference study 48 more: as many as 480 points besides the plotted. */
 static int check(const mm_value *in, mm_error *err)
 {
-    if (work(in) > MAX_WORK)
-        return mm_error_set(err, MM_ERANGE, "points",
-                            "points must be at most %.0f with these expressions of %zu characters (each point "
-                            "costs 21 evaluations of x and y, and a long expression costs more to evaluate); got %.0f",
-                            floor(MAX_WORK / fmax((double)(strlen(in[P_X].text) + strlen(in[P_Y].text)), 32) - 480),
-                            strlen(in[P_X].text) + strlen(in[P_Y].text), in[P_POINTS].x);
-    return mm_kin_check_window(in[P_T0].x, in[P_T1].x, in[P_T].x, err);
+    int rc = mm_kin_curve_work(in[P_X].text, in[P_Y].text, in[P_POINTS].x, 480, err);
+    return rc != MM_OK ? rc : mm_kin_check_window(in[P_T0].x, in[P_T1].x, in[P_T].x, err);
 }
 
 typedef struct fd_ctx {
@@ -104,34 +87,6 @@ static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error 
         return mm_error_set(err, MM_ENONFINITE, "x", "the path is not finite at t = %g", t);
     /* the expression's own rounding, and t's: r moves by |v| eps |t| */
     *qerr = 8 * DBL_EPSILON * (fabs(q[0]) + fabs(q[1]) + f->vmax * fabs(t));
-    return MM_OK;
-}
-
-/* the integrals over [a, b] of v and a by composite 5-point
- * Gauss-Legendre on np panels, and the sums of the Ridders error estimates
- * they met (weighted like the values): iv, ev for v; ia, ea for a */
-static int gauss(mm_kin_curve *c, double a, double b, int np, double h0, double iv[2], double ev[2],
-                 double ia[2], double ea[2], mm_error *err)
-{
-    static const double x5[5] = {-0.906179845938663992797626878299, -0.538469310105683091036314420700, 0,
-                                 0.538469310105683091036314420700, 0.906179845938663992797626878299};
-    static const double w5[5] = {0.236926885056189087514264040720, 0.478628670499366468041291514836,
-                                 0.568888888888888888888888888889, 0.478628670499366468041291514836,
-                                 0.236926885056189087514264040720};
-    for (int i = 0; i < 2; i++)
-        iv[i] = ev[i] = ia[i] = ea[i] = 0;
-    double hw = 0.5 * (b - a) / np;
-    for (int p = 0; p < np; p++)
-        for (int j = 0; j < 5; j++) {
-            double r[2], d1[2], e1[2], d2[2], e2[2], t = a + hw * (2 * p + 1 + x5[j]);
-            int rc = mm_kin_curve_at(c, t, h0, r, d1, e1, d2, e2, err);
-            if (rc != MM_OK)
-                return rc;
-            for (int i = 0; i < 2; i++) {
-                iv[i] += w5[j] * hw * d1[i], ev[i] += w5[j] * hw * e1[i];
-                ia[i] += w5[j] * hw * d2[i], ea[i] += w5[j] * hw * e2[i];
-            }
-        }
     return MM_OK;
 }
 
@@ -166,8 +121,8 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
     /* 8 and 16 panels of Gauss-Legendre (10th order): |Q16 - Q8| bounds Q8's
      * error and far more than Q16's */
     double q8[2][2], q16[2][2], b8[2][2], b16[2][2];
-    if ((rc = gauss(c, t, t2, 8, h0, q8[0], b8[0], q8[1], b8[1], err)) != MM_OK ||
-        (rc = gauss(c, t, t2, 16, h0, q16[0], b16[0], q16[1], b16[1], err)) != MM_OK)
+    if ((rc = mm_kin_curve_integrals(c, t, t2, 8, h0, q8[0], b8[0], q8[1], b8[1], err)) != MM_OK ||
+        (rc = mm_kin_curve_integrals(c, t, t2, 16, h0, q16[0], b16[0], q16[1], b16[1], err)) != MM_OK)
         return rc;
     for (int k = 1; k <= 2; k++) {
         for (int i = 0; i < 2; i++) {
@@ -186,9 +141,8 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
 
     /* ---- the path over [t0, t1] ---- */
     mm_series *path = mm_res_series(res, O_PATH, n), *sv = mm_res_series(res, O_SV, n);
-    int ns = (n + 7) / 8;
-    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *dd = mm_res_alloc(res, 2 * (size_t)ns * sizeof *dd);
-    if (!path || !sv || !ts || !dd)
+    mm_kin_samples smp;
+    if (!path || !sv || mm_kin_samples_init(&smp, res, n, 2, err) != MM_OK)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(t0, t1, n, sv->x);
     double derr = 0, size = 0, vmax_path = 0;
@@ -200,48 +154,28 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
         sv->y[i] = hypot(vi[0], vi[1]);
         vmax_path = fmax(vmax_path, sv->y[i]);
         size = fmax(size, fmax(fabs(ri[0]), fabs(ri[1])));
-        if (i % 8 == 0 || i == n - 1) {
-            int j = i % 8 == 0 ? i / 8 : ns - 1;
-            ts[j] = sv->x[i], dd[2 * j] = vi[0], dd[2 * j + 1] = vi[1];
+        if (mm_kin_sample(&smp, i, sv->x[i], vi, NULL))
             derr = fmax(derr, fmax(ei[0], ei[1]));
-        }
     }
     /* the plain central difference against Ridders: error vs step, order 2 */
-    fd_ctx fc = {c, ts, vmax_path};
+    fd_ctx fc = {c, smp.t, vmax_path};
     mm_kin_fd fd;
-    if ((rc = mm_kin_fd_study(res, O_FD, "dr/dt", fd_pos, &fc, 2, NULL, ns, dd, 1, 0.5 * h0, 26, derr, &fd, err)) !=
-        MM_OK)
+    if ((rc = mm_kin_fd_study(res, O_FD, "dr/dt", fd_pos, &fc, 2, NULL, smp.ns, smp.d1, 1, 0.5 * h0, 26, derr, &fd,
+                              err)) != MM_OK)
         return rc;
 
     /* ---- the animation ---- */
     enum { NF = 72 };
-    double vmax = 0, amax = 0, V[NF][2], A[NF][2], P[NF][2], T[NF];
+    double V[NF][2], A[NF][2], P[NF][2], T[NF];
     for (int f = 0; f < NF; f++) {
         double e[2], g[2];
         T[f] = t0 + (t1 - t0) * f / (NF - 1);
         if ((rc = mm_kin_curve_at(c, T[f], h0, P[f], V[f], e, A[f], g, err)) != MM_OK)
             return rc;
-        vmax = fmax(vmax, hypot(V[f][0], V[f][1])), amax = fmax(amax, hypot(A[f][0], A[f][1]));
-    }
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, NF, "t", "s", 2 * size + 1e-6);
-    mm_shape *tr = an ? mm_kin_shape(&d, "path", MM_SHAPE_PATH, 0, n) : NULL;
-    mm_shape *pt = mm_kin_shape(&d, "particle", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *va = mm_kin_arrow_shape(&d, "v", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
-    if (!tr || !pt || !va || !aa)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    pt->radius = 0.015 * d.size;
-    for (int i = 0; i < n; i++)
-        mm_kin_pt(tr, 0, i, path->x[i], path->y[i]);
-    for (int f = 0; f < NF; f++) {
-        an->t[f] = T[f];
-        mm_kin_pt(pt, f, 0, P[f][0], P[f][1]);
-        mm_kin_arrow(va, f, P[f][0], P[f][1], V[f][0], V[f][1]);
-        mm_kin_arrow(aa, f, P[f][0], P[f][1], A[f][0], A[f][1]);
     }
     mm_res_method(res, "Ridders' extrapolation of central differences (derivatives of muParser expressions)", 0);
     mm_res_method_stat(res, "first_step", h0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_particle(res, NF, T, P, V, A, path, 2 * size + 1e-6, err);
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -255,19 +189,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_particle_path = {
-    .id = "kin-particle-path",
-    .chapter = 2,
-    .section = "2.2.1",
+    .id = "kin-particle-path", .chapter = 2, .section = "2.2.1",
     .title = "Position, velocity and acceleration of a particle",
     .summary = "A path typed as x(t), y(t): velocity and acceleration vectors, average against instantaneous, "
                "and the error of a finite difference against its step.",
     .tags = "kinematics, particle, velocity, acceleration, numerical differentiation, Ridders",
     .theory = "exercises/kin/particle_path.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

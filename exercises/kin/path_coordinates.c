@@ -17,7 +17,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
 #include "mm_geom.h"
 #include "mm_kin.h"
@@ -54,27 +53,17 @@ static const mm_output outputs[] = {
                          .figure = "path", .mark = "dots"),
     [O_SAT] = MM_SERIES("a_t", "tangential acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
     [O_SAN] = MM_SERIES("a_n", "normal acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
-    [O_FD] = MM_SERIES("fd_error", "worst error of the central difference of the speed vs a_t", "m/s^2", "step h", "s",
-                       .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FD] = MM_KIN_FD_SERIES("fd_error", "worst error of the central difference of the speed vs a_t", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the particle with its tangential and normal accelerations and the osculating circle"),
 };
 
-/* The work: every plotted point and animation frame costs a Ridders
- * derivative (21 evaluations of x and y), the difference study of the
- * speed 8 x 48 more; an evaluation costs about 9 ns a character.
- * (points + 460) * (len(x) + len(y)) <= 8e5 keeps the worst request near
- * 150 ms; with the default expressions every points is allowed. */
-#define MAX_WORK 8e5
-
+/* The work (mm_kin_curve_work): every plotted point and animation frame
+ * costs a Ridders derivative, the difference study of the speed 8 x 48
+ * more: as many as 460 points besides the plotted. */
 static int check(const mm_value *in, mm_error *err)
 {
-    double len = fmax((double)(strlen(in[P_X].text) + strlen(in[P_Y].text)), 32);
-    if ((in[P_POINTS].x + 460) * len > MAX_WORK)
-        return mm_error_set(err, MM_ERANGE, "points",
-                            "points must be at most %.0f with these expressions of %.0f characters (each point "
-                            "costs 21 evaluations of x and y, and a long expression costs more to evaluate); got %.0f",
-                            floor(MAX_WORK / len - 460), len, in[P_POINTS].x);
-    return mm_kin_check_window(in[P_T0].x, in[P_T1].x, in[P_T].x, err);
+    int rc = mm_kin_curve_work(in[P_X].text, in[P_Y].text, in[P_POINTS].x, 460, err);
+    return rc != MM_OK ? rc : mm_kin_check_window(in[P_T0].x, in[P_T1].x, in[P_T].x, err);
 }
 
 /* eq. (2) and its first-order error from Ridders' estimates e1, e2 */
@@ -106,6 +95,15 @@ static frenet path_coords(const double *r, const double *d1, const double *e1, c
         f.C = mm_v2_add((mm_v2){r[0], r[1]}, mm_v2_scale(f.N, 1 / f.k));
     }
     return f;
+}
+
+/* the path at t + e, for mm_kin_circle3 */
+static int point(double t, double e, mm_v2 *P, void *ctx)
+{
+    double q[2];
+    int ok = mm_kin_curve_eval(t + e, q, ctx) == MM_OK;
+    *P = (mm_v2){q[0], q[1]};
+    return ok;
 }
 
 typedef struct fd_ctx {
@@ -151,15 +149,7 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
             /* the circle through three points |v| h apart: the value at h/4
              * within 2 |R(h/2) - R(h/4)|, plus rounding and rho's own error */
             double R3[3], h = 0.02 * f.rho / f.v;
-            int ok = 1;
-            for (int k = 0; k < 3 && ok; k++) {
-                double P[3][2];
-                mm_v2 cc;
-                for (int j = 0; j < 3; j++)
-                    ok &= mm_kin_curve_eval(t + (j - 1) * h / (1 << k), P[j], c) == MM_OK;
-                ok = ok && mm_geom_circumcircle((mm_v2){P[0][0], P[0][1]}, (mm_v2){P[1][0], P[1][1]},
-                                                (mm_v2){P[2][0], P[2][1]}, &cc, &R3[k]);
-            }
+            int ok = mm_kin_circle3(point, c, t, h, R3);
             double ds = f.v * h / 4, rnd = 64 * DBL_EPSILON * (hypot(r[0], r[1]) + f.v * fabs(t) + f.rho) * f.rho *
                                            f.rho / (ds * ds);
             if (ok)
@@ -182,7 +172,7 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
     if (!path || !sat || !san || !ev || !ts || !dd)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(t0, t1, n, sat->x);
-    double size = 0, amax = 0, derr = 0, vmin = INFINITY;
+    double size = 0, amax = 0, derr = 0;
     int ne = 0, nfd = 0;
     for (int i = 0; i < n; i++) {
         double ri[2], vi[2], ei[2], ai[2], fi[2];
@@ -200,7 +190,6 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
         if (i % stride == 0 && nfd < ns && g.v > 1e3 * g.ev) {
             ts[nfd] = sat->x[i], dd[nfd] = g.at;
             derr = fmax(derr, g.eat);
-            vmin = fmin(vmin, g.v);
             nfd++;
         }
     }
@@ -226,38 +215,18 @@ static int run(mm_kin_curve *c, const mm_value *in, mm_result *res, mm_error *er
     }
 
     /* ---- the animation ---- */
-    enum { NF = 72, NC = 13 };
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, NF, "t", "s", 2 * size + 1e-6);
-    mm_shape *tr = an ? mm_kin_shape(&d, "path", MM_SHAPE_PATH, 0, n) : NULL;
-    mm_shape *pt = mm_kin_shape(&d, "particle", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *oc = mm_kin_shape(&d, "osculating circle", MM_SHAPE_LINE, 1, NC);
-    mm_shape *at = mm_kin_arrow_shape(&d, "a_t", "m/s^2", amax), *ann = mm_kin_arrow_shape(&d, "a_n", "m/s^2", amax);
-    if (!tr || !pt || !oc || !at || !ann)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    pt->radius = 0.015 * d.size;
-    for (int i = 0; i < n; i++)
-        mm_kin_pt(tr, 0, i, path->x[i], path->y[i]);
+    enum { NF = 72 };
+    mm_kin_osc_state fr[NF];
     for (int f2 = 0; f2 < NF; f2++) {
         double tf = t0 + (t1 - t0) * f2 / (NF - 1), ri[2], vi[2], ei[2], ai[2], fi[2];
-        an->t[f2] = tf;
         if ((rc = mm_kin_curve_at(c, tf, h0, ri, vi, ei, ai, fi, err)) != MM_OK)
             return rc;
         frenet g = path_coords(ri, vi, ei, ai, fi);
-        mm_kin_pt(pt, f2, 0, ri[0], ri[1]);
-        mm_kin_arrow(at, f2, ri[0], ri[1], g.at * g.T.x, g.at * g.T.y);
-        mm_kin_arrow(ann, f2, ri[0], ri[1], g.an * (g.k >= 0 ? g.N.x : -g.N.x), g.an * (g.k >= 0 ? g.N.y : -g.N.y));
-        /* the osculating circle, its radius capped at 3 sizes of the path */
-        double R = g.k != 0 ? fmin(g.rho, 3 * d.size) : 3 * d.size, s = g.k >= 0 ? 1 : -1;
-        mm_v2 C = mm_v2_add((mm_v2){ri[0], ri[1]}, mm_v2_scale(g.N, s * R));
-        for (int j = 0; j < NC; j++) {
-            mm_v2 q = mm_v2_add(C, mm_v2_scale(mm_v2_rotate(g.N, 2 * M_PI * j / (NC - 1)), -s * R));
-            mm_kin_pt(oc, f2, j, q.x, q.y);
-        }
+        mm_v2 an = {g.an * (g.k >= 0 ? g.N.x : -g.N.x), g.an * (g.k >= 0 ? g.N.y : -g.N.y)};   /* to the centre */
+        fr[f2] = (mm_kin_osc_state){tf, {ri[0], ri[1]}, mm_v2_scale(g.T, g.at), an, g.N, g.k, g.rho};
     }
-    (void)vmin;
     mm_res_method(res, "Ridders' extrapolation of central differences (derivatives of muParser expressions)", 0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_osculating(res, NF, fr, path, 2 * size + 1e-6, amax, err);
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -270,19 +239,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_path_coordinates = {
-    .id = "kin-path-coordinates",
-    .chapter = 2,
-    .section = "2.2.5",
+    .id = "kin-path-coordinates", .chapter = 2, .section = "2.2.5",
     .title = "Tangential and normal coordinates",
     .summary = "Along any path typed as x(t), y(t): tangential and normal accelerations, curvature, radius "
                "and centre of curvature, the osculating circle.",
     .tags = "kinematics, particle, tangential, normal, curvature, osculating circle",
     .theory = "exercises/kin/path_coordinates.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -61,10 +61,8 @@ static const mm_output outputs[] = {
     [O_SW] = MM_SERIES("omega", "angular velocity", "rad/s", "theta", "rad", .figure = "omega"),
     [O_SVB] = MM_SERIES("v_B", "velocity of B", "m/s", "theta", "rad", .figure = "v_B"),
     [O_SPATH] = MM_SERIES("path", "path of P", "m", "x", "m", .aspect = "equal", .figure = "path of P"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of P vs eq. (3)", "m/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs eq. (4)", "m/s^2", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of P vs eq. (3)", "m/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs eq. (4)", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the ladder sliding, its instantaneous centre on the space centrode, the body centrode "
                             "rolling on it, and the velocity field"),
 };
@@ -103,19 +101,15 @@ static double th_after(const ladder *m, double th0, double tau)
     return acos(fmax(-1, fmin(1, x / m->L)));
 }
 
-typedef struct fd_ctx {
-    const ladder *m;
-    const double *th;
-} fd_ctx;
-
-static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+/* P when A has moved on by h from the sample at the angle th */
+static int fd_pos(double th, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     (void)err;
-    fd_ctx *c = ctx;
-    lstate k = at(c->m, th_after(c->m, c->th[i], h));
+    const ladder *m = ctx;
+    lstate k = at(m, th_after(m, th, h));
     q[0] = k.P.x, q[1] = k.P.y;
     /* acos near its ends: x / L known to eps, theta to eps / sin theta */
-    *qerr = 8 * DBL_EPSILON * c->m->L / sin(k.th);
+    *qerr = 8 * DBL_EPSILON * m->L / sin(k.th);
     return MM_OK;
 }
 
@@ -171,10 +165,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- the slide from 80 to 10 degrees ---- */
     const double th1 = 80 * M_PI / 180, th2 = 10 * M_PI / 180;
     mm_series *sw = mm_res_series(res, O_SW, n), *svb = mm_res_series(res, O_SVB, n), *sp = mm_res_series(res, O_SPATH, n);
-    int ns = (n + 7) / 8;
-    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *d1 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *d1),
-           *d2 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *d2);
-    if (!sw || !svb || !sp || !ts || !d1 || !d2)
+    mm_kin_samples smp;
+    if (!sw || !svb || !sp || mm_kin_samples_init(&smp, res, n, 2, err) != MM_OK)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(th2, th1, n, sw->x);
     for (int i = 0; i < n; i++) {
@@ -182,68 +174,28 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         svb->x[i] = sw->x[i];
         sw->y[i] = ki.w, svb->y[i] = -m.L * cos(ki.th) * ki.w;
         sp->x[i] = ki.P.x, sp->y[i] = ki.P.y;
-        if (i % 8 == 0 || i == n - 1) {
-            int j = i % 8 == 0 ? i / 8 : ns - 1;
-            ts[j] = ki.th;
-            d1[2 * j] = ki.vP.x, d1[2 * j + 1] = ki.vP.y, d2[2 * j] = ki.aP.x, d2[2 * j + 1] = ki.aP.y;
-        }
+        mm_kin_sample2(&smp, i, ki.th, ki.vP, ki.aP);
     }
     if (m.vA != 0) {
-        fd_ctx fc = {&m, ts};
         /* a step that moves A by at most 2 % of L: stays within 10..80 degrees +- 2 */
         double h0 = 0.02 * m.L / fabs(m.vA);
-        int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dP/dt", "d2P/dt2", fd_pos, &fc, 2, NULL, ns, d1, d2, h0, 0, 0, err);
+        int rc = mm_kin_fd_samples(res, O_FDV, O_FDA, "dP/dt", "d2P/dt2", fd_pos, &m, &smp, h0, err);
         if (rc != MM_OK)
             return rc;
     }
 
     /* ---- the animation: A moving at vA from 80 to 10 degrees (or back) ---- */
-    enum { NF = 72, NV = 5, NC = 17 };
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, NF, "t", "s", 1.3 * m.L);
-    mm_shape *fl = an ? mm_kin_shape(&d, "floor", MM_SHAPE_LINE, 0, 2) : NULL;
-    mm_shape *wl = mm_kin_shape(&d, "wall", MM_SHAPE_LINE, 0, 2);
-    mm_shape *lad = mm_kin_shape(&d, "ladder", MM_SHAPE_LINE, 1, 2);
-    mm_shape *sc = mm_kin_shape(&d, "space centrode", MM_SHAPE_PATH, 0, 25);
-    mm_shape *bc = mm_kin_shape(&d, "body centrode", MM_SHAPE_LINE, 1, NC);
-    mm_shape *ic = mm_kin_shape(&d, "instantaneous centre", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *pp = mm_kin_shape(&d, "path of P", MM_SHAPE_PATH, 0, n);
-    mm_shape *va[NV];
-    double vmax = fabs(m.vA) / sin(th2);                        /* B's speed at 10 degrees */
-    for (int j = 0; j < NV; j++)
-        va[j] = mm_kin_arrow_shape(&d, j == 0 ? "v_A" : j == NV - 1 ? "v_B" : "v", "m/s", vmax);
-    if (!fl || !wl || !lad || !sc || !bc || !ic || !pp || !va[NV - 1])
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    fl->style = wl->style = "ground";
-    mm_kin_pt(fl, 0, 0, 0, 0), mm_kin_pt(fl, 0, 1, 1.1 * m.L, 0);
-    mm_kin_pt(wl, 0, 0, 0, 0), mm_kin_pt(wl, 0, 1, 0, 1.1 * m.L);
-    ic->radius = 0.02 * m.L;
-    ic->style = "highlight";
-    for (int j = 0; j < 25; j++)
-        mm_kin_pt(sc, 0, j, m.L * cos(M_PI / 2 * j / 24), m.L * sin(M_PI / 2 * j / 24));
-    for (int i = 0; i < n; i++)
-        mm_kin_pt(pp, 0, i, sp->x[i], sp->y[i]);
+    enum { NF = 72 };
     double ta = m.vA >= 0 ? th1 : th2, tb = m.vA >= 0 ? th2 : th1;       /* A moves away (or in) */
     double T = m.vA != 0 ? m.L * (cos(tb) - cos(ta)) / m.vA : 1;
+    mm_kin_ladder_state fr[NF];
     for (int f = 0; f < NF; f++) {
-        double tf = T * f / (NF - 1), thf = m.vA != 0 ? th_after(&m, ta, tf) : th;
-        an->t[f] = tf;
-        lstate kf = at(&m, thf);
-        mm_kin_pt(lad, f, 0, kf.A.x, kf.A.y), mm_kin_pt(lad, f, 1, kf.B.x, kf.B.y);
-        mm_kin_pt(ic, f, 0, kf.I.x, kf.I.y);
-        mm_v2 mid = mm_v2_scale(mm_v2_add(kf.A, kf.B), 0.5);
-        for (int j = 0; j < NC; j++) {                           /* the circle on AB as diameter */
-            mm_v2 q = mm_v2_add(mid, mm_v2_polar(0.5 * m.L, 2 * M_PI * j / (NC - 1)));
-            mm_kin_pt(bc, f, j, q.x, q.y);
-        }
-        for (int j = 0; j < NV; j++) {                           /* the velocity field along AB */
-            mm_v2 Pj = mm_v2_add(kf.A, mm_v2_scale(mm_v2_sub(kf.B, kf.A), (double)j / (NV - 1)));
-            mm_v2 vj = mm_v2_scale(mm_v2_perp(mm_v2_sub(Pj, kf.I)), kf.w);
-            mm_kin_arrow(va[j], f, Pj.x, Pj.y, vj.x, vj.y);
-        }
+        double tf = T * f / (NF - 1);
+        lstate kf = at(&m, m.vA != 0 ? th_after(&m, ta, tf) : th);
+        fr[f] = (mm_kin_ladder_state){tf, kf.A, kf.B, kf.I, kf.w};
     }
     mm_res_method(res, "closed form (instantaneous centre), checked by central differences", 0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_ladder(res, NF, fr, m.L, sp, fabs(m.vA) / sin(th2), err);   /* vmax: B's speed at 10 deg */
 }
 
 static const char *const references[] = {
@@ -251,18 +203,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_plane_motion = {
-    .id = "kin-plane-motion",
-    .chapter = 2,
-    .section = "2.3.3",
+    .id = "kin-plane-motion", .chapter = 2, .section = "2.3.3",
     .title = "Plane motion: the sliding ladder",
     .summary = "A ladder sliding down a wall: instantaneous centre, centrodes, the velocity field, angular "
                "acceleration and the acceleration pole.",
     .tags = "kinematics, rigid body, plane motion, instantaneous centre, centrode, acceleration pole",
     .theory = "exercises/kin/plane_motion.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .solve = solve,
 };

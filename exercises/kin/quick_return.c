@@ -25,6 +25,8 @@
 #include <string.h>
 
 #include "mm_kin.h"
+#include "mm_kin_linkage.h"
+#include "mm_linkage.h"
 #include "mm_mech.h"
 
 enum { P_R, P_D, P_H, P_W, P_TH, P_POINTS };
@@ -63,77 +65,14 @@ static const mm_output outputs[] = {
     [O_SV] = MM_SERIES("v_ram", "ram velocity", "m/s", "crank angle", "rad", .figure = "ram velocity"),
     [O_SA] = MM_SERIES("a_ram", "ram acceleration", "m/s^2", "crank angle", "rad", .figure = "ram acceleration"),
     [O_STH4] = MM_SERIES("theta4", "lever angle", "rad", "crank angle", "rad", .figure = "lever angle"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of (theta4, X) vs eq. (2)'s derivative",
-                        "", "step h", "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference", "", "step h", "rad", .x_scale = "log",
-                        .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v",
+                               "worst error of the central difference of (theta4, X) vs eq. (2)'s derivative", "", "rad"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference", "", "rad"),
     [O_ANIM] = MM_ANIMATION("crank, slotted lever and ram over a turn, with the ram's velocity"),
 };
 
-typedef struct qr {
-    double r, d, H;
-} qr;
-
-/* eq. (2) and its derivatives by th2 */
-typedef struct qr_pos {
-    double t4, t4p, t4pp, X, Xp, Xpp;
-} qr_pos;
-
-static qr_pos closed(const qr *m, double th)
-{
-    qr_pos p;
-    double c = cos(th), s = sin(th), N = m->r * c, D = m->d + m->r * s, q = N * N + D * D;
-    p.t4 = atan2(D, N);
-    p.t4p = m->r * (m->r + m->d * s) / q;                               /* d/dth2 of atan2(D, N) */
-    double qp = 2 * m->d * m->r * c;                                      /* dq/dth2 */
-    p.t4pp = (m->r * m->d * c * q - m->r * (m->r + m->d * s) * qp) / (q * q);
-    p.X = m->H * N / D;
-    p.Xp = -m->H * m->r * (m->d * s + m->r) / (D * D);
-    p.Xpp = -m->H * m->r * c * (m->d * D - 2 * m->r * (m->d * s + m->r)) / (D * D * D);
-    return p;
-}
-
-/* eq. (1) for mm_mech: q = (th4, s, X, s2), t = th2 */
-static int phi_fn(const double *q, double t, double *F, void *ctx)
-{
-    const qr *m = ctx;
-    double c4 = cos(q[0]), s4 = sin(q[0]);
-    F[0] = q[1] * c4 - m->r * cos(t);
-    F[1] = q[1] * s4 - m->d - m->r * sin(t);
-    F[2] = q[3] * c4 - q[2];
-    F[3] = q[3] * s4 - m->H;
-    return 0;
-}
-
-static int jac_fn(const double *q, double t, double *J, void *ctx)
-{
-    (void)t, (void)ctx;
-    double c4 = cos(q[0]), s4 = sin(q[0]);
-    double Jv[16] = {-q[1] * s4, c4, 0, 0, q[1] * c4, s4, 0, 0, -q[3] * s4, 0, -1, c4, q[3] * c4, 0, 0, s4};
-    memcpy(J, Jv, sizeof Jv);
-    return 0;
-}
-
-static int nu_fn(const double *q, double t, double *nu, void *ctx)
-{
-    (void)q;
-    const qr *m = ctx;
-    nu[0] = -m->r * sin(t), nu[1] = m->r * cos(t), nu[2] = nu[3] = 0;
-    return 0;
-}
-
-static int gamma_fn(const double *q, const double *qd, double t, double *g, void *ctx)
-{
-    const qr *m = ctx;
-    double c4 = cos(q[0]), s4 = sin(q[0]), w = qd[0];
-    g[0] = 2 * qd[1] * s4 * w + q[1] * c4 * w * w - m->r * cos(t);
-    g[1] = -2 * qd[1] * c4 * w + q[1] * s4 * w * w - m->r * sin(t);
-    g[2] = 2 * qd[3] * s4 * w + q[3] * c4 * w * w;
-    g[3] = -2 * qd[3] * c4 * w + q[3] * s4 * w * w;
-    return 0;
-}
-
-static const unsigned char is_length[4] = {0, 1, 1, 1};
+typedef mm_quick_return qr;
+typedef mm_qr_pos qr_pos;
 
 static int check(const mm_value *in, mm_error *err)
 {
@@ -146,13 +85,6 @@ static int check(const mm_value *in, mm_error *err)
         return mm_error_set(err, MM_ERANGE, "H", "the ram's line must pass above the crank circle, H > d + r = %g m; "
                             "got %g m", d + r, H);
     return MM_OK;
-}
-
-static void start(const qr *m, double th, double *q)
-{
-    qr_pos p = closed(m, th);
-    q[0] = p.t4 + 0.01, q[1] = hypot(m->r * cos(th), m->d + m->r * sin(th)) * 1.01;   /* a rough guess */
-    q[2] = p.X * 0.99, q[3] = m->H / sin(p.t4) * 1.01;
 }
 
 typedef struct fd_ctx {
@@ -181,8 +113,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* the lever is drawn long enough to reach the ram at its dead centres */
     const double L = 1.15 * m.H * m.d / sqrt((m.d - m.r) * (m.d + m.r));
     const int n = (int)in[P_POINTS].x;
-    mm_mech_problem prob = {.n = 4, .m = 4, .phi = phi_fn, .jac = jac_fn, .nu = nu_fn, .gamma = gamma_fn,
-                            .is_length = is_length, .params = &m};
+    mm_mech_problem prob;
+    mm_linkage_qr_problem(&m, &prob);
     mm_mech_options opt;
     mm_mech_options_init(&opt);
     opt.length = m.H, opt.phi_scale = m.H + m.d + m.r + L;
@@ -193,7 +125,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     const double al = asin(m.r / m.d), root = sqrt((m.d - m.r) * (m.d + m.r));
 
     /* ---- at theta2: the closed form printed, Newton and the solves checked ---- */
-    qr_pos c = closed(&m, th);
+    qr_pos c = mm_linkage_qr_closed(&m, th);
     mm_res_scalar(res, O_TH4, c.t4);
     mm_res_scalar(res, O_W4, w * c.t4p);
     mm_res_scalar(res, O_A4, w * w * c.t4pp);
@@ -201,7 +133,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_V, w * c.Xp);
     mm_res_scalar(res, O_A, w * w * c.Xpp);
     double q[4], qd[4], qdd[4];
-    start(&m, th, q);
+    mm_linkage_qr_guess(&m, th, q);
     mm_mech_info info;
     if ((rc = mm_mech_position(&prob, &opt, wk, th, q, &info, err)) != MM_OK ||
         (rc = mm_mech_velocity(&prob, &opt, wk, th, q, qd, NULL, err)) != MM_OK ||
@@ -238,13 +170,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         goto out;
     }
     mm_kin_grid(0, 2 * M_PI, n, sx->x);
-    start(&m, 0, Q);
+    mm_linkage_qr_guess(&m, 0, Q);
     mm_mech_sweep s = {.nt = n, .t = sx->x, .q = Q, .qd = QD, .qdd = QDD, .watch = 2};
     if ((rc = mm_mech_sweep_solve(&prob, &opt, wk, &s, err)) != MM_OK)
         goto out;
     double worst = -1, wv = 0, wr = 0, wt = 1;
     for (int i = 0; i < n; i++) {
-        qr_pos ci = closed(&m, sx->x[i]);
+        qr_pos ci = mm_linkage_qr_closed(&m, sx->x[i]);
         sv->x[i] = sa->x[i] = st->x[i] = sx->x[i];
         sx->y[i] = Q[4 * i + 2], sv->y[i] = w * QD[4 * i + 2], sa->y[i] = w * w * QDD[4 * i + 2];
         st->y[i] = Q[4 * i];
@@ -297,48 +229,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             goto out;
     }
 
-    /* ---- the animation ---- */
-    {
-        enum { NF = 72 };
-        double t[NF], qa[4 * NF], qva[4 * NF], vmax = 0;
-        for (int f = 0; f < NF; f++)
-            t[f] = 2 * M_PI * f / NF;
-        memcpy(qa, Q, 4 * sizeof *qa);
-        mm_mech_sweep sa2 = {.nt = NF, .t = t, .q = qa, .qd = qva, .watch = -1};
-        if ((rc = mm_mech_sweep_solve(&prob, &opt, wk, &sa2, err)) != MM_OK)
-            goto out;
-        for (int f = 0; f < NF; f++)
-            vmax = fmax(vmax, fabs(w * qva[4 * f + 2]));
-        mm_kin_draw d;
-        double xr = stroke / 2;
-        mm_anim *an = mm_kin_draw_start(&d, res, NF, "crank angle", "rad", fmax(L, 2 * xr) + 0.2 * m.H);
-        mm_shape *p4 = an ? mm_kin_pivot(&d, "O4", 0, 0) : NULL, *p2 = mm_kin_pivot(&d, "O2", 0, m.d);
-        mm_shape *guide = mm_kin_shape(&d, "ram guide", MM_SHAPE_LINE, 0, 2);
-        mm_shape *crank = mm_kin_shape(&d, "crank", MM_SHAPE_LINE, 1, 2);
-        mm_shape *lever = mm_kin_shape(&d, "lever", MM_SHAPE_LINE, 1, 2);
-        mm_shape *blk = mm_kin_shape(&d, "slider block", MM_SHAPE_POLYGON, 1, 4);
-        mm_shape *ram = mm_kin_shape(&d, "ram", MM_SHAPE_POLYGON, 1, 4);
-        mm_shape *va = mm_kin_arrow_shape(&d, "v_ram", "m/s", vmax);
-        if (!p4 || !p2 || !guide || !crank || !lever || !blk || !ram || !va) {
-            rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
-            goto out;
-        }
-        guide->style = "ground";
-        double bh = 0.06 * m.H;
-        mm_kin_pt(guide, 0, 0, -xr - 0.6 * m.H, m.H + bh), mm_kin_pt(guide, 0, 1, xr + 0.6 * m.H, m.H + bh);
-        for (int f = 0; f < NF; f++) {
-            an->t[f] = t[f];
-            double *qf = qa + 4 * f, Ax = m.r * cos(t[f]), Ay = m.d + m.r * sin(t[f]);
-            mm_kin_pt(crank, f, 0, 0, m.d), mm_kin_pt(crank, f, 1, Ax, Ay);
-            mm_kin_pt(lever, f, 0, 0, 0), mm_kin_pt(lever, f, 1, L * cos(qf[0]), L * sin(qf[0]));
-            mm_kin_block(blk, f, Ax, Ay, 0.08 * m.H, 0.04 * m.H, qf[0]);
-            mm_kin_block(ram, f, qf[2], m.H, 0.5 * m.H, bh, 0);
-            mm_kin_arrow(va, f, qf[2], m.H + 2 * bh, w * qva[4 * f + 2], 0);
-        }
-        mm_kin_draw_finish(&d);
-    }
     mm_res_method(res, "Newton-Raphson on the loop closure, Jacobian solves for velocity and acceleration", 0);
     mm_res_method_stat(res, "error_estimate", s.err_est);
+    rc = mm_kin_qr_animate(&m, w, L, stroke, &prob, &opt, wk, Q, res, err);
 out:
     mm_mech_work_free(wk);
     return rc;
@@ -350,19 +243,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_quick_return = {
-    .id = "kin-quick-return",
-    .chapter = 2,
-    .section = "2.4.4",
+    .id = "kin-quick-return", .chapter = 2, .section = "2.4.4",
     .title = "Quick-return mechanism: crank and slotted lever",
     .summary = "A shaper's crank and slotted lever: ram position, velocity and acceleration, the stroke, the "
                "dead centres and the time ratio of cutting to return.",
     .tags = "kinematics, mechanism, quick return, shaper, slotted lever, time ratio",
     .theory = "exercises/kin/quick_return.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -67,10 +67,8 @@ static const mm_output outputs[] = {
                           .role = "reference"),
     [O_SV] = MM_SERIES("v", "absolute speed", "m/s", "t", "s", .figure = "speed"),
     [O_SA] = MM_SERIES("a_coriolis", "Coriolis acceleration", "m/s^2", "t", "s", .figure = "Coriolis"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of r vs eq. (2)", "m/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs eq. (3)", "m/s^2", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of r vs eq. (2)", "m/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs eq. (3)", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the turning table with its slot and slider, the absolute path, v and the Coriolis term"),
 };
 
@@ -103,22 +101,23 @@ static terms at(const table *p, double t)
     return k;
 }
 
+/* the animation's frame at t */
+static void frame(double t, mm_kin_slot_state *k, void *ctx)
+{
+    terms a = at(ctx, t);
+    *k = (mm_kin_slot_state){a.th, a.r, a.v, a.vrel, a.acor, a.a};
+}
+
 static int check(const mm_value *in, mm_error *err)
 {
     return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
 }
 
-typedef struct fd_ctx {
-    const table *p;
-    const double *t;
-} fd_ctx;
-
-static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+static int fd_pos(double ts, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     (void)err;
-    fd_ctx *c = ctx;
-    const table *p = c->p;
-    double t = c->t[i] + h;
+    const table *p = ctx;
+    double t = ts + h;
     terms k = at(p, t);
     q[0] = k.r.x, q[1] = k.r.y;
     /* theta and s are sums of three rounded terms */
@@ -168,76 +167,36 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- over [0, t_end] ---- */
     mm_series *path = mm_res_series(res, O_PATH, n), *slot = mm_res_series(res, O_RPATH, 2);
     mm_series *sv = mm_res_series(res, O_SV, n), *sa = mm_res_series(res, O_SA, n);
-    int ns = (n + 7) / 8;
-    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *d1 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *d1),
-           *d2 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *d2);
-    if (!path || !slot || !sv || !sa || !ts || !d1 || !d2)
+    mm_kin_samples smp;
+    if (!path || !slot || !sv || !sa || mm_kin_samples_init(&smp, res, n, 2, err) != MM_OK)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(0, t_end, n, sv->x);
-    double vmax = 0, cmax = 0, amax = 0, size = 0;
+    double vmax = 0, amax = 0, size = 0;
     for (int i = 0; i < n; i++) {
         terms ki = at(&p, sv->x[i]);
         path->x[i] = ki.r.x, path->y[i] = ki.r.y;
         sa->x[i] = sv->x[i];
         sv->y[i] = mm_v2_norm(ki.v), sa->y[i] = mm_v2_norm(ki.acor);
-        vmax = fmax(vmax, sv->y[i]), cmax = fmax(cmax, sa->y[i]), amax = fmax(amax, mm_v2_norm(ki.a));
+        vmax = fmax(vmax, sv->y[i]), amax = fmax(amax, mm_v2_norm(ki.a));
         size = fmax(size, mm_v2_norm(ki.r));
-        if (i % 8 == 0 || i == n - 1) {
-            int j = i % 8 == 0 ? i / 8 : ns - 1;
-            ts[j] = sv->x[i];
-            d1[2 * j] = ki.v.x, d1[2 * j + 1] = ki.v.y, d2[2 * j] = ki.a.x, d2[2 * j + 1] = ki.a.y;
-        }
+        mm_kin_sample2(&smp, i, sv->x[i], ki.v, ki.a);
     }
     size = fmax(size, fabs(p.h)) * 1.2 + 1e-3;
     mm_v2 s0 = mm_v2_rotate((mm_v2){-size, p.h}, k.th), s1 = mm_v2_rotate((mm_v2){size, p.h}, k.th);
     slot->x[0] = s0.x, slot->y[0] = s0.y, slot->x[1] = s1.x, slot->y[1] = s1.y;
 
     /* the Coriolis theorem against differences of the absolute position */
-    fd_ctx fc = {&p, ts};
     double wm = fmax(fabs(p.w), fabs(p.w + p.al * t_end)), h0 = 0.05 / fmax(1, wm);
-    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dr/dt = v_rel + w x r", "d2r/dt2 = a_rel + transport + Coriolis", fd_pos,
-                          &fc, 2, NULL, ns, d1, d2, h0, 0, 0, err);
+    int rc = mm_kin_fd_samples(res, O_FDV, O_FDA, "dr/dt = v_rel + w x r", "d2r/dt2 = a_rel + transport + Coriolis",
+                               fd_pos, &p, &smp, h0, err);
     if (rc != MM_OK)
         return rc;
 
     /* ---- the animation ---- */
     double t_show;
     int nf = mm_scene_frames(t_end, wm > 0 ? 2 * M_PI / wm : 0, &t_show);
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 2 * size);
-    mm_shape *disc = an ? mm_kin_shape(&d, "table", MM_SHAPE_POLYGON, 1, 24) : NULL;
-    mm_shape *sl = mm_kin_shape(&d, "slot", MM_SHAPE_LINE, 1, 2);
-    mm_shape *blk = mm_kin_shape(&d, "slider", MM_SHAPE_POLYGON, 1, 4);
-    mm_shape *piv = mm_kin_pivot(&d, "O", 0, 0);
-    mm_shape *tr = mm_kin_shape(&d, "absolute path", MM_SHAPE_PATH, 0, n);
-    mm_shape *vv = mm_kin_arrow_shape(&d, "v", "m/s", vmax), *vr = mm_kin_arrow_shape(&d, "v_rel", "m/s", vmax);
-    mm_shape *ac = mm_kin_arrow_shape(&d, "a_coriolis", "m/s^2", amax), *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
-    if (!disc || !sl || !blk || !piv || !tr || !vv || !vr || !ac || !aa)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    vr->scale = vv->scale;                                 /* velocities on one scale, accelerations on another */
-    ac->scale = aa->scale;
-    for (int i = 0; i < n; i++)
-        mm_kin_pt(tr, 0, i, path->x[i], path->y[i]);
-    for (int f = 0; f < nf; f++) {
-        double tf = t_show * f / (nf - 1);
-        an->t[f] = tf;
-        terms kf = at(&p, tf);
-        for (int j = 0; j < 24; j++) {
-            mm_v2 q = mm_v2_polar(size * (j == 0 ? 0.92 : 1), kf.th + 2 * M_PI * j / 24);   /* a notch shows the turn */
-            mm_kin_pt(disc, f, j, q.x, q.y);
-        }
-        mm_v2 a0 = mm_v2_rotate((mm_v2){-size, p.h}, kf.th), a1 = mm_v2_rotate((mm_v2){size, p.h}, kf.th);
-        mm_kin_pt(sl, f, 0, a0.x, a0.y);
-        mm_kin_pt(sl, f, 1, a1.x, a1.y);
-        mm_kin_block(blk, f, kf.r.x, kf.r.y, 0.08 * size, 0.05 * size, kf.th);
-        mm_kin_arrow(vv, f, kf.r.x, kf.r.y, kf.v.x, kf.v.y);
-        mm_kin_arrow(vr, f, kf.r.x, kf.r.y, kf.vrel.x, kf.vrel.y);
-        mm_kin_arrow(ac, f, kf.r.x, kf.r.y, kf.acor.x, kf.acor.y);
-        mm_kin_arrow(aa, f, kf.r.x, kf.r.y, kf.a.x, kf.a.y);
-    }
-    (void)cmax;
     mm_res_method(res, "closed form (moving frame), checked by central differences", 0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_turntable(res, nf, t_show, size, p.h, path, vmax, amax, frame, &p, err);
 }
 
 static const char *const references[] = {
@@ -245,19 +204,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_relative_motion = {
-    .id = "kin-relative-motion",
-    .chapter = 2,
-    .section = "2.2.4",
+    .id = "kin-relative-motion", .chapter = 2, .section = "2.2.4",
     .title = "Relative motion: a slider on a turntable",
     .summary = "Absolute velocity and acceleration from the relative motion in a turning frame: transport "
                "terms and the Coriolis acceleration.",
     .tags = "kinematics, moving frame, relative motion, Coriolis, transport acceleration",
     .theory = "exercises/kin/relative_motion.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -62,10 +62,8 @@ static const mm_output outputs[] = {
     [O_SV] = MM_SERIES("v", "speed of P", "m/s", "t", "s", .figure = "speed"),
     [O_SAT] = MM_SERIES("a_t", "tangential acceleration", "m/s^2", "t", "s", .figure = "acceleration"),
     [O_SAN] = MM_SERIES("a_n", "normal acceleration", "m/s^2", "t", "s", .figure = "acceleration"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of P vs v_P", "m/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs a_P", "m/s^2", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of P vs v_P", "m/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs a_P", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the body seen along its axis, P's path, velocity and acceleration"),
 };
 
@@ -101,21 +99,25 @@ static mm_v3 pos(const body *b, double t, mm_v3 *v, mm_v3 *a)
     return mm_v3_add(mm_v3_scale(b->vax, t), r);
 }
 
-typedef struct fd_ctx {
-    const body *b;
-    const double *t;
-} fd_ctx;
+/* the animation's frame at t */
+static void frame(double t, mm_kin_axis_state *k, void *ctx)
+{
+    const body *b = ctx;
+    k->th = b->w0 * t + 0.5 * b->al * t * t;
+    k->P = pos(b, t, &k->v, &k->a);
+    k->O = mm_v3_scale(b->vax, t);
+}
 
-static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+static int fd_pos(double ts, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     (void)err;
-    fd_ctx *c = ctx;
-    double t = c->t[i] + h;
-    mm_v3 P = pos(c->b, t, NULL, NULL);
+    const body *b = ctx;
+    double t = ts + h;
+    mm_v3 P = pos(b, t, NULL, NULL);
     q[0] = P.x, q[1] = P.y, q[2] = P.z;
     /* Rodrigues' matrix from a rounded angle theta(t): |r| (eps |theta| + 8 eps) */
-    double th = fabs(c->b->w0 * t) + fabs(0.5 * c->b->al * t * t);
-    *qerr = mm_v3_norm(c->b->r0) * (4 * th + 16) * DBL_EPSILON + 4 * DBL_EPSILON * mm_v3_norm(c->b->vax) * t;
+    double th = fabs(b->w0 * t) + fabs(0.5 * b->al * t * t);
+    *qerr = mm_v3_norm(b->r0) * (4 * th + 16) * DBL_EPSILON + 4 * DBL_EPSILON * mm_v3_norm(b->vax) * t;
     return MM_OK;
 }
 
@@ -159,11 +161,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!sv || !sat || !san)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(0, t_end, n, sv->x);
-    int ns = (n + 7) / 8;
-    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *d1 = mm_res_alloc(res, 3 * (size_t)ns * sizeof *d1),
-           *d2 = mm_res_alloc(res, 3 * (size_t)ns * sizeof *d2);
-    if (!ts || !d1 || !d2)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    mm_kin_samples smp;
+    if (mm_kin_samples_init(&smp, res, n, 3, err) != MM_OK)
+        return MM_ENOMEM;
     double vmax = 0, amax = 0;
     for (int i = 0; i < n; i++) {
         double ti = sv->x[i], wi = b.w0 + b.al * ti;
@@ -172,58 +172,19 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         sat->x[i] = san->x[i] = ti;
         sv->y[i] = mm_v3_norm(vi), sat->y[i] = b.al * rho, san->y[i] = wi * wi * rho;
         vmax = fmax(vmax, sv->y[i]), amax = fmax(amax, mm_v3_norm(ai));
-        if (i % 8 == 0 || i == n - 1) {
-            int j = i % 8 == 0 ? i / 8 : ns - 1;
-            ts[j] = ti;
-            d1[3 * j] = vi.x, d1[3 * j + 1] = vi.y, d1[3 * j + 2] = vi.z;
-            d2[3 * j] = ai.x, d2[3 * j + 1] = ai.y, d2[3 * j + 2] = ai.z;
-        }
+        mm_kin_sample3(&smp, i, ti, vi, ai);
     }
-    fd_ctx fc = {&b, ts};
     double wm = fmax(fabs(b.w0), fabs(b.w0 + b.al * t_end)), h0 = 0.05 / fmax(1, wm);
-    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dP/dt", "d2P/dt2", fd_pos, &fc, 3, NULL, ns, d1, d2, h0, 0, 0, err);
+    int rc = mm_kin_fd_samples(res, O_FDV, O_FDA, "dP/dt", "d2P/dt2", fd_pos, &b, &smp, h0, err);
     if (rc != MM_OK)
         return rc;
 
-    /* ---- the animation: seen along the axis (e1, e2 across it) ---- */
-    mm_v3 e1 = fabs(b.u.x) < 0.9 ? (mm_v3){1, 0, 0} : (mm_v3){0, 1, 0};
-    e1 = mm_v3_sub(e1, mm_v3_scale(b.u, mm_v3_dot(e1, b.u)));
-    e1 = mm_v3_scale(e1, 1 / mm_v3_norm(e1));
-    mm_v3 e2 = mm_v3_cross(b.u, e1);
+    /* ---- the animation: seen along the axis ---- */
     double t_show;
     int nf = mm_scene_frames(t_end, wm > 0 ? 2 * M_PI / wm : 0, &t_show);
     double R = fmax(rho, 0.05 * mm_v3_norm(b.r0) + 1e-3), drift = mm_v3_norm(b.vax) * t_show;
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 2.6 * R + drift);
-    mm_shape *plate = an ? mm_kin_shape(&d, "body", MM_SHAPE_POLYGON, 1, 6) : NULL;
-    mm_shape *ax = mm_kin_shape(&d, "axis", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *arm = mm_kin_shape(&d, "radius to P", MM_SHAPE_LINE, 1, 2);
-    mm_shape *tr = mm_kin_shape(&d, "path of P", MM_SHAPE_PATH, 0, 121);
-    mm_shape *vv = mm_kin_arrow_shape(&d, "v_P", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a_P", "m/s^2", amax);
-    if (!plate || !ax || !arm || !tr || !vv || !aa)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    ax->radius = 0.04 * R;
-    for (int k = 0; k <= 120; k++) {
-        mm_v3 Pk = pos(&b, t_show * k / 120, NULL, NULL);
-        mm_kin_pt(tr, 0, k, mm_v3_dot(Pk, e1), mm_v3_dot(Pk, e2));
-    }
-    double ang0 = atan2(mm_v3_dot(b.r0, e2), mm_v3_dot(b.r0, e1));
-    for (int f = 0; f < nf; f++) {
-        double tf = t_show * f / (nf - 1), th = b.w0 * tf + 0.5 * b.al * tf * tf;
-        an->t[f] = tf;
-        mm_v3 vf, af, Pf = pos(&b, tf, &vf, &af), O = mm_v3_scale(b.vax, tf);
-        double ox = mm_v3_dot(O, e1), oy = mm_v3_dot(O, e2);
-        for (int k = 0; k < 6; k++)                      /* a hexagonal plate turning with the body */
-            mm_kin_pt(plate, f, k, ox + 1.3 * R * cos(ang0 + th + M_PI * k / 3), oy + 1.3 * R * sin(ang0 + th + M_PI * k / 3));
-        mm_kin_pt(ax, f, 0, ox, oy);
-        double px = mm_v3_dot(Pf, e1), py = mm_v3_dot(Pf, e2);
-        mm_kin_pt(arm, f, 0, ox, oy);
-        mm_kin_pt(arm, f, 1, px, py);
-        mm_kin_arrow(vv, f, px, py, mm_v3_dot(vf, e1), mm_v3_dot(vf, e2));
-        mm_kin_arrow(aa, f, px, py, mm_v3_dot(af, e1), mm_v3_dot(af, e2));
-    }
     mm_res_method(res, "closed form (cross products), positions by Rodrigues' rotation", 0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_axis(res, nf, t_show, b.u, b.r0, R, drift, vmax, amax, frame, &b, err);
 }
 
 static const char *const references[] = {
@@ -231,19 +192,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_rigid_rotation = {
-    .id = "kin-rigid-rotation",
-    .chapter = 2,
-    .section = "2.3.2",
+    .id = "kin-rigid-rotation", .chapter = 2, .section = "2.3.2",
     .title = "Translation and rotation about a fixed axis",
     .summary = "Velocity and acceleration of any point of a body turning about a fixed axis: omega x r, "
                "the tangential and normal parts, and a translation added.",
     .tags = "kinematics, rigid body, rotation, fixed axis, translation, cross product",
     .theory = "exercises/kin/rigid_rotation.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -24,6 +24,7 @@
 #include <float.h>
 #include <math.h>
 
+#include "mm_elliptic.h"
 #include "mm_geom.h"
 #include "mm_kin.h"
 #include "mm_scene.h"
@@ -68,10 +69,8 @@ static const mm_output outputs[] = {
     [O_PATH] = MM_SERIES("path", "path of P", "m", "x", "m", .aspect = "equal", .figure = "path"),
     [O_SV] = MM_SERIES("v", "speed of P", "m/s", "t", "s", .figure = "speed"),
     [O_SA] = MM_SERIES("a", "acceleration of P", "m/s^2", "t", "s", .figure = "acceleration"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of P vs eq. (2)", "m/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs eq. (3)", "m/s^2", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of P vs eq. (2)", "m/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs eq. (3)", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the wheel rolling, P's path, velocity and acceleration, the contact point"),
 };
 
@@ -102,64 +101,31 @@ static int check(const mm_value *in, mm_error *err)
     return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
 }
 
-/* the complete elliptic integral of the second kind E(k), by the
- * arithmetic-geometric mean (Abramowitz & Stegun 17.6): converges
- * quadratically, to rounding in a handful of steps */
-static double ellip_E(double k)
+/* P(phi + e) - P(phi), for mm_kin_circle3: by differences that keep their digits */
+static int point(double phi, double e, mm_v2 *P, void *ctx)
 {
-    double a = 1, g = sqrt((1 - k) * (1 + k)), c = k, sum = 0.5 * c * c, p2 = 0.5;
-    for (int i = 0; i < 40 && fabs(c) > DBL_EPSILON * a; i++) {
-        double an = 0.5 * (a + g);
-        c = 0.5 * (a - g);
-        g = sqrt(a * g);
-        a = an;
-        p2 *= 2;
-        sum += p2 * c * c;
-    }
-    return M_PI / (2 * a) * (1 - sum);
+    const wheel *m = ctx;
+    double s2 = 2 * sin(0.5 * e);
+    *P = e == 0 ? (mm_v2){0, 0} : (mm_v2){m->R * e - m->b * cos(phi + 0.5 * e) * s2, m->b * sin(phi + 0.5 * e) * s2};
+    return 1;
 }
 
-/* |dP/dphi| = sqrt((R - b)^2 + 4 R b sin^2(phi/2)) integrated over one
- * turn: twice the integral over [0, pi] by 5-point Gauss-Legendre on
- * panels that halve towards phi = 0, where for b near R the integrand has
- * a near-corner of width |R - b| / sqrt(R b) (a corner for the cycloid);
- * split = 2 halves every panel, for the error estimate */
-static double arch_quad(const wheel *m, int split)
+/* the animation's frame at t */
+static void frame(double t, mm_kin_wheel_state *k, void *ctx)
 {
-    static const double x5[5] = {-0.906179845938663992797626878299, -0.538469310105683091036314420700, 0,
-                                 0.538469310105683091036314420700, 0.906179845938663992797626878299};
-    static const double w5[5] = {0.236926885056189087514264040720, 0.478628670499366468041291514836,
-                                 0.568888888888888888888888888889, 0.478628670499366468041291514836,
-                                 0.236926885056189087514264040720};
-    enum { LEVELS = 48 };
-    double sum = 0;
-    for (int j = 0; j <= LEVELS; j++) {
-        double hi = ldexp(M_PI, -j), lo = j < LEVELS ? 0.5 * hi : 0;
-        for (int p = 0; p < split; p++) {
-            double a = lo + (hi - lo) * p / split, b = lo + (hi - lo) * (p + 1) / split, hw = 0.5 * (b - a);
-            for (int k = 0; k < 5; k++) {
-                double sn = sin(0.5 * (a + hw * (1 + x5[k])));
-                sum += w5[k] * hw * sqrt((m->R - m->b) * (m->R - m->b) + 4 * m->R * m->b * sn * sn);
-            }
-        }
-    }
-    return 2 * sum;
+    wstate s = at(ctx, t);
+    *k = (mm_kin_wheel_state){s.phi, s.w, s.O, s.P, s.v, s.a};
 }
 
-typedef struct fd_ctx {
-    const wheel *m;
-    const double *t;
-} fd_ctx;
-
-static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+static int fd_pos(double ts, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     (void)err;
-    fd_ctx *c = ctx;
-    double t = c->t[i] + h;
-    wstate s = at(c->m, t);
+    const wheel *m = ctx;
+    double t = ts + h;
+    wstate s = at(m, t);
     q[0] = s.P.x, q[1] = s.P.y;
-    double dphi = 4 * DBL_EPSILON * (fabs(c->m->w * t) + fabs(c->m->al * t * t));
-    *qerr = (c->m->R + c->m->b) * (dphi + 4 * DBL_EPSILON * (1 + fabs(s.phi)));
+    double dphi = 4 * DBL_EPSILON * (fabs(m->w * t) + fabs(m->al * t * t));
+    *qerr = (m->R + m->b) * (dphi + 4 * DBL_EPSILON * (1 + fabs(s.phi)));
     return MM_OK;
 }
 
@@ -229,15 +195,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
          * 2 b sin(phi + e/2) sin(e/2)) */
         double q = gn * gn, kd = m.R * sn * (q + 3 * m.b * cb), lk = kd != 0 ? fabs(cb * q / kd) : INFINITY;
         double d = 0.02 * fmin(fmin(rho / gn, lk), 2), R3[3];
-        int ok = 1;
-        for (int k = 0; k < 3; k++) {
-            mm_v2 P3[3] = {{0, 0}, {0, 0}, {0, 0}}, cc;
-            for (int j = 0; j <= 2; j += 2) {
-                double e = (j - 1) * d / (1 << k), s2 = 2 * sin(0.5 * e);
-                P3[j] = (mm_v2){m.R * e - m.b * cos(s.phi + 0.5 * e) * s2, m.b * sin(s.phi + 0.5 * e) * s2};
-            }
-            ok &= mm_geom_circumcircle(P3[0], P3[1], P3[2], &cc, &R3[k]);
-        }
+        int ok = mm_kin_circle3(point, &m, s.phi, d, R3);
         /* rounding: the points at e = d/4 to a few eps |e| (R + b (1 + |phi|)) (the
          * last from the argument phi + e/2), the sagitta ds^2 / (2 rho) of the
          * chord ds = |g| d/4, so rho to 2 rho^2 / ds^2 times that (and the
@@ -249,11 +207,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     /* one arch: 4 (R + b) E(k), k^2 = 4 R b / (R + b)^2 (8 R for b = R) */
     if (m.b > 0) {
-        double k = 2 * sqrt(m.R * m.b) / (m.R + m.b), L = 4 * (m.R + m.b) * ellip_E(k);
+        double k = 2 * sqrt(m.R * m.b) / (m.R + m.b), L = 4 * (m.R + m.b) * mm_elliptic_E(k);
         if (m.b == m.R)
             L = 8 * m.R;
         mm_res_scalar(res, O_ARC, L);
-        double q1 = arch_quad(&m, 1), q2 = arch_quad(&m, 2);
+        double q1 = mm_geom_trochoid_arch(m.R, m.b, 1), q2 = mm_geom_trochoid_arch(m.R, m.b, 2);
         mm_res_check_abs(res, "arch length: Gauss-Legendre on halving panels vs 4 (R + b) E(k), bound |Q(2n) - Q(n)| + rounding",
                          q2, L, fabs(q2 - q1) + 64 * DBL_EPSILON * L);
     } else {
@@ -262,10 +220,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* ---- over [0, t_end] ---- */
     mm_series *path = mm_res_series(res, O_PATH, n), *sv = mm_res_series(res, O_SV, n), *sa = mm_res_series(res, O_SA, n);
-    int ns = (n + 7) / 8;
-    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *d1 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *d1),
-           *d2 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *d2);
-    if (!path || !sv || !sa || !ts || !d1 || !d2)
+    mm_kin_samples smp;
+    if (!path || !sv || !sa || mm_kin_samples_init(&smp, res, n, 2, err) != MM_OK)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(0, t_end, n, sv->x);
     double vmax = 0, amax = 0;
@@ -275,65 +231,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         sa->x[i] = sv->x[i];
         sv->y[i] = mm_v2_norm(si.v), sa->y[i] = mm_v2_norm(si.a);
         vmax = fmax(vmax, fmax(sv->y[i], 2 * fabs(si.w) * m.R)), amax = fmax(amax, sa->y[i]);
-        if (i % 8 == 0 || i == n - 1) {
-            int j = i % 8 == 0 ? i / 8 : ns - 1;
-            ts[j] = sv->x[i];
-            d1[2 * j] = si.v.x, d1[2 * j + 1] = si.v.y, d2[2 * j] = si.a.x, d2[2 * j + 1] = si.a.y;
-        }
+        mm_kin_sample2(&smp, i, sv->x[i], si.v, si.a);
     }
-    fd_ctx fc = {&m, ts};
     double wm = fmax(fabs(m.w), fabs(m.w + m.al * t_end)), h0 = 0.05 / fmax(1, wm);
-    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dP/dt", "d2P/dt2", fd_pos, &fc, 2, NULL, ns, d1, d2, h0, 0, 0, err);
+    int rc = mm_kin_fd_samples(res, O_FDV, O_FDA, "dP/dt", "d2P/dt2", fd_pos, &m, &smp, h0, err);
     if (rc != MM_OK)
         return rc;
 
     /* ---- the animation ---- */
     double t_show;
     int nf = mm_scene_frames(t_end, wm > 0 ? 2 * M_PI / wm : 0, &t_show);
-    double x0 = INFINITY, x1 = -INFINITY;
-    for (int f = 0; f < nf; f++) {
-        wstate sf = at(&m, t_show * f / (nf - 1));
-        x0 = fmin(x0, sf.O.x - fmax(m.R, m.b)), x1 = fmax(x1, sf.O.x + fmax(m.R, m.b));
-    }
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", fmax(x1 - x0, 2 * (m.R + m.b)));
-    mm_shape *gr = an ? mm_kin_shape(&d, "ground", MM_SHAPE_LINE, 0, 2) : NULL;
-    mm_shape *wh = mm_kin_shape(&d, "wheel", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *sp1 = mm_kin_shape(&d, "spoke", MM_SHAPE_LINE, 1, 2), *sp2 = mm_kin_shape(&d, "spoke 2", MM_SHAPE_LINE, 1, 2);
-    mm_shape *arm = mm_kin_shape(&d, "centre to P", MM_SHAPE_LINE, 1, 2);
-    mm_shape *ic = mm_kin_shape(&d, "contact point (instantaneous centre)", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *tr = mm_kin_shape(&d, "path of P", MM_SHAPE_PATH, 0, 121);
-    mm_shape *vv = mm_kin_arrow_shape(&d, "v_P", "m/s", vmax), *vt = mm_kin_arrow_shape(&d, "v_top", "m/s", vmax);
-    mm_shape *vo = mm_kin_arrow_shape(&d, "v_O", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a_P", "m/s^2", amax);
-    if (!gr || !wh || !sp1 || !sp2 || !arm || !ic || !tr || !vv || !vt || !vo || !aa)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    vt->scale = vo->scale = vv->scale;
-    gr->style = "ground";
-    mm_kin_pt(gr, 0, 0, x0, 0), mm_kin_pt(gr, 0, 1, x1, 0);
-    wh->radius = m.R;
-    ic->radius = 0.04 * m.R;
-    ic->style = "highlight";
-    for (int k = 0; k <= 120; k++) {
-        wstate sk = at(&m, t_show * k / 120);
-        mm_kin_pt(tr, 0, k, sk.P.x, sk.P.y);
-    }
-    for (int f = 0; f < nf; f++) {
-        double tf = t_show * f / (nf - 1);
-        an->t[f] = tf;
-        wstate sf = at(&m, tf);
-        mm_kin_pt(wh, f, 0, sf.O.x, sf.O.y);
-        mm_v2 e = mm_v2_polar(m.R, -sf.phi);                          /* the wheel turns clockwise */
-        mm_kin_pt(sp1, f, 0, sf.O.x - e.x, sf.O.y - e.y), mm_kin_pt(sp1, f, 1, sf.O.x + e.x, sf.O.y + e.y);
-        mm_kin_pt(sp2, f, 0, sf.O.x + e.y, sf.O.y - e.x), mm_kin_pt(sp2, f, 1, sf.O.x - e.y, sf.O.y + e.x);
-        mm_kin_pt(arm, f, 0, sf.O.x, sf.O.y), mm_kin_pt(arm, f, 1, sf.P.x, sf.P.y);
-        mm_kin_pt(ic, f, 0, sf.O.x, 0);
-        mm_kin_arrow(vv, f, sf.P.x, sf.P.y, sf.v.x, sf.v.y);
-        mm_kin_arrow(aa, f, sf.P.x, sf.P.y, sf.a.x, sf.a.y);
-        mm_kin_arrow(vo, f, sf.O.x, sf.O.y, sf.w * m.R, 0);
-        mm_kin_arrow(vt, f, sf.O.x, 2 * m.R, 2 * sf.w * m.R, 0);
-    }
     mm_res_method(res, "closed form, checked by central differences; arch length by Gauss-Legendre and the AGM", 0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_wheel(res, nf, t_show, m.R, m.b, vmax, amax, frame, &m, err);
 }
 
 static const char *const references[] = {
@@ -342,19 +251,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_rolling_wheel = {
-    .id = "kin-rolling-wheel",
-    .chapter = 2,
-    .section = "2.3.5",
+    .id = "kin-rolling-wheel", .chapter = 2, .section = "2.3.5",
     .title = "Rolling without slipping: the cycloid",
     .summary = "A rolling wheel: the contact point at rest as instantaneous centre, the velocity and "
                "acceleration of any point, the cycloid's curvature and length.",
     .tags = "kinematics, rigid body, rolling, cycloid, trochoid, instantaneous centre",
     .theory = "exercises/kin/rolling_wheel.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -64,10 +64,8 @@ static const mm_output outputs[] = {
     [O_SV] = MM_SERIES("v", "speed", "m/s", "t", "s", .figure = "speed"),
     [O_SAR] = MM_SERIES("a_r", "radial acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
     [O_SAT] = MM_SERIES("a_theta", "transverse acceleration", "m/s^2", "t", "s", .figure = "acceleration components"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of (x, y) vs v", "m/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs a", "m/s^2", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of (x, y) vs v", "m/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs a", "m/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the arm turning about O with the point on it, its velocity and acceleration"),
 };
 
@@ -111,17 +109,28 @@ static int check(const mm_value *in, mm_error *err)
     return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
 }
 
-typedef struct fd_ctx {
-    const polar *p;
-    const double *t;
-} fd_ctx;
+/* the point at t + e, for mm_kin_circle3 */
+static int point(double t, double e, mm_v2 *P, void *ctx)
+{
+    state s = at(ctx, t + e);
+    *P = mm_v2_polar(s.r, s.th);
+    return 1;
+}
 
-static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+/* the animation's frame at t */
+static void frame(double t, mm_kin_arm_state *k, void *ctx)
+{
+    state s = at(ctx, t);
+    double a1, a2, a3, a4;
+    k->th = s.th;
+    kin(&s, &k->x, &k->v, &k->a, &a1, &a2, &a3, &a4);
+}
+
+static int fd_pos(double ts, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     (void)err;
-    fd_ctx *c = ctx;
-    const polar *p = c->p;
-    double t = c->t[i] + h;
+    const polar *p = ctx;
+    double t = ts + h;
     state s = at(p, t);
     q[0] = s.r * cos(s.th), q[1] = s.r * sin(s.th);
     /* the rounding of r(t) and theta(t), each a sum of three terms */
@@ -176,15 +185,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double an = speed > 0 ? fabs(mm_v2_cross(v, a)) / speed : 0;
     if (an > 1e-9 * amag && speed > 1e-9 * (fabs(s.r) + 1)) {
         double rho = speed * speed / an, R[3], h = 0.02 * rho / speed;
-        int ok = 1;
-        for (int k = 0; k < 3; k++) {
-            mm_v2 P[3], c;
-            for (int j = 0; j < 3; j++) {
-                state sj = at(&p, t + (j - 1) * h / (1 << k));
-                P[j] = mm_v2_polar(sj.r, sj.th);
-            }
-            ok &= mm_geom_circumcircle(P[0], P[1], P[2], &c, &R[k]);
-        }
+        int ok = mm_kin_circle3(point, &p, t, h, R);
         double sp = speed * h / 4, round_ = 64 * DBL_EPSILON * (mm_v2_norm(x) + rho) * rho * rho / (sp * sp);
         if (ok)
             mm_res_check_abs(res, "rho = v^2/a_n vs the circle through three points |v| h apart (h = 0.005 rho/v)",
@@ -194,8 +195,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* ---- over [0, t_end] ---- */
     mm_series *path = mm_res_series(res, O_PATH, n), *sv = mm_res_series(res, O_SV, n);
     mm_series *sr = mm_res_series(res, O_SAR, n), *st = mm_res_series(res, O_SAT, n);
-    double *d1 = mm_res_alloc(res, 2 * (size_t)n * sizeof *d1), *d2 = mm_res_alloc(res, 2 * (size_t)n * sizeof *d2);
-    if (!path || !sv || !sr || !st || !d1 || !d2)
+    mm_kin_samples smp;
+    if (!path || !sv || !sr || !st || mm_kin_samples_init(&smp, res, n, 2, err) != MM_OK)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(0, t_end, n, sv->x);
     double vmax = 0, amax = 0;
@@ -207,61 +208,21 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         path->x[i] = xi.x, path->y[i] = xi.y;
         sr->x[i] = st->x[i] = sv->x[i];
         sv->y[i] = mm_v2_norm(vi), sr->y[i] = a3, st->y[i] = a4;
-        d1[2 * i] = vi.x, d1[2 * i + 1] = vi.y, d2[2 * i] = ai.x, d2[2 * i + 1] = ai.y;
         vmax = fmax(vmax, sv->y[i]), amax = fmax(amax, mm_v2_norm(ai));
+        if (i % 8 == 0)                       /* the samples: one point in 8 (the last only if it is one) */
+            mm_kin_sample2(&smp, i, sv->x[i], vi, ai);
     }
-    /* central differences of the position over the motion, one sample in 8 */
-    int ns = (n + 7) / 8;
-    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *e1 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *e1),
-           *e2 = mm_res_alloc(res, 2 * (size_t)ns * sizeof *e2);
-    if (!ts || !e1 || !e2)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    for (int j = 0; j < ns; j++) {
-        int i = j * 8 < n ? j * 8 : n - 1;
-        ts[j] = sv->x[i];
-        e1[2 * j] = d1[2 * i], e1[2 * j + 1] = d1[2 * i + 1], e2[2 * j] = d2[2 * i], e2[2 * j + 1] = d2[2 * i + 1];
-    }
-    fd_ctx fc = {&p, ts};
+    /* central differences of the position over the motion */
     double h0 = 0.05 / fmax(1, fmax(fabs(p.w0), fabs(p.w0) + fabs(p.al) * t_end));
-    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "d(x,y)/dt", "d2(x,y)/dt2", fd_pos, &fc, 2, NULL, ns, e1, e2, h0,
-                          0, 0, err);
+    int rc = mm_kin_fd_samples(res, O_FDV, O_FDA, "d(x,y)/dt", "d2(x,y)/dt2", fd_pos, &p, &smp, h0, err);
     if (rc != MM_OK)
         return rc;
 
     /* ---- the animation: the arm, the point, its path and arrows ---- */
     double wmax = fmax(fabs(p.w0), fabs(p.w0 + p.al * t_end)), t_show;
     int nf = mm_scene_frames(t_end, wmax > 0 ? 2 * M_PI / wmax : 0, &t_show);
-    double size = 0;
-    for (int i = 0; i < n; i++)
-        size = fmax(size, hypot(path->x[i], path->y[i]));
-    mm_kin_draw d;
-    mm_anim *an_ = mm_kin_draw_start(&d, res, nf, "t", "s", 2 * size + 1e-3);
-    mm_shape *piv = an_ ? mm_kin_pivot(&d, "O", 0, 0) : NULL;
-    mm_shape *arm = mm_kin_shape(&d, "arm", MM_SHAPE_LINE, 1, 2);
-    mm_shape *pt = mm_kin_shape(&d, "point", MM_SHAPE_CIRCLE, 1, 1);
-    mm_shape *tr = mm_kin_shape(&d, "path", MM_SHAPE_PATH, 0, n);
-    mm_shape *va = mm_kin_arrow_shape(&d, "v", "m/s", vmax), *aa = mm_kin_arrow_shape(&d, "a", "m/s^2", amax);
-    if (!piv || !arm || !pt || !tr || !va || !aa)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    pt->radius = 0.02 * d.size;
-    for (int i = 0; i < n; i++)
-        mm_kin_pt(tr, 0, i, path->x[i], path->y[i]);
-    for (int f = 0; f < nf; f++) {
-        double tf = t_show * f / (nf - 1);
-        an_->t[f] = tf;
-        state sf = at(&p, tf);
-        mm_v2 xf, vf, af;
-        double a1, a2, a3, a4;
-        kin(&sf, &xf, &vf, &af, &a1, &a2, &a3, &a4);
-        mm_v2 tip = mm_v2_polar(fmax(size, 1e-3) * 1.1, sf.th);          /* the arm runs past the point */
-        mm_kin_pt(arm, f, 0, 0, 0);
-        mm_kin_pt(arm, f, 1, tip.x, tip.y);
-        mm_kin_pt(pt, f, 0, xf.x, xf.y);
-        mm_kin_arrow(va, f, xf.x, xf.y, vf.x, vf.y);
-        mm_kin_arrow(aa, f, xf.x, xf.y, af.x, af.y);
-    }
     mm_res_method(res, "closed form (polar components), checked by central differences", 0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_arm(res, nf, t_show, path, vmax, amax, frame, &p, err);
 }
 
 static const char *const references[] = {
@@ -269,19 +230,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_rotation_plane = {
-    .id = "kin-rotation-plane",
-    .chapter = 2,
-    .section = "2.2.6",
+    .id = "kin-rotation-plane", .chapter = 2, .section = "2.2.6",
     .title = "Motion about a fixed point: polar coordinates",
     .summary = "Radial and transverse velocity and acceleration of a point on a turning arm: the centripetal "
                "and Coriolis terms, and circular motion as the special case.",
     .tags = "kinematics, particle, polar coordinates, rotation, Coriolis, centripetal",
     .theory = "exercises/kin/rotation_plane.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

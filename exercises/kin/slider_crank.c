@@ -21,6 +21,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "mm_geom.h"
@@ -79,10 +80,8 @@ static const mm_output outputs[] = {
     [O_STH3] = MM_SERIES("theta3", "rod angle", "rad", "crank angle", "rad", .figure = "rod angle"),
     [O_SMID] = MM_SERIES("rod_midpoint", "path of the rod's midpoint", "m", "x", "m", .aspect = "equal",
                          .figure = "rod midpoint"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of x vs dx/dphi", "m", "step h",
-                        "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference of x vs d2x/dphi2", "m", "step h",
-                        "rad", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of x vs dx/dphi", "m", "rad"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference of x vs d2x/dphi2", "m", "rad"),
     [O_ANIM] = MM_ANIMATION("the crank, the rod and the slider over the cycle, with the slider's velocity and acceleration"),
 };
 
@@ -156,6 +155,13 @@ static int newton_at(const sc *m, const mm_mech_problem *prob, mm_mech_options *
         t->cell[3 * i + 2] = rows[i][1];
     }
     return MM_OK;
+}
+
+/* the assembly at phi (the slider right of the pin), for mm_kin_toggle_checks */
+static void assemble(double phi, double *q, void *ctx)
+{
+    sc_pos c = mm_linkage_sc_closed(ctx, phi, 1);
+    q[0] = c.t, q[1] = c.x;
 }
 
 /* ---- the answer ------------------------------------------------------------------------------ */
@@ -263,7 +269,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * rounding of the largest term plus the rounding of the position
      * (residual eps (r + |e| + l) over the Jacobian's l cos theta3 = R)
      * carried through d/dR of eqs. (3); the frame nearest its bound */
-    double rx = -1, rv = -1, ra = -1, cx[3] = {0}, cv[3] = {0}, ca[3] = {0};
+    mm_kin_worst wx = {-1, 0, 0, 0}, wv = wx, wa = wx;
     for (int i = 0; i < n; i++) {
         double ph = sx->x[i];
         c = mm_linkage_sc_closed(&m, ph, 1);
@@ -280,18 +286,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double tv = 16 * DBL_EPSILON * (m.r + fabs(sg * s1) / R) + dR * fabs(sg * s1) / (R * R);
         double Ta = m.r + (s1 * s1 + fabs(sg * s2)) / R + sg * sg * s1 * s1 / (R * R * R);
         double ta = 16 * DBL_EPSILON * Ta + dR * ((s1 * s1 + fabs(sg * s2)) / (R * R) + 3 * sg * sg * s1 * s1 / (R * R * R * R));
-        double ex = fabs(Q[2 * i + 1] - c.x), ev = fabs(QD[2 * i + 1] - c.x1), ea = fabs(QDD[2 * i + 1] - c.x2);
-        if (ex / tx > rx)
-            rx = ex / tx, cx[0] = Q[2 * i + 1], cx[1] = c.x, cx[2] = tx;
-        if (ev / tv > rv)
-            rv = ev / tv, cv[0] = QD[2 * i + 1], cv[1] = c.x1, cv[2] = tv;
-        if (ea / ta > ra)
-            ra = ea / ta, ca[0] = QDD[2 * i + 1], ca[1] = c.x2, ca[2] = ta;
+        mm_kin_track(&wx, Q[2 * i + 1], c.x, tx);
+        mm_kin_track(&wv, QD[2 * i + 1], c.x1, tv);
+        mm_kin_track(&wa, QDD[2 * i + 1], c.x2, ta);
     }
-    mm_res_check_abs(res, "sweep: x vs closed form (2), the frame nearest its bound (the branch kept)", cx[0],
-                     cx[1], cx[2]);
-    mm_res_check_abs(res, "sweep: dx/dphi vs closed form (3), the frame nearest its bound", cv[0], cv[1], cv[2]);
-    mm_res_check_abs(res, "sweep: d2x/dphi2 vs closed form (3), the frame nearest its bound", ca[0], ca[1], ca[2]);
+    mm_res_check_abs(res, "sweep: x vs closed form (2), the frame nearest its bound (the branch kept)", wx.got, wx.ref,
+                     wx.tol);
+    mm_res_check_abs(res, "sweep: dx/dphi vs closed form (3), the frame nearest its bound", wv.got, wv.ref, wv.tol);
+    mm_res_check_abs(res, "sweep: d2x/dphi2 vs closed form (3), the frame nearest its bound", wa.got, wa.ref, wa.tol);
 
     /* the positions differenced: one sample in four, kept 4 h0 clear of
      * the toggles of a partial range (the steps must not leave it) */
@@ -354,35 +356,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     } else {
         mm_res_scalar(res, O_TOG1, lo);
         mm_res_scalar(res, O_TOG2, hi);
-        if (fabs(lo + 2 * M_PI - hi - gaps[1]) <= 1e-9)      /* one arc: the gap is the rest of the turn */
-            mm_res_warn(res, "the rod is too short for the offset: the crank cannot turn a full revolution; it "
-                             "reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide) "
-                             "and cannot close from %.4g to %.4g rad", lo, hi, hi, lo + 2 * M_PI);
-        else
-            mm_res_warn(res, "the rod is too short for the offset: the crank cannot turn a full revolution; it "
-                             "reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide) "
-                             "and cannot close from %.4g to %.4g nor from %.4g to %.4g rad; the arc beyond those "
-                             "gaps is another assembly, reached only by taking the linkage apart",
-                        lo, hi, hi, hi + gaps[1], lo - gaps[0], lo);
+        char what[200];
+        snprintf(what, sizeof what, "the rod is too short for the offset: the crank cannot turn a full revolution; "
+                 "it reaches only %.4g to %.4g rad (toggles, where the rod stands square to the slide)", lo, hi);
+        mm_kin_warn_reach(res, what, lo, hi, gaps);
         /* the sweep run past each end stops where the closed form says */
-        for (int end = 0; end < 2; end++) {
-            enum { NT = 9 };
-            double t[NT], qq[2 * NT];
-            /* past the toggle, but never past the middle of the gap: beyond it
-             * the linkage closes again, and a sweep could step across */
-            double past = fmin(0.05, 0.5 * gaps[end]);
-            double from = end ? hi - 0.1 * (hi - lo) : lo + 0.1 * (hi - lo), to = end ? hi + past : lo - past;
-            for (int i = 0; i < NT; i++)
-                t[i] = from + (to - from) * i / (NT - 1);
-            c = mm_linkage_sc_closed(&m, t[0], 1);
-            qq[0] = c.t, qq[1] = c.x;
-            mm_mech_sweep e = {.nt = NT, .t = t, .q = qq, .watch = -1, .tol_t = 1e-13};
-            if ((rc = mm_mech_sweep_solve(&prob, &opt, w, &e, err)) != MM_OK)
-                goto out;
-            mm_res_check_abs(res, end ? "second toggle: where the sweep stops closing vs sin(phi) = (e - l)/r or (e + l)/r"
-                                      : "first toggle: where the sweep stops closing vs sin(phi) = (e - l)/r or (e + l)/r",
-                             e.t_limit, end ? hi : lo, 1e-9);
-        }
+        if ((rc = mm_kin_toggle_checks(res, &prob, &opt, w, lo, hi, gaps, assemble, &m,
+                                       "sin(phi) = (e - l)/r or (e + l)/r", err)) != MM_OK)
+            goto out;
     }
     mm_res_method(res, "Newton-Raphson on the loop closure, Jacobian solves for velocity and acceleration", 0);
     mm_res_method_stat(res, "sweep_steps", s.steps);
@@ -401,19 +382,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_slider_crank = {
-    .id = "kin-slider-crank",
-    .chapter = 2,
-    .section = "2.4.4",
+    .id = "kin-slider-crank", .chapter = 2, .section = "2.4.4",
     .title = "Slider-crank mechanism",
     .summary = "Position, velocity and acceleration of the slider over a turn: dead centres, stroke, "
                "offset and quick return, toggles of a short rod.",
     .tags = "kinematics, mechanism, slider-crank, loop closure, Newton-Raphson, dead centre",
     .theory = "exercises/kin/slider_crank.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -79,10 +79,9 @@ static const mm_output outputs[] = {
     [O_SANG] = MM_SERIES("theta", "second angle", "rad", "t", "s", .figure = "second angle"),
     [O_SDET] = MM_SERIES("det_B", "det B: zero at a gimbal lock", "", "t", "s", .figure = "det B"),
     [O_SW] = MM_SERIES("omega", "magnitude of the angular velocity", "rad/s", "t", "s", .figure = "omega"),
-    [O_FDV] = MM_SERIES("fd_error_v", "worst error of the central difference of R vs [w]x R", "1/s", "step h", "s",
-                        .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
-    [O_FDA] = MM_SERIES("fd_error_a", "worst error of the second difference vs ([w']x + [w]x^2) R", "1/s^2", "step h",
-                        "s", .x_scale = "log", .y_scale = "log", .mark = "dots", .figure = "difference error"),
+    [O_FDV] = MM_KIN_FD_SERIES("fd_error_v", "worst error of the central difference of R vs [w]x R", "1/s", "s"),
+    [O_FDA] = MM_KIN_FD_SERIES("fd_error_a", "worst error of the second difference vs ([w']x + [w]x^2) R",
+                               "1/s^2", "s"),
     [O_ANIM] = MM_ANIMATION("the body (a box) turning about the fixed point, its axes and angular velocity"),
 };
 
@@ -111,25 +110,6 @@ static void omega_at(const att *m, double t, mm_v3 *w, mm_v3 *wd)
     *wd = mm_v3_add(mm_v3_scale(d1, m->rate[1]), mm_v3_scale(d2, m->rate[2]));
 }
 
-/* the same rotation by quaternions: q_i(a) q_j(b) q_k(c) */
-static void quat_matrix(const int seq[3], const double ang[3], double R[9])
-{
-    double q[4] = {1, 0, 0, 0};
-    for (int s = 0; s < 3; s++) {
-        double e[4] = {cos(0.5 * ang[s]), 0, 0, 0}, r[4];
-        e[1 + seq[s]] = sin(0.5 * ang[s]);
-        r[0] = q[0] * e[0] - q[1] * e[1] - q[2] * e[2] - q[3] * e[3];
-        r[1] = q[0] * e[1] + q[1] * e[0] + q[2] * e[3] - q[3] * e[2];
-        r[2] = q[0] * e[2] - q[1] * e[3] + q[2] * e[0] + q[3] * e[1];
-        r[3] = q[0] * e[3] + q[1] * e[2] - q[2] * e[1] + q[3] * e[0];
-        memcpy(q, r, sizeof q);
-    }
-    double w = q[0], x = q[1], y = q[2], z = q[3];
-    R[0] = 1 - 2 * (y * y + z * z), R[1] = 2 * (x * y - w * z), R[2] = 2 * (x * z + w * y);
-    R[3] = 2 * (x * y + w * z), R[4] = 1 - 2 * (x * x + z * z), R[5] = 2 * (y * z - w * x);
-    R[6] = 2 * (x * z - w * y), R[7] = 2 * (y * z + w * x), R[8] = 1 - 2 * (x * x + y * y);
-}
-
 static int check(const mm_value *in, mm_error *err)
 {
     if (in[P_POINT].cols != 3)
@@ -137,29 +117,27 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-typedef struct fd_ctx {
-    const att *m;
-    const double *t;
-} fd_ctx;
-
-static int fd_pos(int i, double h, double *q, double *qerr, void *ctx, mm_error *err)
+static int fd_pos(double ts, double h, double *q, double *qerr, void *ctx, mm_error *err)
 {
     (void)err;
-    fd_ctx *c = ctx;
-    double ang[3], t = c->t[i] + h, big = 0;
-    angles_at(c->m, t, ang);
-    mm_geom_euler_matrix(c->m->seq, ang, q);
+    const att *m = ctx;
+    double ang[3], t = ts + h, big = 0;
+    angles_at(m, t, ang);
+    mm_geom_euler_matrix(m->seq, ang, q);
     for (int k = 0; k < 3; k++)
-        big += fabs(c->m->a0[k]) + fabs(c->m->rate[k] * t);
+        big += fabs(m->a0[k]) + fabs(m->rate[k] * t);
     *qerr = (8 + 4 * big) * DBL_EPSILON;            /* three rounded angles, two products */
     return MM_OK;
 }
 
-/* isometric view: screen x, y of a space point */
-static void view(mm_v3 p, double *x, double *y)
+/* the animation's frame at t: R and omega */
+static void frame(double t, double R[9], mm_v3 *w, void *ctx)
 {
-    *x = (p.y - p.x) * M_SQRT1_2;
-    *y = (2 * p.z - p.x - p.y) / sqrt(6.0);
+    double ang[3];
+    mm_v3 wd;
+    angles_at(ctx, t, ang);
+    mm_geom_euler_matrix(((const att *)ctx)->seq, ang, R);
+    omega_at(ctx, t, w, &wd);
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -189,10 +167,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         big += fabs(m.a0[k]);
     mm_res_check_abs(res, "R^T R = I: worst entry error", mm_geom_rot_orth_error(R, &det_err), 0, 16 * DBL_EPSILON);
     mm_res_check_abs(res, "det R = 1", det_err, 0, 16 * DBL_EPSILON);
-    quat_matrix(m.seq, m.a0, Rq);
-    double dq = 0;
-    for (int i = 0; i < 9; i++)
-        dq = fmax(dq, fabs(R[i] - Rq[i]));
+    mm_geom_euler_quat_matrix(m.seq, m.a0, Rq);
+    double dq = mm_geom_m3_maxdiff(R, Rq);
     mm_res_check_abs(res, "R from three rotation matrices vs from three quaternions: worst entry", dq, 0,
                      (16 + 4 * big) * DBL_EPSILON);
     mm_v3 w, wd, axis;
@@ -225,18 +201,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     /* R rebuilt from the angles read back: rounding grows like cond near the lock */
     mm_geom_euler_matrix(m.seq, back, Rb);
-    double db = 0;
-    for (int i = 0; i < 9; i++)
-        db = fmax(db, fabs(R[i] - Rb[i]));
+    double db = mm_geom_m3_maxdiff(R, Rb);
     mm_res_check_abs(res, lock ? "R rebuilt from the angles read back (at the lock, with psi = 0)"
                                : "R rebuilt from the angles read back",
                      db, 0, lock ? 1e-7 : 32 * DBL_EPSILON * fmin(cond, 1e8));
     if (lock) {
         /* which sum survives: R is unchanged by phi + d, psi + d when it depends on phi - psi */
-        double sh[3] = {m.a0[0] + 0.1, m.a0[1], m.a0[2] + 0.1}, Rs[9], ds = 0;
+        double sh[3] = {m.a0[0] + 0.1, m.a0[1], m.a0[2] + 0.1}, Rs[9];
         mm_geom_euler_matrix(m.seq, sh, Rs);
-        for (int i = 0; i < 9; i++)
-            ds = fmax(ds, fabs(Rs[i] - R[i]));
+        double ds = mm_geom_m3_maxdiff(Rs, R);
         mm_res_warn(res, "gimbal lock: theta puts the first and third axes in line, so only %s is determined (psi "
                          "is read back as 0), det B = 0, and no angle rates give a turn about the axis square to both",
                     ds < 1e-6 ? "phi - psi" : "phi + psi");
@@ -255,10 +228,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* ---- over [0, t_end] ---- */
     mm_series *sa = mm_res_series(res, O_SANG, n), *sd = mm_res_series(res, O_SDET, n), *sw = mm_res_series(res, O_SW, n);
-    int ns = (n + 7) / 8;
-    double *ts = mm_res_alloc(res, (size_t)ns * sizeof *ts), *d1 = mm_res_alloc(res, 9 * (size_t)ns * sizeof *d1),
-           *d2 = mm_res_alloc(res, 9 * (size_t)ns * sizeof *d2);
-    if (!sa || !sd || !sw || !ts || !d1 || !d2)
+    mm_kin_samples smp;
+    if (!sa || !sd || !sw || mm_kin_samples_init(&smp, res, n, 9, err) != MM_OK)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory");
     mm_kin_grid(0, t_end, n, sa->x);
     double wmax = 0;
@@ -271,9 +242,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         sd->x[i] = sw->x[i] = ti;
         sa->y[i] = ang[1], sd->y[i] = mm_geom_m3_det(Bi), sw->y[i] = mm_v3_norm(wi);
         wmax = fmax(wmax, sw->y[i]);
-        if (i % 8 == 0 || i == n - 1) {
-            int j = i % 8 == 0 ? i / 8 : ns - 1;
-            ts[j] = ti;
+        if (mm_kin_sampled(&smp, i)) {
             /* eq. (3): R' = [w]x R, R'' = ([w']x + [w]x^2) R */
             mm_geom_euler_matrix(m.seq, ang, Ri);
             mm_geom_skew(wi, W), mm_geom_skew(wdi, WD);
@@ -281,81 +250,21 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             mm_geom_m3_mul(W, D1, D2);
             mm_geom_m3_mul(WD, Ri, WD);
             for (int k = 0; k < 9; k++)
-                d1[9 * j + k] = D1[k], d2[9 * j + k] = D2[k] + WD[k];
+                D2[k] += WD[k];
+            mm_kin_sample(&smp, i, ti, D1, D2);
         }
     }
-    fd_ctx fc = {&m, ts};
     double h0 = 0.05 / fmax(1, wmax);
-    int rc = mm_kin_fd_va(res, O_FDV, O_FDA, "dR/dt = [w]x R", "d2R/dt2 = ([w']x + [w]x^2) R", fd_pos, &fc, 9, NULL, ns, d1, d2, h0,
-                          0, 0, err);
+    int rc = mm_kin_fd_samples(res, O_FDV, O_FDA, "dR/dt = [w]x R", "d2R/dt2 = ([w']x + [w]x^2) R", fd_pos, &m, &smp,
+                               h0, err);
     if (rc != MM_OK)
         return rc;
 
-    /* ---- the animation: a box 0.6 x 0.4 x 0.2 m and its axes, seen isometrically ---- */
-    static const double hx = 0.3, hy = 0.2, hz = 0.1;
+    /* ---- the animation: a box and its axes, seen isometrically ---- */
     double t_show;
     int nf = mm_scene_frames(t_end, wmax > 0 ? 2 * M_PI / wmax : 0, &t_show);
-    mm_kin_draw d;
-    mm_anim *an = mm_kin_draw_start(&d, res, nf, "t", "s", 1.6);
-    mm_shape *bot = an ? mm_kin_shape(&d, "box bottom", MM_SHAPE_POLYGON, 1, 4) : NULL;
-    mm_shape *top = mm_kin_shape(&d, "box top", MM_SHAPE_POLYGON, 1, 4);
-    mm_shape *edge[4], *ba[3], *sx[3];
-    static const char *const en[4] = {"edge 1", "edge 2", "edge 3", "edge 4"};
-    static const char *const bn[3] = {"body x", "body y", "body z"}, *const sn[3] = {"space x", "space y", "space z"};
-    for (int k = 0; k < 4; k++)
-        edge[k] = mm_kin_shape(&d, en[k], MM_SHAPE_LINE, 1, 2);
-    for (int k = 0; k < 3; k++) {
-        ba[k] = mm_kin_shape(&d, bn[k], MM_SHAPE_ARROW, 1, 2);
-        sx[k] = mm_kin_shape(&d, sn[k], MM_SHAPE_LINE, 0, 2);
-    }
-    mm_shape *wa = mm_kin_arrow_shape(&d, "omega", "rad/s", wmax);
-    mm_shape *pth = mm_kin_shape(&d, "path of the point", MM_SHAPE_PATH, 0, 121);
-    if (!bot || !top || !edge[3] || !ba[2] || !sx[2] || !wa || !pth)
-        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
-    for (int k = 0; k < 3; k++) {
-        mm_v3 e = {k == 0, k == 1, k == 2};
-        double x, y;
-        view(mm_v3_scale(e, 0.7), &x, &y);
-        sx[k]->style = "ground";
-        mm_kin_pt(sx[k], 0, 0, 0, 0), mm_kin_pt(sx[k], 0, 1, x, y);
-        ba[k]->unit = "m", ba[k]->scale = 1;
-    }
-    for (int k = 0; k <= 120; k++) {
-        double ang[3], Rk[9], x, y;
-        angles_at(&m, t_show * k / 120, ang);
-        mm_geom_euler_matrix(m.seq, ang, Rk);
-        view(mm_geom_m3_apply(Rk, p), &x, &y);
-        mm_kin_pt(pth, 0, k, x, y);
-    }
-    for (int f = 0; f < nf; f++) {
-        double tf = t_show * f / (nf - 1), ang[3], Rf[9];
-        an->t[f] = tf;
-        angles_at(&m, tf, ang);
-        mm_geom_euler_matrix(m.seq, ang, Rf);
-        double X[8], Y[8];
-        for (int c = 0; c < 8; c++) {                        /* corners: bottom 0-3, top 4-7 */
-            int q = c & 3;
-            mm_v3 corner = {(q == 1 || q == 2) ? hx : -hx, q >= 2 ? hy : -hy, c >= 4 ? hz : -hz};
-            view(mm_geom_m3_apply(Rf, corner), &X[c], &Y[c]);
-        }
-        for (int c = 0; c < 4; c++) {
-            mm_kin_pt(bot, f, c, X[c], Y[c]);
-            mm_kin_pt(top, f, c, X[c + 4], Y[c + 4]);
-            mm_kin_pt(edge[c], f, 0, X[c], Y[c]), mm_kin_pt(edge[c], f, 1, X[c + 4], Y[c + 4]);
-        }
-        for (int k = 0; k < 3; k++) {
-            double x, y;
-            view(mm_v3_make(0.5 * Rf[k], 0.5 * Rf[3 + k], 0.5 * Rf[6 + k]), &x, &y);   /* column k of R */
-            mm_kin_arrow(ba[k], f, 0, 0, x, y);
-        }
-        mm_v3 wf, wdf;
-        omega_at(&m, tf, &wf, &wdf);
-        double x, y;
-        view(wf, &x, &y);
-        mm_kin_arrow(wa, f, 0, 0, x, y);
-    }
     mm_res_method(res, "closed form (Euler angles), checked by quaternions and central differences", 0);
-    return mm_kin_draw_finish(&d);
+    return mm_kin_anim_box(res, nf, t_show, wmax, p, frame, &m, err);
 }
 
 static const char *const references[] = {
@@ -364,19 +273,12 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_kin_space_motion = {
-    .id = "kin-space-motion",
-    .chapter = 2,
-    .section = "2.3.4",
+    .id = "kin-space-motion", .chapter = 2, .section = "2.3.4",
     .title = "Motion in space: rotation matrices and Euler angles",
     .summary = "A body turning about a fixed point: its rotation matrix from Euler angles, the angular velocity "
                "from their rates, the angles read back, and gimbal lock.",
     .tags = "kinematics, rigid body, rotation matrix, Euler angles, angular velocity, gimbal lock, quaternion",
     .theory = "exercises/kin/space_motion.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

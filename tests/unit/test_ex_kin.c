@@ -281,6 +281,18 @@ static void the_rolling_wheel_should_pass_its_checks_near_an_inflection(void **s
     cJSON_Delete(d);
 }
 
+/* b a hair from R but not equal to it: k = 2 sqrt(R b) / (R + b) rounds to
+ * 1, where the AGM of E(k) (mm_elliptic_E) stalled at g = 0 and gave pi/4
+ * instead of 1, so the arch length came out pi (R + b) against the
+ * quadrature's 8 R and its check failed */
+static void the_rolling_wheel_should_give_the_cycloids_arch_with_b_a_hair_from_r(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("kin-rolling-wheel", "R=0.5&b=0.50000000005");
+    check_rel(scalar(d, "arch_length"), 4, 1e-9, "one arch of (nearly) the cycloid: 8 R");
+    cJSON_Delete(d);
+}
+
 static void mobility_should_catch_the_overconstrained_linkages(void **state)
 {
     (void)state;
@@ -399,6 +411,7 @@ int main(void)
         cmocka_unit_test(a_cam_with_a_roller_too_large_should_warn_of_undercutting),
         cmocka_unit_test(the_rolling_wheel_contact_point_should_be_exactly_at_rest),
         cmocka_unit_test(the_rolling_wheel_should_pass_its_checks_near_an_inflection),
+        cmocka_unit_test(the_rolling_wheel_should_give_the_cycloids_arch_with_b_a_hair_from_r),
         cmocka_unit_test(mobility_should_catch_the_overconstrained_linkages),
         cmocka_unit_test(space_motion_should_find_gimbal_lock),
         cmocka_unit_test(the_other_exercises_should_give_their_textbook_values),
