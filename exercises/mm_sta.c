@@ -97,13 +97,10 @@ int mm_sta_circle(mm_result *res, const char *name, double x, double y, double r
     return MM_OK;
 }
 
-int mm_sta_label(mm_result *res, double x, double y, const char *fmt, ...)
+static int vlabel(mm_result *res, double x, double y, const char *fmt, va_list ap)
 {
     char buf[160];
-    va_list ap;
-    va_start(ap, fmt);
     vsnprintf(buf, sizeof buf, fmt, ap);
-    va_end(ap);
     mm_shape *s = shape(res, "label", MM_SHAPE_LABEL, 1);
     char *text = mm_res_strdup(res, buf);
     if (!s || !text)
@@ -111,6 +108,62 @@ int mm_sta_label(mm_result *res, double x, double y, const char *fmt, ...)
     s->x[0] = x, s->y[0] = y;
     s->text = text;
     return MM_OK;
+}
+
+int mm_sta_label(mm_result *res, double x, double y, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int rc = vlabel(res, x, y, fmt, ap);
+    va_end(ap);
+    return rc;
+}
+
+int mm_sta_label3(mm_result *res, const double *p, const char *fmt, ...)
+{
+    double u, v;
+    mm_sta_project(p[0], p[1], p[2], &u, &v);
+    va_list ap;
+    va_start(ap, fmt);
+    int rc = vlabel(res, u, v, fmt, ap);
+    va_end(ap);
+    return rc;
+}
+
+int mm_sta_axes3(mm_result *res, const double *O, double len)
+{
+    static const char *const names[3] = {"x", "y", "z"};
+    int rc = MM_OK;
+    for (int k = 0; k < 3 && !rc; k++) {
+        double tip[3] = {O[0], O[1], O[2]};
+        tip[k] += len;
+        rc = mm_sta_line3(res, names[k], O, tip, "ground");
+        if (!rc)
+            rc = mm_sta_label3(res, tip, "%s", names[k]);
+    }
+    return rc;
+}
+
+int mm_sta_arrow(mm_result *res, const char *name, double x0, double y0, double x1, double y1, const char *unit,
+                 double scale, double value)
+{
+    mm_shape *s = shape(res, name, MM_SHAPE_ARROW, 2);
+    double *v = s ? mm_shape_values(res, s) : NULL;
+    if (!v)
+        return MM_ENOMEM;
+    s->x[0] = x0, s->y[0] = y0, s->x[1] = x1, s->y[1] = y1;
+    s->unit = unit, s->scale = scale, v[0] = value;
+    return MM_OK;
+}
+
+int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, const char *fmt, ...)
+{
+    char buf[400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    return mm_res_check_abs(res, buf, value, ref, tol);
 }
 
 /* (u, v) in the support's frame (v up from the ground) to the drawing */

@@ -92,6 +92,36 @@ int mm_sta_arrow3(mm_result *res, const char *name, const double *p, const doubl
  * lost to memory is recorded in res). */
 double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr);
 
+/* A check against ref within the absolute tolerance tol (mm_res_check_abs)
+ * whose name is printf-formatted, for names that say which member, link or
+ * cable was the worst.  Returns MM_OK or MM_ENOMEM (sticky, in res). */
+int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 5, 6)))
+#endif
+    ;
+
+/* An arrow from (x0, y0) to (x1, y1) [m] for a quantity that is not a
+ * force in N: a pressure drawn at `scale` m/Pa, a weight per unit areal
+ * weight...; value its size in unit. */
+int mm_sta_arrow(mm_result *res, const char *name, double x0, double y0, double x1, double y1, const char *unit,
+                 double scale, double value);
+
+/* A text at the point p in space (mm_sta_project). */
+int mm_sta_label3(mm_result *res, const double *p, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* The axes x, y, z drawn from O, len long, each with its name at its tip. */
+int mm_sta_axes3(mm_result *res, const double *O, double len);
+
+/* The textbooks the chapter cites, to be followed by the section:
+ * MM_STA_HIBBELER "section 8.6". */
+#define MM_STA_HIBBELER "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, "
+#define MM_STA_MERIAM "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, "
+
 /* Vectors in space as three doubles: c = a x b (c must not alias a or b),
  * a . b and |a|. */
 void mm_sta_cross(const double *a, const double *b, double *c);

@@ -289,3 +289,20 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
     r->converged = agree == 2;
     return MM_OK;
 }
+
+/* ---- statics (chapter 3) ------------------------------------------------------ */
+
+void mm_quad_gl5_nodes(double a, double b, int m, double *x, double *w)
+{
+    static const double gx[5] = {0, 0.5384693101056831, -0.5384693101056831, 0.9061798459386640,
+                                 -0.9061798459386640};
+    static const double gw[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
+                                 0.2369268850561891, 0.2369268850561891};
+    for (int k = 0; k < m; k++) {
+        double lo = a + (b - a) * k / m, hi = a + (b - a) * (k + 1) / m;
+        for (int g = 0; g < 5; g++) {
+            x[5 * k + g] = 0.5 * (lo + hi) + 0.5 * (hi - lo) * gx[g];
+            w[5 * k + g] = 0.5 * (hi - lo) * gw[g];
+        }
+    }
+}

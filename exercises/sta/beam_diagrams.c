@@ -318,25 +318,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 }
 
 static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, ch. 7",
-    "J. M. Gere, B. J. Goodno, Mechanics of Materials, 8th ed., Cengage 2013, ch. 4 and 9",
+    MM_STA_HIBBELER "ch. 7", "J. M. Gere, B. J. Goodno, Mechanics of Materials, 8th ed., Cengage 2013, ch. 4 and 9",
     NULL,
 };
 
 const mm_exercise mm_ex_sta_beam_diagrams = {
-    .id = "sta-beam-diagrams",
-    .chapter = 3,
-    .section = "3.10",
+    .id = "sta-beam-diagrams", .chapter = 3, .section = "3.10",
     .title = "Shear force and bending moment diagrams",
     .summary = "Simply supported, overhanging or cantilever beams under point, distributed and couple loads: "
                "exact V and M diagrams, their extremes and the deflection.",
     .tags = "statics, beam, shear force, bending moment, internal forces, deflection",
     .theory = "exercises/sta/beam_diagrams.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -203,26 +203,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return draw(T1, T2, theta, r, (T2 - T1) * r, res);
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 8.5",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 6/9",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 8.5", MM_STA_MERIAM "article 6/9", NULL};
 
 const mm_exercise mm_ex_sta_belt_friction = {
-    .id = "sta-belt-friction",
-    .chapter = 3,
-    .section = "3.8.4",
+    .id = "sta-belt-friction", .chapter = 3, .section = "3.8.4",
     .title = "Belt friction: the capstan equation",
     .summary = "A belt on a drum at the verge of slipping: T2 = T1 e^(mu theta), both slip limits and the "
                "torque, checked by a belt over many pegs.",
-    .tags = "statics, friction, belt, capstan, slipping",
-    .theory = "exercises/sta/belt_friction.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, friction, belt, capstan, slipping", .theory = "exercises/sta/belt_friction.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -237,26 +237,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 }
 
 static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, ch. 9 and 10",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, ch. 5 and appendix A",
+    MM_STA_HIBBELER "ch. 9 and 10", MM_STA_MERIAM "ch. 5 and appendix A",
     "B. Braden, The surveyor's area formula, The College Mathematics Journal 17 (1986) 326-337",
     NULL,
 };
 
 const mm_exercise mm_ex_sta_centroid = {
-    .id = "sta-centroid",
-    .chapter = 3,
-    .section = "3.9",
+    .id = "sta-centroid", .chapter = 3, .section = "3.9",
     .title = "Centroid and second moments of an area",
     .summary = "Any polygon, with discs added or cut out: area, centroid, second moments and principal axes, "
                "by Green's theorem and by triangles.",
     .tags = "statics, centroid, centre of gravity, second moment of area, principal axes, composite area",
     .theory = "exercises/sta/centroid.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

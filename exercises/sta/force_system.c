@@ -204,26 +204,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return MM_OK;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 4.7-4.8",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 2/9",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 4.7-4.8", MM_STA_MERIAM "article 2/9", NULL};
 
 const mm_exercise mm_ex_sta_force_system = {
-    .id = "sta-force-system",
-    .chapter = 3,
-    .section = "3.2.3",
+    .id = "sta-force-system", .chapter = 3, .section = "3.2.3",
     .title = "Reducing a force system: resultant, couple and wrench",
     .summary = "Forces and couples in space reduced to a force and a couple at a point, and to their simplest "
                "equivalent: a single force, a couple or a wrench on its central axis.",
     .tags = "statics, force system, resultant, couple, wrench, equivalence, central axis",
     .theory = "exercises/sta/force_system.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

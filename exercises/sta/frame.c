@@ -168,26 +168,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 6.6",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 4/6",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 6.6", MM_STA_MERIAM "article 4/6", NULL};
 
 const mm_exercise mm_ex_sta_frame = {
-    .id = "sta-frame",
-    .chapter = 3,
-    .section = "3.6",
+    .id = "sta-frame", .chapter = 3, .section = "3.6",
     .title = "A three-hinged frame: systems of rigid bodies",
     .summary = "Two bodies pinned to the ground and to each other: ground reactions and the hinge force from "
                "six equations, the arch's horizontal thrust.",
-    .tags = "statics, frame, arch, three-hinged, systems of bodies, pin forces",
-    .theory = "exercises/sta/frame.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, frame, arch, three-hinged, systems of bodies, pin forces", .theory = "exercises/sta/frame.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

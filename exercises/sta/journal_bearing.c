@@ -144,26 +144,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return MM_OK;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 8.7",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 6/7",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 8.7", MM_STA_MERIAM "article 6/7", NULL};
 
 const mm_exercise mm_ex_sta_journal_bearing = {
-    .id = "sta-journal-bearing",
-    .chapter = 3,
-    .section = "3.8.1",
+    .id = "sta-journal-bearing", .chapter = 3, .section = "3.8.1",
     .title = "Journal bearing: the friction circle",
     .summary = "A pulley on an axle with friction: the pull that raises a load, the friction circle, the "
                "efficiency; checked by solving the contact equations.",
     .tags = "statics, friction, journal bearing, friction circle, pulley, efficiency",
     .theory = "exercises/sta/journal_bearing.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -138,24 +138,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return MM_OK;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 4.1-4.5",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 4.1-4.5", NULL};
 
 const mm_exercise mm_ex_sta_moment = {
-    .id = "sta-moment",
-    .chapter = 3,
-    .section = "3.1.2",
+    .id = "sta-moment", .chapter = 3, .section = "3.1.2",
     .title = "Moment of a force about a point and an axis",
     .summary = "M = r x F in space, its lever arm, and the moment about an axis through the point.",
-    .tags = "statics, moment, cross product, lever arm, axis",
-    .theory = "exercises/sta/moment.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, moment, cross product, lever arm, axis", .theory = "exercises/sta/moment.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -186,24 +186,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, ch. 3",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "ch. 3", NULL};
 
 const mm_exercise mm_ex_sta_particle_cables = {
-    .id = "sta-particle-cables",
-    .chapter = 3,
-    .section = "3.3",
+    .id = "sta-particle-cables", .chapter = 3, .section = "3.3",
     .title = "A ring held by cables",
     .summary = "Equilibrium of a particle in space: the tensions in two or three cables holding a loaded ring.",
-    .tags = "statics, particle, equilibrium, cables, tension, space",
-    .theory = "exercises/sta/particle_cables.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, particle, equilibrium, cables, tension, space", .theory = "exercises/sta/particle_cables.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

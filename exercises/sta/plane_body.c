@@ -192,25 +192,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 5.1-5.7",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 5.1-5.7", NULL};
 
 const mm_exercise mm_ex_sta_plane_body = {
-    .id = "sta-plane-body",
-    .chapter = 3,
-    .section = "3.4",
+    .id = "sta-plane-body", .chapter = 3, .section = "3.4",
     .title = "A rigid body in a plane on its supports",
     .summary = "Reactions of a plane body held by pins and rollers (links), from three equilibrium equations; "
                "improper and redundant supports named.",
-    .tags = "statics, rigid body, plane, reactions, supports, equilibrium",
-    .theory = "exercises/sta/plane_body.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, rigid body, plane, reactions, supports, equilibrium", .theory = "exercises/sta/plane_body.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

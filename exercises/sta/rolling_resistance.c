@@ -124,26 +124,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 8.8",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 6/10",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 8.8", MM_STA_MERIAM "article 6/10", NULL};
 
 const mm_exercise mm_ex_sta_rolling_resistance = {
-    .id = "sta-rolling-resistance",
-    .chapter = 3,
-    .section = "3.8.3",
+    .id = "sta-rolling-resistance", .chapter = 3, .section = "3.8.3",
     .title = "Rolling resistance: roll or slide?",
     .summary = "The pull that starts a wheel rolling on a soft surface against the one that would make it "
                "slide; the boundary between them.",
-    .tags = "statics, friction, rolling resistance, wheel, sliding",
-    .theory = "exercises/sta/rolling_resistance.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, friction, rolling resistance, wheel, sliding", .theory = "exercises/sta/rolling_resistance.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

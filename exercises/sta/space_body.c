@@ -185,25 +185,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 5.5-5.7",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 5.5-5.7", NULL};
 
 const mm_exercise mm_ex_sta_space_body = {
-    .id = "sta-space-body",
-    .chapter = 3,
-    .section = "3.5",
+    .id = "sta-space-body", .chapter = 3, .section = "3.5",
     .title = "A rigid body in space on six links",
     .summary = "A plate or a shaft held by ball joints, bearings and rods: six reactions from six equations, "
                "checked by virtual work; improper supports named by the motion they allow.",
-    .tags = "statics, rigid body, space, reactions, six links, virtual work",
-    .theory = "exercises/sta/space_body.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, rigid body, space, reactions, six links, virtual work", .theory = "exercises/sta/space_body.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

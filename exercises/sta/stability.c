@@ -258,26 +258,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 11.5-11.7",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, articles 7/3-7/4",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 11.5-11.7", MM_STA_MERIAM "articles 7/3-7/4", NULL};
 
 const mm_exercise mm_ex_sta_stability = {
-    .id = "sta-stability",
-    .chapter = 3,
-    .section = "3.11",
+    .id = "sta-stability", .chapter = 3, .section = "3.11",
     .title = "Stability of equilibrium from the potential energy",
     .summary = "An upright rod held by a spring: equilibria where dV/dtheta = 0, stable or unstable by the "
                "second derivative, and the critical load where the upright position buckles.",
     .tags = "statics, potential energy, stability, equilibrium, buckling, bifurcation",
     .theory = "exercises/sta/stability.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

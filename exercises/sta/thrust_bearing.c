@@ -135,26 +135,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return MM_OK;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 8.6",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 6/8",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 8.6", MM_STA_MERIAM "article 6/8", NULL};
 
 const mm_exercise mm_ex_sta_thrust_bearing = {
-    .id = "sta-thrust-bearing",
-    .chapter = 3,
-    .section = "3.8.2",
+    .id = "sta-thrust-bearing", .chapter = 3, .section = "3.8.2",
     .title = "Thrust bearing: friction on a collar",
     .summary = "The friction torque of a collar or disc pressed on its seat, new (uniform pressure) or worn "
                "(uniform wear), as integrals over the contact.",
-    .tags = "statics, friction, thrust bearing, collar, disc clutch, wear",
-    .theory = "exercises/sta/thrust_bearing.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, friction, thrust bearing, collar, disc clutch, wear", .theory = "exercises/sta/thrust_bearing.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -366,27 +366,20 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 }
 
 static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, ch. 6 (trusses)",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, ch. 4",
+    MM_STA_HIBBELER "ch. 6 (trusses)",
+    MM_STA_MERIAM "ch. 4",
     "S. Pellegrino, C. R. Calladine, Matrix analysis of statically and kinematically indeterminate frameworks, "
     "Int. J. Solids Structures 22 (1986) 409-428",
     NULL,
 };
 
 const mm_exercise mm_ex_sta_truss = {
-    .id = "sta-truss",
-    .chapter = 3,
-    .section = "3.7",
+    .id = "sta-truss", .chapter = 3, .section = "3.7",
     .title = "Plane trusses by the method of joints",
     .summary = "Any planar truss: member forces in tension and compression, reactions, and whether it is a "
                "mechanism or has a redundant member.",
     .tags = "statics, truss, method of joints, method of sections, determinacy, mechanism",
     .theory = "exercises/sta/truss.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -201,26 +201,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 11.1-11.3",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, articles 7/1-7/2",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 11.1-11.3", MM_STA_MERIAM "articles 7/1-7/2", NULL};
 
 const mm_exercise mm_ex_sta_virtual_work = {
-    .id = "sta-virtual-work",
-    .chapter = 3,
-    .section = "3.12",
+    .id = "sta-virtual-work", .chapter = 3, .section = "3.12",
     .title = "Virtual work: the torque that holds a slider-crank",
     .summary = "The holding torque of a slider-crank under a load, by virtual work in one line, against the "
                "force balance of its three bodies; the potential energy and its equilibria.",
     .tags = "statics, virtual work, mechanism, slider-crank, potential energy",
     .theory = "exercises/sta/virtual_work.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

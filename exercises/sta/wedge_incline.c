@@ -244,26 +244,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return (int)in[P_SETUP].x == 0 ? block(in, res, err) : wedge(in, res, err);
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 8.1-8.3",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, articles 6/3-6/5",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 8.1-8.3", MM_STA_MERIAM "articles 6/3-6/5", NULL};
 
 const mm_exercise mm_ex_sta_wedge_incline = {
-    .id = "sta-wedge-incline",
-    .chapter = 3,
-    .section = "3.8",
+    .id = "sta-wedge-incline", .chapter = 3, .section = "3.8",
     .title = "Dry friction: a block on an incline and a wedge",
     .summary = "Does the pushed block slide or tip first? What push drives a wedge, and is it self-locking? "
                "Dry friction at its limit, closed forms beside the numbers.",
-    .tags = "statics, friction, incline, wedge, tipping, self-locking",
-    .theory = "exercises/sta/wedge_incline.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, friction, incline, wedge, tipping, self-locking", .theory = "exercises/sta/wedge_incline.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };
