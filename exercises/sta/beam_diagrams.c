@@ -24,7 +24,6 @@
 #include "mm_sta.h"
 
 enum { P_L, P_SUPPORTS, P_A, P_B, P_POINT, P_DIST, P_MOMENTS, P_EI, P_POINTS };
-
 static const char *const support_kinds[] = {"simply-supported", "cantilever", "overhanging", NULL};
 
 static const mm_param params[] = {
@@ -50,7 +49,6 @@ static const mm_param params[] = {
 };
 
 enum { O_VEXT, O_XV, O_MEXT, O_XM, O_YMAX, O_XY, O_V, O_M, O_Y, O_VPT, O_MPT, O_REACT, O_ANIM };
-
 static const char *const rcols[] = {"x", "Ry", "C", NULL};
 static const char *const runits[] = {"m", "N", "N m", NULL};
 

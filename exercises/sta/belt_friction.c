@@ -22,7 +22,6 @@
 #include "mm_sta.h"
 
 enum { P_T1, P_MU, P_THETA, P_R, P_BETA, P_POINTS };
-
 static const mm_param params[] = {
     [P_T1] = {"T1", "tension on the slack side", "N", MM_REAL, 100, 1e-3, 1e7,
               .help = "the smaller tension, where the belt leaves the drum on the side it is pulled from"},
@@ -38,7 +37,6 @@ static const mm_param params[] = {
 };
 
 enum { O_T2, O_T2MIN, O_RATIO, O_TORQUE, O_MUEFF, O_T, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_T2] = MM_SCALAR("T2", "tight-side tension at the slip limit", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_T2MIN] = MM_SCALAR("T2_min", "smallest tight-side tension before slipping the other way", "N",

@@ -24,7 +24,6 @@
 #define MAXC 20
 
 enum { P_POLYGON, P_CIRCLES, P_POINTS };
-
 static const mm_param params[] = {
     [P_POLYGON] = {"polygon", "polygon vertices (x, y per row)", "m", MM_MATRIX, 0, -1e4, 1e4,
                    "0,0;4,0;4,1;1,1;1,3;0,3", NULL, MAXV, 2,
@@ -39,7 +38,6 @@ static const mm_param params[] = {
 };
 
 enum { O_AREA, O_XC, O_YC, O_IXX, O_IYY, O_IXY, O_I1, O_I2, O_ALPHA, O_ORIENT, O_IT, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_AREA] = MM_SCALAR("area", "area", "m^2", .flags = MM_ANSWER | MM_EXACT),
     [O_XC] = MM_SCALAR("xc", "centroid x", "m", .flags = MM_ANSWER | MM_EXACT),

@@ -25,7 +25,6 @@
 #define MAXF 20
 
 enum { P_FORCES, P_COUPLES, P_O };
-
 static const mm_param params[] = {
     [P_FORCES] = {"forces", "forces (x, y, z, Fx, Fy, Fz per row)", "", MM_MATRIX, 0, -1e9, 1e9,
                   "0,0,0,0,0,100;2,0,0,0,50,0;0,1,0,30,0,0", NULL, MAXF, 6,
@@ -37,7 +36,6 @@ static const mm_param params[] = {
 };
 
 enum { O_RX, O_RY, O_RZ, O_R, O_MX, O_MY, O_MZ, O_PITCH, O_PX, O_PY, O_PZ, O_MW, O_KIND, O_MLINE, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_RX] = MM_SCALAR("Rx", "resultant force, x", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_RY] = MM_SCALAR("Ry", "resultant force, y", "N", .flags = MM_ANSWER | MM_EXACT),

@@ -26,7 +26,6 @@
 #define MAXP 20
 
 enum { P_A, P_B, P_C, P_LOADS };
-
 static const mm_param params[] = {
     [P_A] = {"A", "left ground hinge (x, y)", "m", MM_VECTOR, 0, -1e4, 1e4, "0,0", NULL, 0, 2,
              .help = "the pin of the left body on the ground"},
@@ -41,7 +40,6 @@ static const mm_param params[] = {
 };
 
 enum { O_AX, O_AY, O_BX, O_BY, O_CX, O_CY, O_THRUST, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_AX] = MM_SCALAR("Ax", "reaction at A, x", "N", .flags = MM_ANSWER),
     [O_AY] = MM_SCALAR("Ay", "reaction at A, y", "N", .flags = MM_ANSWER),

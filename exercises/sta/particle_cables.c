@@ -21,7 +21,6 @@
 #include "mm_sta.h"
 
 enum { P_ANCHORS, P_RING, P_LOAD };
-
 static const mm_param params[] = {
     [P_ANCHORS] = {"anchors", "cable anchors (x, y, z per row)", "m", MM_MATRIX, 0, -1e4, 1e4,
                    "-2,-1,3;2,-1.5,3;0,2,3", NULL, 3, 3,
@@ -33,7 +32,6 @@ static const mm_param params[] = {
 };
 
 enum { O_T, O_TMAX, O_TPLOT, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_T] = MM_SCALAR("T%d", "tension in cable %d", "N", .flags = MM_ANSWER, .first = 1, .last = 3),
     [O_TMAX] = MM_SCALAR("T_max", "largest tension", "N"),

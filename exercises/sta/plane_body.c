@@ -25,7 +25,6 @@
 #define MAXP 20
 
 enum { P_LINKS, P_LOADS, P_C, P_BODY };
-
 static const mm_param params[] = {
     [P_LINKS] = {"links", "support links (x, y, dx, dy per row)", "", MM_MATRIX, 0, -1e4, 1e4,
                  "0,0,1,0;0,0,0,1;4,0,-1,2", NULL, MAXL, 4,
@@ -42,7 +41,6 @@ static const mm_param params[] = {
 };
 
 enum { O_R, O_RPLOT, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_R] = MM_SCALAR("R%d", "reaction of link %d (along its direction)", "N", .flags = MM_ANSWER, .first = 1,
                       .last = MAXL),

@@ -22,7 +22,6 @@
 #include "mm_sta.h"
 
 enum { P_W, P_R, P_A, P_MU, P_THETA, P_POINTS };
-
 static const mm_param params[] = {
     [P_W] = {"W", "load on the wheel", "N", MM_REAL, 1000, 1e-3, 1e7, .help = "weight plus what it carries"},
     [P_R] = {"r", "wheel radius", "m", MM_REAL, 0.3, 1e-3, 10, .help = "of the wheel"},
@@ -36,7 +35,6 @@ static const mm_param params[] = {
 };
 
 enum { O_PROLL, O_PSLIDE, O_MODE, O_PAPPROX, O_MUB, O_ROLL, O_SLIDE, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_PROLL] = MM_SCALAR("P_roll", "pull that starts the wheel rolling", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_PSLIDE] = MM_SCALAR("P_slide", "pull that would make it slide", "N", .flags = MM_ANSWER | MM_EXACT),

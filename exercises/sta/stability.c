@@ -29,7 +29,6 @@
 #include "mm_sta.h"
 
 enum { P_L, P_W, P_K, P_A, P_POINTS };
-
 static const mm_param params[] = {
     [P_L] = {"L", "rod length", "m", MM_REAL, 1, 1e-3, 100, .help = "from the hinge to the weight"},
     [P_W] = {"W", "weight at the top", "N", MM_REAL, 100, 0, 1e7, .help = "the load that tends to topple the rod"},
@@ -39,7 +38,6 @@ static const mm_param params[] = {
 };
 
 enum { O_WCR, O_RATIO, O_THEQ, O_NEQ, O_UP, O_EQ, O_V, O_STABLE, O_UNSTABLE, O_NEUTRAL, O_BRANCH, O_ANIM };
-
 static const char *const eqcols[] = {"theta", "V", "d2V", "kind", NULL};
 static const char *const equnits[] = {"rad", "J", "J", "", NULL};
 

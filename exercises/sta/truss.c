@@ -26,7 +26,6 @@
 #include "mm_truss.h"
 
 enum { P_NODES, P_MEMBERS, P_SUPPORTS, P_LOADS };
-
 static const mm_param params[] = {
     [P_NODES] = {"nodes", "joints (x, y per row)", "m", MM_MATRIX, 0, -1e4, 1e4, "0,0;4,0;8,0;2,3;6,3", NULL,
                  MM_TRUSS_MAX_NODES, 2,
@@ -46,7 +45,6 @@ static const mm_param params[] = {
 };
 
 enum { O_DET, O_NJ, O_NM, O_NR, O_TMAX, O_CMAX, O_MEMBERS, O_REACT, O_FPLOT, O_ANIM };
-
 static const char *const mcols[] = {"member", "force", "joint_i", "joint_j", "length", "state", NULL};
 static const char *const munits[] = {"", "N", "", "", "m", "", NULL};
 static const char *const rcols[] = {"node", "Rx", "Ry", NULL};

@@ -24,7 +24,6 @@
 #include "mm_sta.h"
 
 enum { P_R, P_L, P_E, P_THETA, P_P, P_POINTS };
-
 static const mm_param params[] = {
     [P_R] = {"r", "crank length", "m", MM_REAL, 0.1, 1e-3, 10, .help = "from the pivot O to the crank pin A"},
     [P_L] = {"l", "rod length", "m", MM_REAL, 0.4, 1e-3, 100, .help = "from A to the slider pin B; l > r + |e|"},
@@ -36,7 +35,6 @@ static const mm_param params[] = {
 };
 
 enum { O_M, O_DX, O_XB, O_FROD, O_N, O_V, O_STABLE, O_UNSTABLE, O_MREQ, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_M] = MM_SCALAR("M", "torque on the crank that holds it (counter-clockwise +)", "N m",
                       .flags = MM_ANSWER | MM_EXACT),

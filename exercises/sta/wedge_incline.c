@@ -23,7 +23,6 @@
 #include "mm_sta.h"
 
 enum { P_SETUP, P_W, P_MU, P_ALPHA, P_WIDTH, P_H, P_HP, P_BETA };
-
 static const char *const setups[] = {"block", "wedge", NULL};
 
 static const mm_param params[] = {
@@ -42,7 +41,6 @@ static const mm_param params[] = {
 
 enum { O_PUP, O_PHOLD, O_PTIP, O_FIRST, O_ASLIP, O_ATIP, O_PIN, O_POUT, O_LOCK, O_N1, O_N2, O_N3, O_SUP, O_STIP,
        O_SIN, O_SOUT, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_PUP] = MM_SCALAR("P_up", "push that starts the block sliding up", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_PHOLD] = MM_SCALAR("P_hold", "least push that keeps it from sliding down", "N", .flags = MM_ANSWER | MM_EXACT),
