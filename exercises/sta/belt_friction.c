@@ -171,12 +171,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     /* check 2: the finest peg belt meets (3) within its Richardson estimate */
     double est = fabs(Tn[K - 1] - Tn[K - 2]) / 3;
-    char *name = mm_res_printf(res, "%d-peg belt vs T1 e^(mu theta / sin beta) [N] (tolerance: 1.5 x its "
-                                    "Richardson error estimate)", n0 << (K - 1));
-    if (!name)
-        return MM_ENOMEM;
     /* plus rounding: once in T_n and T2, once more in the estimate */
-    mm_res_check_abs(res, name, Tn[K - 1], T2, 1.5 * est + 2 * rnd);
+    mm_sta_check_absf(res, Tn[K - 1], T2, 1.5 * est + 2 * rnd, "%d-peg belt vs T1 e^(mu theta / sin beta) [N] "
+                      "(tolerance: 1.5 x its Richardson error estimate)", n0 << (K - 1));
     /* check 3: the drum's moment balance: (T2 - T1) r against the friction
      * moment integral of mu_e T(phi) r dphi (eq. 6), 5-point Gauss-Legendre
      * on pieces where mu_e phi grows by at most 1/2 (relative error < 1e-15) */

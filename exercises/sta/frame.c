@@ -124,24 +124,19 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (fabs(cf[k] - x[k]) > wd)
             wd = fabs(cf[k] - x[k]), wk = k;
     static const char *const names[] = {"Ax", "Ay", "Bx", "By", "Cx", "Cy"};
-    char *name = mm_res_printf(res, "%s by moments about A (whole frame) and C (right body) vs the linear "
-                                    "solve [N]", names[wk]);
-    if (!name)
-        return MM_ENOMEM;
-    mm_res_check_abs(res, name, cf[wk], x[wk], 64 * DBL_EPSILON * (Fs + Xmax) / er.rcond);
+    mm_sta_check_absf(res, cf[wk], x[wk], 64 * DBL_EPSILON * (Fs + Xmax) / er.rcond,
+                      "%s by moments about A (whole frame) and C (right body) vs the linear solve [N]", names[wk]);
     /* the thrust against the rise of the crown, by the closed form (3) */
-    {
-        double yl = A[1] + (B[1] - A[1]) * (C[0] - A[0]) / (B[0] - A[0]), h0 = C[1] - yl;
-        mm_series *th = mm_res_series(res, O_THRUST, 60);
-        if (!th)
-            return MM_ENOMEM;
-        for (int i = 0; i < 60; i++) {
-            double hh = h0 * (0.2 + 2.8 * i / 59), Cy = yl + hh;
-            double MCi = PR[2] - (C[0] * PR[1] - Cy * PR[0]);
-            double b21 = -(B[1] - Cy), dt = a11 * a22 - a12 * b21;
-            double Bxi = (-MA * a22 + MCi * a12) / dt;
-            th->x[i] = hh, th->y[i] = -Bxi - PL[0] - PR[0];
-        }
+    double yl = A[1] + (B[1] - A[1]) * (C[0] - A[0]) / (B[0] - A[0]), h0 = C[1] - yl;
+    mm_series *th = mm_res_series(res, O_THRUST, 60);
+    if (!th)
+        return MM_ENOMEM;
+    for (int i = 0; i < 60; i++) {
+        double hh = h0 * (0.2 + 2.8 * i / 59), Cy = yl + hh;
+        double MCi = PR[2] - (C[0] * PR[1] - Cy * PR[0]);
+        double b21 = -(B[1] - Cy), dt = a11 * a22 - a12 * b21;
+        double Bxi = (-MA * a22 + MCi * a12) / dt;
+        th->x[i] = hh, th->y[i] = -Bxi - PL[0] - PR[0];
     }
     mm_res_method(res, "six equilibrium equations of the two bodies, LU with the rank test", 0);
 

@@ -145,11 +145,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     for (int i = 0; i < n; i++)
         if (fabs(T[i] - Tc[i]) >= worst)
             worst = fabs(T[i] - Tc[i]), wi = i;
-    char *name = mm_res_printf(res, "cable %d: %s vs the linear solve [N]", wi + 1,
-                               n == 3 ? "Cramer's rule (triple products, eq. 3)" : "Lami's theorem (eq. 4)");
-    if (!name)
-        return MM_ENOMEM;
-    mm_res_check_abs(res, name, Tc[wi], T[wi], 16 * DBL_EPSILON * Pn / er.rcond);
+    mm_sta_check_absf(res, Tc[wi], T[wi], 16 * DBL_EPSILON * Pn / er.rcond, "cable %d: %s vs the linear solve [N]",
+                      wi + 1, n == 3 ? "Cramer's rule (triple products, eq. 3)" : "Lami's theorem (eq. 4)");
     mm_res_method(res, "equilibrium of the ring as a linear system (LU with the rank test)", 0);
     if (er.rcond < 1e-3)
         mm_res_warn(res, "the cables are nearly in one plane (condition %.2g): small changes of the load "

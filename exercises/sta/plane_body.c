@@ -161,11 +161,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (fabs(Rr[k] - R[k]) >= worst)
             worst = fabs(Rr[k] - R[k]), wk = k;
     }
-    char *name = mm_res_printf(res, "link %d by moments about where the other two meet (Ritter) vs the "
-                                    "linear solve [N]", wk + 1);
-    if (!name)
-        return MM_ENOMEM;
-    mm_res_check_abs(res, name, Rr[wk], R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond);
+    mm_sta_check_absf(res, Rr[wk], R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond,
+                      "link %d by moments about where the other two meet (Ritter) vs the linear solve [N]", wk + 1);
     mm_res_method(res, "three equilibrium equations, LU with the rank test", 0);
 
     /* the drawing */

@@ -152,11 +152,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (fabs(-pw - R[k]) >= worst_vw)
             worst_vw = fabs(-pw - R[k]), wk = k, Rv = -pw;
     }
-    char *name = mm_res_printf(res, "link %d by virtual work (the motion that stretches it alone) vs the "
-                                    "linear solve [N]", wk + 1);
-    if (!name)
-        return MM_ENOMEM;
-    mm_res_check_abs(res, name, Rv, R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond);
+    mm_sta_check_absf(res, Rv, R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond,
+                      "link %d by virtual work (the motion that stretches it alone) vs the linear solve [N]", wk + 1);
     mm_res_method(res, "six equilibrium equations, LU with the rank test", 0);
 
     /* the drawing */

@@ -328,12 +328,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             if (r > ratio)
                 ratio = r, worst_e = e, tol_w = tol;
         }
-        char *name = mm_res_printf(res, "method of sections: %d cut%s, %d member%s; member %d by the section vs "
-                                        "the joints [N]",
-                                   cuts, cuts > 1 ? "s" : "", found, found > 1 ? "s" : "", worst_e + 1);
-        if (!name)
-            return MM_ENOMEM;
-        mm_res_check_abs(res, name, Fs[worst_e], F[worst_e], tol_w);
+        mm_sta_check_absf(res, Fs[worst_e], F[worst_e], tol_w, "method of sections: %d cut%s, %d member%s; member %d "
+                          "by the section vs the joints [N]", cuts, cuts > 1 ? "s" : "", found, found > 1 ? "s" : "",
+                          worst_e + 1);
     } else {
         mm_res_warn(res, "no straight cut crosses exactly three members here, so the method of sections "
                          "is not shown; the joint and whole-truss checks still apply");
