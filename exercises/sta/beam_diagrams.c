@@ -17,7 +17,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
 
 #include "mm_beam.h"
 #include "mm_exhelp.h"

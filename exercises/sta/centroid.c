@@ -13,7 +13,6 @@
  * Reference: Hibbeler, Statics, 14th ed., ch. 9 and 10; Meriam & Kraige,
  * Statics, ch. 5 and appendix A.
  */
-#include <float.h>
 #include <math.h>
 
 #include "mm_exhelp.h"

@@ -14,7 +14,6 @@
  * from the parts of r - O and F perpendicular to the axis (eq. 4).
  * Reference: Hibbeler, Statics, 14th ed., sections 4.1-4.5.
  */
-#include <float.h>
 #include <math.h>
 
 #include "mm_exhelp.h"

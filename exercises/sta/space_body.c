@@ -14,8 +14,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
-#include <string.h>
 
 #include "mm_equil.h"
 #include "mm_exhelp.h"
