@@ -156,6 +156,39 @@ int mm_sta_arrow(mm_result *res, const char *name, double x0, double y0, double 
     return MM_OK;
 }
 
+int mm_sta_worst(int n, const double *a, const double *b, int last)
+{
+    int w = 0;
+    double d = -1;
+    for (int k = 0; k < n; k++) {
+        double e = fabs(a[k] - b[k]);
+        if (last ? e >= d : e > d)
+            d = e, w = k;
+    }
+    return w;
+}
+
+int mm_sta_frame_apart(mm_result *res, const double *A, const double *B, const double *C, const double *R, int n,
+                       const double *loads, double size, double sc)
+{
+    double gap = 0.08 * size, s = 0.04 * size;
+    mm_sta_line(res, "left body", A[0], A[1], C[0], C[1], NULL, 0, 0);
+    mm_sta_line(res, "right body", C[0] + gap, C[1], B[0] + gap, B[1], NULL, 0, 0);
+    mm_sta_pin(res, "pin A", A[0], A[1], s, 0);
+    mm_sta_pin(res, "pin B", B[0] + gap, B[1], s, 0);
+    mm_sta_force(res, "reaction A", A[0], A[1], R[0], R[1], sc, 1);
+    mm_sta_force(res, "reaction B", B[0] + gap, B[1], R[2], R[3], sc, 1);
+    mm_sta_force(res, "pin force on the left body", C[0], C[1], R[4], R[5], sc, 1);
+    mm_sta_force(res, "pin force on the right body", C[0] + gap, C[1], -R[4], -R[5], sc, 1);
+    for (int i = 0; i < n; i++) {
+        const double *p = loads + 4 * i;
+        mm_sta_force(res, "load", p[0] + (p[0] > C[0] ? gap : 0), p[1], p[2], p[3], sc, 1);
+    }
+    mm_sta_label(res, A[0], A[1] - 2 * s, "A");
+    mm_sta_label(res, B[0] + gap, B[1] - 2 * s, "B");
+    return mm_sta_label(res, C[0] + 0.5 * gap, C[1] + s, "C");
+}
+
 int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, const char *fmt, ...)
 {
     char buf[400];

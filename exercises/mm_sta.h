@@ -101,6 +101,11 @@ int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, cons
 #endif
     ;
 
+/* The index of the largest |a[k] - b[k]| over n >= 1 values, the check
+ * that names the worst of several: the last of equal ones when last, else
+ * the first (0 when none is a number). */
+int mm_sta_worst(int n, const double *a, const double *b, int last);
+
 /* An arrow from (x0, y0) to (x1, y1) [m] for a quantity that is not a
  * force in N: a pressure drawn at `scale` m/Pa, a weight per unit areal
  * weight...; value its size in unit. */
@@ -116,6 +121,15 @@ int mm_sta_label3(mm_result *res, const double *p, const char *fmt, ...)
 
 /* The axes x, y, z drawn from O, len long, each with its name at its tip. */
 int mm_sta_axes3(mm_result *res, const double *O, double len);
+
+/* A three-hinged frame of span `size` taken apart at its crown hinge C:
+ * the left body from A to C, the right one from C to B moved right by a
+ * gap of 0.08 size, pins at A and B, the reactions R[0..3] (Ax, Ay, Bx, By)
+ * and the pin force R[4..5] on the left body (its opposite on the right
+ * one), the n loads (rows x, y, Fx, Fy; those right of C moved with the
+ * right body), all at sc m/N, and the labels A, B, C. */
+int mm_sta_frame_apart(mm_result *res, const double *A, const double *B, const double *C, const double *R, int n,
+                       const double *loads, double size, double sc);
 
 /* The textbooks the chapter cites, to be followed by the section:
  * MM_STA_HIBBELER "section 8.6". */

@@ -22,8 +22,6 @@
 #include "mm_exhelp.h"
 #include "mm_sta.h"
 
-#define MAXP 20
-
 enum { P_A, P_B, P_C, P_LOADS };
 static const mm_param params[] = {
     [P_A] = {"A", "left ground hinge (x, y)", "m", MM_VECTOR, 0, -1e4, 1e4, "0,0", NULL, 0, 2,
@@ -33,7 +31,7 @@ static const mm_param params[] = {
     [P_C] = {"C", "crown hinge (x, y)", "m", MM_VECTOR, 0, -1e4, 1e4, "4,3", NULL, 0, 2,
              .help = "the pin joining the two bodies; loads left of it act on the left body"},
     [P_LOADS] = {"loads", "loads (x, y, Fx, Fy per row)", "", MM_MATRIX, 0, -1e9, 1e9,
-                 "2,1.5,0,-10000;6,1.5,2000,-5000", NULL, MAXP, 4,
+                 "2,1.5,0,-10000;6,1.5,2000,-5000", NULL, 20, 4,
                  .help = "one row per force: its point (m) and components (N, y up); x < x_C on the left "
                          "body, x > x_C on the right, x = x_C on the hinge (counted with the left body)"},
 };
@@ -90,9 +88,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_equil_result er;
     int rc = mm_equil_solve(6, 6, M, b, x, NULL, NULL, &er, err);
     if (rc == MM_ESINGULAR)
-        return mm_error_set(err, MM_ESINGULAR, "C",
-                            "the hinges A, C and B lie on one line: C can move across it without turning either "
-                            "body much (a mechanism); move C off the line AB");
+        return mm_error_set(err, MM_ESINGULAR, "C", "the hinges A, C and B lie on one line: C can move across it "
+                            "without turning either body much (a mechanism); move C off the line AB");
     if (rc != MM_OK)
         return rc;
     double xerr = 4 * DBL_EPSILON * Fs / er.rcond, Xmax = 0;
@@ -117,11 +114,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double det = a11 * a22 - a12 * a21;
     double Bx = (-MA * a22 + MC * a12) / det, By = (-MC * a11 + MA * a21) / det;
     double cf[6] = {-Bx - PL[0] - PR[0], -By - PL[1] - PR[1], Bx, By, Bx + PR[0], By + PR[1]};
-    int wk = 0;
-    double wd = -1;
-    for (int k = 0; k < 6; k++)
-        if (fabs(cf[k] - x[k]) > wd)
-            wd = fabs(cf[k] - x[k]), wk = k;
+    int wk = mm_sta_worst(6, cf, x, 0);
     static const char *const names[] = {"Ax", "Ay", "Bx", "By", "Cx", "Cy"};
     mm_sta_check_absf(res, cf[wk], x[wk], 64 * DBL_EPSILON * (Fs + Xmax) / er.rcond,
                       "%s by moments about A (whole frame) and C (right body) vs the linear solve [N]", names[wk]);
@@ -138,25 +131,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         th->x[i] = hh, th->y[i] = -Bxi - PL[0] - PR[0];
     }
     mm_res_method(res, "six equilibrium equations of the two bodies, LU with the rank test", 0);
-
     /* the drawing: the bodies taken apart at C (the right one moved right) */
     mm_sta_fbd(res);
-    double gap = 0.08 * size, sc = mm_sta_scale(fmax(Fs, Xmax), size, 0.2), s = 0.04 * size;
-    mm_sta_line(res, "left body", A[0], A[1], C[0], C[1], NULL, 0, 0);
-    mm_sta_line(res, "right body", C[0] + gap, C[1], B[0] + gap, B[1], NULL, 0, 0);
-    mm_sta_pin(res, "pin A", A[0], A[1], s, 0);
-    mm_sta_pin(res, "pin B", B[0] + gap, B[1], s, 0);
-    mm_sta_force(res, "reaction A", A[0], A[1], x[0], x[1], sc, 1);
-    mm_sta_force(res, "reaction B", B[0] + gap, B[1], x[2], x[3], sc, 1);
-    mm_sta_force(res, "pin force on the left body", C[0], C[1], x[4], x[5], sc, 1);
-    mm_sta_force(res, "pin force on the right body", C[0] + gap, C[1], -x[4], -x[5], sc, 1);
-    for (int i = 0; i < Ld->rows; i++) {
-        const double *p = Ld->data + 4 * i;
-        mm_sta_force(res, "load", p[0] + (p[0] > C[0] ? gap : 0), p[1], p[2], p[3], sc, 1);
-    }
-    mm_sta_label(res, A[0], A[1] - 2 * s, "A");
-    mm_sta_label(res, B[0] + gap, B[1] - 2 * s, "B");
-    mm_sta_label(res, C[0] + 0.5 * gap, C[1] + s, "C");
+    mm_sta_frame_apart(res, A, B, C, x, Ld->rows, Ld->data, size, mm_sta_scale(fmax(Fs, Xmax), size, 0.2));
     return rc;
 }
 

@@ -140,11 +140,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     mm_check_residual(res, "ring: |sum of forces| [N]", mm_sta_norm(sum), scale, 16);
     /* check 2: the tensions by the closed form */
-    double worst = 0;
-    int wi = 0;
-    for (int i = 0; i < n; i++)
-        if (fabs(T[i] - Tc[i]) >= worst)
-            worst = fabs(T[i] - Tc[i]), wi = i;
+    int wi = mm_sta_worst(n, Tc, T, 1);
     mm_sta_check_absf(res, Tc[wi], T[wi], 16 * DBL_EPSILON * Pn / er.rcond, "cable %d: %s vs the linear solve [N]",
                       wi + 1, n == 3 ? "Cramer's rule (triple products, eq. 3)" : "Lami's theorem (eq. 4)");
     mm_res_method(res, "equilibrium of the ring as a linear system (LU with the rank test)", 0);

@@ -134,8 +134,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_check_residual(res, "sum M about the origin [N m]", mz, sm + sf * size, 16);
     /* check 2: Ritter, eq. (3): moments about the meeting point of the
      * other two lines (forces across them when they are parallel) */
-    double worst = 0;
-    int wk = 0;
     double Rr[3];
     for (int k = 0; k < 3; k++) {
         int a = (k + 1) % 3, c = (k + 2) % 3;
@@ -158,9 +156,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             arm = e[k][0] * nx + e[k][1] * ny;
         }
         Rr[k] = num / arm;
-        if (fabs(Rr[k] - R[k]) >= worst)
-            worst = fabs(Rr[k] - R[k]), wk = k;
     }
+    int wk = mm_sta_worst(3, Rr, R, 1);
     mm_sta_check_absf(res, Rr[wk], R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond,
                       "link %d by moments about where the other two meet (Ritter) vs the linear solve [N]", wk + 1);
     mm_res_method(res, "three equilibrium equations, LU with the rank test", 0);

@@ -131,8 +131,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_check_residual(res, "sum F and sum M / size, largest component [N]", worst, scale, 32);
     /* check 2: virtual work, eqs. (3)-(4): the motion xi_k with A^T xi_k =
      * e_k stretches link k alone; R_k = -(power of the loads on it) */
-    double At[36], xi[6], worst_vw = 0, Rv = 0;
-    int wk = 0;
+    double At[36], xi[6], Rv[6];
     for (int r = 0; r < 6; r++)
         for (int c = 0; c < 6; c++)
             At[r * 6 + c] = A[c * 6 + r];
@@ -147,10 +146,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double pw = 0;
         for (int c = 0; c < 6; c++)
             pw += W[c] * xi[c];
-        if (fabs(-pw - R[k]) >= worst_vw)
-            worst_vw = fabs(-pw - R[k]), wk = k, Rv = -pw;
+        Rv[k] = -pw;
     }
-    mm_sta_check_absf(res, Rv, R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond,
+    int wk = mm_sta_worst(6, Rv, R, 1);
+    mm_sta_check_absf(res, Rv[wk], R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond,
                       "link %d by virtual work (the motion that stretches it alone) vs the linear solve [N]", wk + 1);
     mm_res_method(res, "six equilibrium equations, LU with the rank test", 0);
 
