@@ -189,6 +189,35 @@ int mm_sta_frame_apart(mm_result *res, const double *A, const double *B, const d
     return mm_sta_label(res, C[0] + 0.5 * gap, C[1] + s, "C");
 }
 
+int mm_sta_cables3(mm_result *res, int n, const double *ring, const double *anchors, const double *T,
+                   const double (*u)[3], const double *P, double Fmax, double tol)
+{
+    double size = 0;
+    for (int i = 0; i < n; i++) {
+        double d[3] = {anchors[3 * i] - ring[0], anchors[3 * i + 1] - ring[1], anchors[3 * i + 2] - ring[2]};
+        size = fmax(size, mm_sta_norm(d));
+    }
+    double fs = mm_sta_scale(Fmax, size, 0.4), ru, rv;
+    mm_sta_project(ring[0], ring[1], ring[2], &ru, &rv);
+    for (int i = 0; i < n; i++) {
+        const double *a = anchors + 3 * i;
+        double au, av;
+        mm_sta_project(a[0], a[1], a[2], &au, &av);
+        char nm[24];
+        snprintf(nm, sizeof nm, "cable %d", i + 1);
+        mm_sta_member(res, nm, ru, rv, au, av, T[i], tol);
+        double box[8] = {au - 0.04 * size, av, au + 0.04 * size, av, au + 0.04 * size, av + 0.04 * size,
+                         au - 0.04 * size, av + 0.04 * size};
+        mm_sta_polygon(res, "anchor", 4, box, "ground");
+        double t[3] = {T[i] * u[i][0], T[i] * u[i][1], T[i] * u[i][2]};
+        if (T[i] > 0)
+            mm_sta_arrow3(res, "tension", ring, t, fs, 0, "N", "tension");
+        mm_sta_label(res, 0.5 * (ru + au), 0.5 * (rv + av), "T%d = %.4g N", i + 1, T[i]);
+    }
+    mm_sta_circle(res, "ring", ru, rv, 0.03 * size, NULL);
+    return mm_sta_arrow3(res, "load", ring, P, fs, 0, "N", NULL);
+}
+
 int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, const char *fmt, ...)
 {
     char buf[400];

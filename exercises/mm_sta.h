@@ -131,6 +131,15 @@ int mm_sta_axes3(mm_result *res, const double *O, double len);
 int mm_sta_frame_apart(mm_result *res, const double *A, const double *B, const double *C, const double *R, int n,
                        const double *loads, double size, double sc);
 
+/* A ring at `ring` held by n cables to the anchors (rows x, y, z) in space,
+ * u[i] the unit vector from the ring to anchor i: each cable coloured by its
+ * tension T[i] (within tol of 0: no colour), a small block at its anchor,
+ * its pull on the ring when T[i] > 0 and its label; the ring and the load
+ * P on it, drawn to the size of the longest cable; Fmax, the largest
+ * force, 0.4 of it long. */
+int mm_sta_cables3(mm_result *res, int n, const double *ring, const double *anchors, const double *T,
+                   const double (*u)[3], const double *P, double Fmax, double tol);
+
 /* The textbooks the chapter cites, to be followed by the section:
  * MM_STA_HIBBELER "section 8.6". */
 #define MM_STA_HIBBELER "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, "

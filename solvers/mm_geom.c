@@ -416,3 +416,11 @@ void mm_geom_frame_mul(const double A[12], const double B[12], double C[12])
     }
     memcpy(C, T, sizeof T);
 }
+
+/* ---- statics (chapter 3) ------------------------------------------------------ */
+
+double mm_geom_angle3(const double a[3], const double b[3])
+{
+    mm_v3 u = {a[0], a[1], a[2]}, v = {b[0], b[1], b[2]};
+    return atan2(mm_v3_norm(mm_v3_cross(u, v)), mm_v3_dot(u, v));
+}

@@ -229,4 +229,12 @@ void mm_geom_dh(double th, double a, double al, double T[12]);
 /* C = A B for transforms [R | p] stored row-major 3 x 4; C may alias A or B. */
 void mm_geom_frame_mul(const double A[12], const double B[12], double C[12]);
 
+/* ---- statics (chapter 3) ------------------------------------------------------ */
+
+/* The angle in [0, pi] between the vectors a and b (three doubles each, not
+ * both zero) as atan2(|a x b|, a . b): accurate near 0 and pi, where acos
+ * of the cosine loses half the digits (while |a x b|^2 stays a normal
+ * double: for unit vectors, angles above 1e-154).  Cannot fail. */
+double mm_geom_angle3(const double a[3], const double b[3]);
+
 #endif
