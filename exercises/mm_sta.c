@@ -218,6 +218,111 @@ int mm_sta_cables3(mm_result *res, int n, const double *ring, const double *anch
     return mm_sta_arrow3(res, "load", ring, P, fs, 0, "N", NULL);
 }
 
+int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
+{
+    const double *u = mech;
+    int red = -1;
+    if (r->n_self > 0) {
+        red = 0;
+        for (int k = 1; k < n; k++)
+            if (fabs(self[k]) > fabs(self[red]))
+                red = k;
+    }
+    if (r->n_mech == 0)
+        return mm_error_set(err, MM_ESINGULAR, "links",
+                            "statically indeterminate: %d links for 3 equations; link %d is redundant", n, red + 1);
+    char what[120];
+    if (fabs(u[2]) > 1e-9 * hypot(u[0], u[1]))
+        snprintf(what, sizeof what, "the links let the body turn about (%.4g, %.4g) m", 0.0 - u[1] / u[2],
+                 0.0 + u[0] / u[2]);
+    else
+        snprintf(what, sizeof what, "the links let the body slide along a line at %.1f deg to x",
+                 atan2(u[1], u[0]) * 180 / M_PI);
+    return mm_error_set(err, MM_ESINGULAR, "links", "improperly supported (%d link%s): %s%s; add or move a link", n,
+                        n > 1 ? "s" : "", what, red >= 0 ? ", while another link is redundant" : "");
+}
+
+int mm_sta_improper3(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
+{
+    if (r->n_mech > 0) {
+        /* the free motion: origin velocity v, angular velocity w */
+        const double *v = mech, *w = mech + 3;
+        double wn = mm_sta_norm(w);
+        if (wn > 1e-9 * mm_sta_norm(v)) {
+            double p[3];
+            mm_sta_cross(w, v, p);
+            return mm_error_set(err, MM_ESINGULAR, "links",
+                                "improperly supported (%d links, rank %d): the body can turn about the axis "
+                                "through (%.3g, %.3g, %.3g) along (%.3g, %.3g, %.3g); add or move a link",
+                                n, r->rank, p[0] / (wn * wn) + 0.0, p[1] / (wn * wn) + 0.0,
+                                p[2] / (wn * wn) + 0.0, w[0] / wn + 0.0, w[1] / wn + 0.0, w[2] / wn + 0.0);
+        }
+        double vn = mm_sta_norm(v);
+        return mm_error_set(err, MM_ESINGULAR, "links",
+                            "improperly supported (%d links, rank %d): the body can slide along (%.3g, %.3g, "
+                            "%.3g); add or move a link", n, r->rank, v[0] / vn + 0.0, v[1] / vn + 0.0,
+                            v[2] / vn + 0.0);
+    }
+    int red = 0;
+    for (int k = 1; k < n; k++)
+        if (fabs(self[k]) > fabs(self[red]))
+            red = k;
+    return mm_error_set(err, MM_ESINGULAR, "links",
+                        "statically indeterminate: %d links for 6 equations; link %d is redundant", n, red + 1);
+}
+
+int mm_sta_links2(mm_result *res, int n, const double *links, const double *R, double size, double sc)
+{
+    int rc = MM_OK;
+    for (int k = 0; k < n; k++) {
+        const double *l = links + 4 * k;
+        double len = hypot(l[2], l[3]), e[2] = {l[2] / len, l[3] / len};
+        mm_sta_line(res, "link", l[0], l[1], l[0] - 0.12 * size * e[0], l[1] - 0.12 * size * e[1], "ground", 0, 0);
+        if (R[k] != 0)
+            mm_sta_force(res, "reaction", l[0], l[1], R[k] * e[0], R[k] * e[1], sc, 1);
+        rc = mm_sta_label(res, l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], "R%d", k + 1);
+    }
+    return rc;
+}
+
+int mm_sta_links3(mm_result *res, int n, const double *links, const double *R, double size, double sc)
+{
+    int rc = MM_OK;
+    for (int k = 0; k < n; k++) {
+        const double *l = links + 6 * k;
+        double len = mm_sta_norm(l + 3), e[3] = {l[3] / len, l[4] / len, l[5] / len}, t[4], f[3];
+        mm_sta_project(l[0], l[1], l[2], &t[0], &t[1]);
+        mm_sta_project(l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], l[2] - 0.15 * size * e[2], &t[2], &t[3]);
+        mm_sta_path(res, "link", 2, t, "ground");
+        for (int c = 0; c < 3; c++)
+            f[c] = R[k] * e[c];
+        if (R[k] != 0)
+            mm_sta_arrow3(res, "reaction", l, f, sc, 1, "N", NULL);
+        rc = mm_sta_label(res, t[2], t[3], "R%d", k + 1);
+    }
+    return rc;
+}
+
+int mm_sta_loads2(mm_result *res, int n, const double *loads, double sc)
+{
+    int rc = MM_OK;
+    for (int i = 0; i < n; i++) {
+        const double *p = loads + 4 * i;
+        rc = mm_sta_force(res, "load", p[0], p[1], p[2], p[3], sc, 1);
+    }
+    return rc;
+}
+
+int mm_sta_polygon3(mm_result *res, const char *name, int n, const double *xyz, const char *style)
+{
+    double *xy = mm_res_alloc(res, 2 * (size_t)n * sizeof *xy);
+    if (!xy)
+        return MM_ENOMEM;
+    for (int i = 0; i < n; i++)
+        mm_sta_project(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], &xy[2 * i], &xy[2 * i + 1]);
+    return mm_sta_polygon(res, name, n, xy, style);
+}
+
 int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, const char *fmt, ...)
 {
     char buf[400];

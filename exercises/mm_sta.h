@@ -20,6 +20,7 @@
 #ifndef MM_STA_H
 #define MM_STA_H
 
+#include "mm_equil.h"
 #include "mm_exercise.h"
 
 /* Start a one-frame animation (the free-body diagram); t = 0. */
@@ -139,6 +140,32 @@ int mm_sta_frame_apart(mm_result *res, const double *A, const double *B, const d
  * force, 0.4 of it long. */
 int mm_sta_cables3(mm_result *res, int n, const double *ring, const double *anchors, const double *T,
                    const double (*u)[3], const double *P, double Fmax, double tol);
+
+/* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
+
+/* Why mm_equil_solve found the links of a body singular (MM_ESINGULAR with
+ * the result r, the free motion mech and the self-stress self it returned),
+ * in mechanics words: the motion the n links allow (in the plane: the
+ * point the body can turn about, or the direction it can slide in, from
+ * mech = (vx, vy of the origin, turn w); in space: the axis it can turn
+ * about, or the direction it can slide in, from mech = (v of the origin,
+ * angular velocity w)), else the link that is redundant (the largest
+ * |self|).  Fills err (param "links"); returns MM_ESINGULAR. */
+int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err);
+int mm_sta_improper3(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err);
+
+/* n support links (rows x, y, dx, dy in the plane; x, y, z, dx, dy, dz in
+ * space) of a body of the given size: each link a short stroke on the side
+ * its reaction R[k] (along the direction) pushes from, the reaction drawn
+ * at sc m/N unless it is 0, and its label Rk. */
+int mm_sta_links2(mm_result *res, int n, const double *links, const double *R, double size, double sc);
+int mm_sta_links3(mm_result *res, int n, const double *links, const double *R, double size, double sc);
+
+/* n loads (rows x, y, Fx, Fy) pushing on a body, at sc m/N. */
+int mm_sta_loads2(mm_result *res, int n, const double *loads, double sc);
+
+/* A closed body of n vertices in space (rows x, y, z), projected. */
+int mm_sta_polygon3(mm_result *res, const char *name, int n, const double *xyz, const char *style);
 
 /* The textbooks the chapter cites, to be followed by the section:
  * MM_STA_HIBBELER "section 8.6". */

@@ -20,7 +20,6 @@
 #include "mm_sta.h"
 
 #define MAXL 8
-#define MAXP 20
 
 enum { P_LINKS, P_LOADS, P_BODY };
 static const mm_param params[] = {
@@ -29,7 +28,7 @@ static const mm_param params[] = {
                  .help = "one row per reaction component: its point (m) and direction; a ball joint is three "
                          "rows at one point, a journal bearing two across the shaft"},
     [P_LOADS] = {"loads", "loads (x, y, z, Fx, Fy, Fz per row)", "", MM_MATRIX, 0, -1e9, 1e9,
-                 "1,0.5,0,0,0,-500;2,1,0,100,0,-300", NULL, MAXP, 6,
+                 "1,0.5,0,0,0,-500;2,1,0,100,0,-300", NULL, 20, 6,
                  .help = "one row per force: its point (m) and components (N, z up)"},
     [P_BODY] = {"body", "outline of the body (x, y, z per row)", "m", MM_MATRIX, 0, -1e4, 1e4,
                 "0,0,0;2,0,0;2,1,0;0,1,0", NULL, 50, 3, .help = "for the drawing only: a polygon in space"},
@@ -88,32 +87,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_equil_result er;
     mm_error e2;
     int rc = mm_equil_solve(6, n, A, b, R, mech, self, &er, &e2);
-    if (rc == MM_ESINGULAR) {
-        if (er.n_mech > 0) {
-            /* the free motion: origin velocity v, angular velocity w */
-            double *v = mech, *w = mech + 3, wn = mm_sta_norm(w);
-            if (wn > 1e-9 * mm_sta_norm(v)) {
-                double p[3];
-                mm_sta_cross(w, v, p);
-                return mm_error_set(err, MM_ESINGULAR, "links",
-                                    "improperly supported (%d links, rank %d): the body can turn about the axis "
-                                    "through (%.3g, %.3g, %.3g) along (%.3g, %.3g, %.3g); add or move a link",
-                                    n, er.rank, p[0] / (wn * wn) + 0.0, p[1] / (wn * wn) + 0.0,
-                                    p[2] / (wn * wn) + 0.0, w[0] / wn + 0.0, w[1] / wn + 0.0, w[2] / wn + 0.0);
-            }
-            double vn = mm_sta_norm(v);
-            return mm_error_set(err, MM_ESINGULAR, "links",
-                                "improperly supported (%d links, rank %d): the body can slide along (%.3g, %.3g, "
-                                "%.3g); add or move a link", n, er.rank, v[0] / vn + 0.0, v[1] / vn + 0.0,
-                                v[2] / vn + 0.0);
-        }
-        int red = 0;
-        for (int k = 1; k < n; k++)
-            if (fabs(self[k]) > fabs(self[red]))
-                red = k;
-        return mm_error_set(err, MM_ESINGULAR, "links",
-                            "statically indeterminate: %d links for 6 equations; link %d is redundant", n, red + 1);
-    }
+    if (rc == MM_ESINGULAR)
+        return mm_sta_improper3(&er, n, mech, self, err);     /* the motion the links allow, or a redundant one */
     if (rc != MM_OK) {
         *err = e2;
         return rc;
@@ -152,26 +127,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_sta_check_absf(res, Rv[wk], R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond,
                       "link %d by virtual work (the motion that stretches it alone) vs the linear solve [N]", wk + 1);
     mm_res_method(res, "six equilibrium equations, LU with the rank test", 0);
-
     /* the drawing */
     mm_sta_fbd(res);
-    double sc = mm_sta_scale(fmax(Rmax, Fs), size, 0.3), xy[2 * 50];
-    for (int i = 0; i < in[P_BODY].rows; i++)
-        mm_sta_project(in[P_BODY].data[3 * i], in[P_BODY].data[3 * i + 1], in[P_BODY].data[3 * i + 2], &xy[2 * i],
-                       &xy[2 * i + 1]);
-    mm_sta_polygon(res, "body", in[P_BODY].rows, xy, NULL);
-    for (int k = 0; k < n; k++) {
-        const double *l = Lk->data + 6 * k;
-        double len = mm_sta_norm(l + 3), e[3] = {l[3] / len, l[4] / len, l[5] / len}, t[4], f[3];
-        mm_sta_project(l[0], l[1], l[2], &t[0], &t[1]);
-        mm_sta_project(l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], l[2] - 0.15 * size * e[2], &t[2], &t[3]);
-        mm_sta_path(res, "link", 2, t, "ground");
-        for (int c = 0; c < 3; c++)
-            f[c] = R[k] * e[c];
-        if (R[k] != 0)
-            mm_sta_arrow3(res, "reaction", l, f, sc, 1, "N", NULL);
-        mm_sta_label(res, t[2], t[3], "R%d", k + 1);
-    }
+    double sc = mm_sta_scale(fmax(Rmax, Fs), size, 0.3);
+    mm_sta_polygon3(res, "body", in[P_BODY].rows, in[P_BODY].data, NULL);
+    mm_sta_links3(res, n, Lk->data, R, size, sc);
     for (int i = 0; i < Ld->rows; i++)
         mm_sta_arrow3(res, "load", Ld->data + 6 * i, Ld->data + 6 * i + 3, sc, 1, "N", NULL);
     return rc;
