@@ -218,6 +218,27 @@ int mm_sta_cables3(mm_result *res, int n, const double *ring, const double *anch
     return mm_sta_arrow3(res, "load", ring, P, fs, 0, "N", NULL);
 }
 
+int mm_sta_belt(mm_result *res, double T1, double T2, double theta, double r, double torque)
+{
+    double shown = fmin(theta, 2 * M_PI - 0.2), a0 = M_PI / 2 + shown / 2, a1 = a0 - shown;
+    enum { N = 73 };
+    double arc[2 * N];
+    for (int k = 0; k < N; k++) {
+        double t = a0 - shown * k / (N - 1);
+        arc[2 * k] = 1.04 * r * cos(t), arc[2 * k + 1] = 1.04 * r * sin(t);
+    }
+    double sc = mm_sta_scale(T2, r, 1.6);
+    /* the belt leaves at a0 (slack) and a1 (tight), along the tangents */
+    double t1x = -sin(a0), t1y = cos(a0), t2x = sin(a1), t2y = -cos(a1);
+    mm_sta_circle(res, "drum", 0, 0, r, NULL);
+    mm_sta_path(res, "belt", N, arc, "tension");
+    mm_sta_force(res, "T1", r * cos(a0), r * sin(a0), T1 * t1x, T1 * t1y, sc, 0);
+    mm_sta_force(res, "T2", r * cos(a1), r * sin(a1), T2 * t2x, T2 * t2y, sc, 0);
+    mm_sta_couple(res, "torque on the drum", 0, 0, 0.4 * r, torque);
+    mm_sta_label(res, 1.1 * r * cos(a0), 1.1 * r * sin(a0), "T1 = %.4g N", T1);
+    return mm_sta_label(res, 1.1 * r * cos(a1), 1.1 * r * sin(a1), "T2 = %.4g N", T2);
+}
+
 int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
 {
     const double *u = mech;

@@ -141,6 +141,12 @@ int mm_sta_frame_apart(mm_result *res, const double *A, const double *B, const d
 int mm_sta_cables3(mm_result *res, int n, const double *ring, const double *anchors, const double *T,
                    const double (*u)[3], const double *P, double Fmax, double tol);
 
+/* A belt on a drum of radius r wrapped over theta (at most one turn shown,
+ * symmetric about the top): the belt, the slack-side tension T1 and the
+ * tight-side T2 along the tangents where it leaves, and the torque on the
+ * drum as a couple. */
+int mm_sta_belt(mm_result *res, double T1, double T2, double theta, double r, double torque);
+
 /* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
 
 /* Why mm_equil_solve found the links of a body singular (MM_ESINGULAR with
