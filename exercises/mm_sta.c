@@ -239,6 +239,45 @@ int mm_sta_belt(mm_result *res, double T1, double T2, double theta, double r, do
     return mm_sta_label(res, 1.1 * r * cos(a1), 1.1 * r * sin(a1), "T2 = %.4g N", T2);
 }
 
+int mm_sta_equilibria(mm_result *res, int n, const double *x, const double *y, const int *kind, int nk,
+                      const int *outs)
+{
+    for (int k = 0; k < nk; k++) {
+        int m = 0;
+        for (int i = 0; i < n; i++)
+            m += kind[i] == k;
+        if (!m)
+            continue;
+        mm_series *d = mm_res_series(res, outs[k], m);
+        if (!d)
+            return MM_ENOMEM;
+        for (int i = 0, j = 0; i < n; i++)
+            if (kind[i] == k)
+                d->x[j] = x[i], d->y[j] = y[i], j++;
+    }
+    return MM_OK;
+}
+
+int mm_sta_slider_crank(mm_result *res, double r, double l, double e, double th, double xb, double Frod,
+                        double ftol, double P, double M, double dx)
+{
+    double xa = r * cos(th), ya = r * sin(th), yb = e, L = r + l;
+    double sc = mm_sta_scale(fabs(P), L, 0.25), bw = 0.1 * L;
+    double box[8] = {xb - bw, yb - bw / 2, xb + bw, yb - bw / 2, xb + bw, yb + bw / 2, xb - bw, yb + bw / 2};
+    double guide[4] = {-0.2 * L, yb - bw / 2, 1.3 * L, yb - bw / 2};
+    mm_sta_path(res, "guide", 2, guide, "ground");
+    mm_sta_pin(res, "pivot O", 0, 0, 0.06 * L, 0);
+    mm_sta_line(res, "crank", 0, 0, xa, ya, NULL, 0, 0);
+    mm_sta_member(res, "rod", xa, ya, xb, yb, Frod, ftol);
+    mm_sta_polygon(res, "slider", 4, box, NULL);
+    if (P != 0)
+        mm_sta_force(res, "P", xb + bw, yb, -P, 0, sc, 1);
+    if (M != 0)
+        mm_sta_couple(res, "M", 0, 0, 0.25 * r, M);
+    return mm_sta_line(res, "virtual displacement dx_B", xb, yb + bw, xb + 0.3 * L * (dx >= 0 ? 1 : -1), yb + bw,
+                       "highlight", 1, dx);
+}
+
 int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
 {
     const double *u = mech;

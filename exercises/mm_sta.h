@@ -147,6 +147,21 @@ int mm_sta_cables3(mm_result *res, int n, const double *ring, const double *anch
  * drum as a couple. */
 int mm_sta_belt(mm_result *res, double T1, double T2, double theta, double r, double torque);
 
+/* Equilibria marked on a plot of the potential: the n points (x[i], y[i])
+ * of kind k (kind[i] = k, 0 <= k < nk) as the series outs[k], made in the
+ * order of k and only for a kind that has points.  Returns MM_OK or
+ * MM_ENOMEM. */
+int mm_sta_equilibria(mm_result *res, int n, const double *x, const double *y, const int *kind, int nk,
+                      const int *outs);
+
+/* A slider-crank held by a torque: pivot O at the origin, the crank r at
+ * angle th to the pin A, the rod l (axial force Frod, zero within ftol) to
+ * the slider B = (xb, e) on its guide y = e, the load P on the slider
+ * along -x, the torque M on the crank and the virtual displacement
+ * dx_B/dtheta = dx drawn beside the slider. */
+int mm_sta_slider_crank(mm_result *res, double r, double l, double e, double th, double xb, double Frod,
+                        double ftol, double P, double M, double dx);
+
 /* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
 
 /* Why mm_equil_solve found the links of a body singular (MM_ESINGULAR with

@@ -45,14 +45,11 @@ static const mm_output outputs[] = {
     [O_V] = MM_SERIES("V", "potential energy with M held: -M theta + P x_B", "J", "theta", "rad", .figure = "V"),
     [O_STABLE] = MM_SERIES("stable", "stable equilibria", "J", "theta", "rad", .figure = "V", .mark = "dots"),
     [O_UNSTABLE] = MM_SERIES("unstable", "unstable equilibria", "J", "theta", "rad", .figure = "V", .mark = "dots"),
-    [O_MREQ] = MM_SERIES("M_hold", "torque that holds the crank at each angle", "N m", "theta", "rad",
-                         .figure = "M"),
+    [O_MREQ] = MM_SERIES("M_hold", "torque that holds the crank at each angle", "N m", "theta", "rad", .figure = "M"),
     [O_ANIM] = MM_ANIMATION("the mechanism with the load, the holding torque and the virtual displacement"),
 };
 
-typedef struct mech {
-    double r, l, e, P, M;
-} mech;
+typedef struct mech { double r, l, e, P, M; } mech;
 
 static double xB(const mech *m, double t, double *dx, double *d2x)
 {
@@ -89,7 +86,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_M, m.M);
     mm_res_scalar(res, O_DX, dx);
     mm_res_scalar(res, O_XB, x);
-
     /* eq. (4): crank, rod, slider; unknowns Ox Oy Ax Ay Bx By N M (A: rod on
      * crank, B: slider on rod) */
     double xa = m.r * cos(th), ya = m.r * sin(th), xb = x, yb = m.e;
@@ -125,7 +121,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_check_abs(res, "dx_B/dtheta vs a central difference of x_B [m] (truncation and rounding)",
                      (xp - xm) / (2 * h), dx, h * h * (2 * x3 + m.r) / 6 + 4 * DBL_EPSILON * (m.r + m.l) / h);
     mm_res_method(res, "virtual work (closed form); force balance as a linear system", 0);
-
     /* the potential with M held, its equilibria over a turn (eq. 5) */
     int np = (int)in[P_POINTS].x;
     mm_series *sv = mm_res_series(res, O_V, np), *sm = mm_res_series(res, O_MREQ, np);
@@ -157,45 +152,20 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         for (int i = 0; i < rr.nroots; i++)
             if (fabs(remainder(roots[i].x - th, 2 * M_PI)) > 1e-9)
                 eq[ne++] = roots[i].x;
-        int ns = 0, nu = 0, kind[NSUB + 2];
+        static const int outs[2] = {O_STABLE, O_UNSTABLE};
+        int kind[NSUB + 2];
+        double v[NSUB + 2];
         for (int i = 0; i < ne; i++) {
             double q;
-            xB(&m, eq[i], NULL, &q);
-            kind[i] = m.P * q > 0;                /* V'' = P x_B'' */
-            if (kind[i])
-                ns++;
-            else
-                nu++;
+            v[i] = -m.M * eq[i] + m.P * xB(&m, eq[i], NULL, &q);
+            kind[i] = m.P * q > 0 ? 0 : 1;        /* V'' = P x_B'': 0 stable, 1 unstable */
         }
-        mm_series *s1 = ns ? mm_res_series(res, O_STABLE, ns) : NULL, *s2 = nu ? mm_res_series(res, O_UNSTABLE, nu) : NULL;
-        if ((ns && !s1) || (nu && !s2))
-            return MM_ENOMEM;
-        for (int i = 0, a = 0, c = 0; i < ne; i++) {
-            double v = -m.M * eq[i] + m.P * xB(&m, eq[i], NULL, NULL);
-            if (kind[i])
-                s1->x[a] = eq[i], s1->y[a] = v, a++;
-            else
-                s2->x[c] = eq[i], s2->y[c] = v, c++;
-        }
+        mm_sta_equilibria(res, ne, eq, v, kind, 2, outs);
     }
-
     /* the drawing */
     mm_sta_fbd(res);
-    double L = m.r + m.l, sc = mm_sta_scale(fabs(m.P), L, 0.25), bw = 0.1 * L;
-    double box[8] = {xb - bw, yb - bw / 2, xb + bw, yb - bw / 2, xb + bw, yb + bw / 2, xb - bw, yb + bw / 2};
-    double guide[4] = {-0.2 * L, yb - bw / 2, 1.3 * L, yb - bw / 2};
-    mm_sta_path(res, "guide", 2, guide, "ground");
-    mm_sta_pin(res, "pivot O", 0, 0, 0.06 * L, 0);
-    mm_sta_line(res, "crank", 0, 0, xa, ya, NULL, 0, 0);
-    mm_sta_member(res, "rod", xa, ya, xb, yb, Frod, ferr);
-    mm_sta_polygon(res, "slider", 4, box, NULL);
-    if (m.P != 0)
-        mm_sta_force(res, "P", xb + bw, yb, -m.P, 0, sc, 1);
-    if (m.M != 0)
-        mm_sta_couple(res, "M", 0, 0, 0.25 * m.r, m.M);
-    mm_sta_line(res, "virtual displacement dx_B", xb, yb + bw, xb + 0.3 * L * (dx >= 0 ? 1 : -1), yb + bw,
-                         "highlight", 1, dx);
-    mm_sta_label(res, -0.2 * L, 0.5 * L, "M = P dx_B/dtheta = %.4g N m", m.M);
+    mm_sta_slider_crank(res, m.r, m.l, m.e, th, xb, Frod, ferr, m.P, m.M, dx);
+    mm_sta_label(res, -0.2 * (m.r + m.l), 0.5 * (m.r + m.l), "M = P dx_B/dtheta = %.4g N m", m.M);
     return rc;
 }
 
