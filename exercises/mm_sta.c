@@ -278,6 +278,31 @@ int mm_sta_slider_crank(mm_result *res, double r, double l, double e, double th,
                        "highlight", 1, dx);
 }
 
+int mm_sta_reduced3(mm_result *res, int n, const double *forces, const double *O, const double *R, const double *M,
+                    const double *P, double pitch, int kind, double reach, const char *what)
+{
+    double fmx = 0, Rn = mm_sta_norm(R);
+    for (int i = 0; i < n; i++)
+        fmx = fmax(fmx, mm_sta_norm(forces + 6 * i + 3));
+    double L = fmax(reach, 1e-3), fs = mm_sta_scale(fmax(fmx, Rn), L, 0.5);
+    for (int i = 0; i < n; i++)
+        mm_sta_arrow3(res, "force", forces + 6 * i, forces + 6 * i + 3, fs, 0, "N", NULL);
+    if (kind >= 2) {
+        mm_sta_arrow3(res, "R on the central axis", P, R, fs, 0, "N", "highlight");
+        double a[3], b[3];
+        for (int k = 0; k < 3; k++)
+            a[k] = P[k] - L * R[k] / Rn, b[k] = P[k] + L * R[k] / Rn;
+        mm_sta_line3(res, "central axis", a, b, "ground");
+        if (kind == 3) {
+            double mw[3] = {pitch * R[0], pitch * R[1], pitch * R[2]};
+            mm_sta_arrow3(res, "couple of the wrench", P, mw, 0.5 * L / fabs(pitch * Rn), 0, "N m", "highlight");
+        }
+    } else if (kind == 1) {
+        mm_sta_arrow3(res, "couple", O, M, 0.5 * L / mm_sta_norm(M), 0, "N m", "highlight");
+    }
+    return mm_sta_label3(res, O, "O: %s", what);
+}
+
 int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
 {
     const double *u = mech;

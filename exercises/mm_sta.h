@@ -162,6 +162,15 @@ int mm_sta_equilibria(mm_result *res, int n, const double *x, const double *y, c
 int mm_sta_slider_crank(mm_result *res, double r, double l, double e, double th, double xb, double Frod,
                         double ftol, double P, double M, double dx);
 
+/* A force system in space and its simplest equivalent: the n forces (rows
+ * x, y, z, Fx, Fy, Fz) as arrows from their points; for kind 2 or 3 (a
+ * single force, a wrench) the resultant R at P on its central axis, and
+ * for 3 the wrench's couple pitch R along it; for kind 1 (a couple) the
+ * couple M at O; the label "O: what".  reach (the largest distance of a
+ * force from O, at least 1e-3 m) sets the size. */
+int mm_sta_reduced3(mm_result *res, int n, const double *forces, const double *O, const double *R, const double *M,
+                    const double *P, double pitch, int kind, double reach, const char *what);
+
 /* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
 
 /* Why mm_equil_solve found the links of a body singular (MM_ESINGULAR with
