@@ -303,6 +303,31 @@ int mm_sta_reduced3(mm_result *res, int n, const double *forces, const double *O
     return mm_sta_label3(res, O, "O: %s", what);
 }
 
+int mm_sta_area(mm_result *res, int n, const double *xy, int nd, const double *discs, const mm_section_props *p)
+{
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int k = 0; k < n; k++)
+        for (int d = 0; d < 2; d++)
+            lo[d] = fmin(lo[d], xy[2 * k + d]), hi[d] = fmax(hi[d], xy[2 * k + d]);
+    double size = fmax(hi[0] - lo[0], hi[1] - lo[1]), half = 0.6 * size;
+    mm_sta_polygon(res, "area", n, xy, NULL);
+    for (int k = 0; k < nd; k++) {
+        const double *d = discs + 3 * k;
+        mm_sta_circle(res, d[2] > 0 ? "disc" : "hole", d[0], d[1], fabs(d[2]), d[2] > 0 ? NULL : "ground");
+    }
+    double c = cos(p->alpha), s = sin(p->alpha);
+    mm_sta_line(res, "axis 1 (I1)", p->xc - half * c, p->yc - half * s, p->xc + half * c, p->yc + half * s,
+                "highlight", 0, 0);
+    mm_sta_line(res, "axis 2 (I2)", p->xc + half * s, p->yc - half * c, p->xc - half * s, p->yc + half * c,
+                "highlight", 0, 0);
+    mm_sta_circle(res, "centroid", p->xc, p->yc, 0.015 * size, "highlight");
+    mm_sta_arrow(res, "weight of a uniform plate (per N/m^2)", p->xc, p->yc, p->xc, p->yc - 0.3 * size, "m^2",
+                 0.3 * size / p->A, p->A);
+    mm_sta_label(res, p->xc + 0.03 * size, p->yc + 0.03 * size, "C (%.4g, %.4g)", p->xc, p->yc);
+    mm_sta_label(res, p->xc + half * c, p->yc + half * s, "1");
+    return mm_sta_label(res, p->xc - half * s, p->yc + half * c, "2");
+}
+
 int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
 {
     const double *u = mech;

@@ -22,6 +22,7 @@
 
 #include "mm_equil.h"
 #include "mm_exercise.h"
+#include "mm_section.h"
 
 /* Start a one-frame animation (the free-body diagram); t = 0. */
 int mm_sta_fbd(mm_result *res);
@@ -170,6 +171,12 @@ int mm_sta_slider_crank(mm_result *res, double r, double l, double e, double th,
  * force from O, at least 1e-3 m) sets the size. */
 int mm_sta_reduced3(mm_result *res, int n, const double *forces, const double *O, const double *R, const double *M,
                     const double *P, double pitch, int kind, double reach, const char *what);
+
+/* An area: the polygon of n vertices xy, the nd discs (rows x, y, r; r < 0
+ * a hole), the principal axes 1 and 2 of p through its centroid C, C
+ * itself, and the weight of a uniform plate of this shape acting at C
+ * (per unit areal weight: the arrow's value is the area). */
+int mm_sta_area(mm_result *res, int n, const double *xy, int nd, const double *discs, const mm_section_props *p);
 
 /* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
 
