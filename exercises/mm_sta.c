@@ -328,6 +328,50 @@ int mm_sta_area(mm_result *res, int n, const double *xy, int nd, const double *d
     return mm_sta_label(res, p->xc - half * s, p->yc + half * c, "2");
 }
 
+int mm_sta_block_incline(mm_result *res, double a, double w, double h, double hP, double W, double P, double N,
+                         double F, double xn, const char *what)
+{
+    double sa = sin(a), ca = cos(a);
+    double L = 3 * fmax(w, h), ramp[6] = {-0.5 * L * ca, -0.5 * L * sa, 1.5 * L * ca, 1.5 * L * sa, 1.5 * L * ca,
+                                         -0.5 * L * sa};
+    mm_sta_polygon(res, "incline", 3, ramp, "ground");
+    double c[8], loc[8] = {0, 0, w, 0, w, h, 0, h};
+    for (int k = 0; k < 4; k++)
+        c[2 * k] = loc[2 * k] * ca - loc[2 * k + 1] * sa, c[2 * k + 1] = loc[2 * k] * sa + loc[2 * k + 1] * ca;
+    mm_sta_polygon(res, "block", 4, c, NULL);
+    double sc = mm_sta_scale(fmax(fmax(W, P), N), fmax(w, h), 0.6);
+    /* (u, v) in the slope frame, turned by a */
+#define AT(u, v) (u) * ca - (v) * sa, (u) * sa + (v) * ca
+    mm_sta_force(res, "W", AT(w / 2, h / 2), 0, -W, sc, 0);
+    mm_sta_force(res, "P", AT(0, hP), P * ca, P * sa, sc, 1);
+    mm_sta_force(res, "N", AT(xn, 0), -N * sa, N * ca, sc, 1);
+    if (F != 0)
+        mm_sta_force(res, "friction", AT(xn, 0), -F * ca, -F * sa, sc, 1);
+    int rc = mm_sta_label(res, AT(0, h * 1.3), "%s at P = %.4g N", what, P);
+#undef AT
+    return rc;
+}
+
+int mm_sta_wedge(mm_result *res, double be, double W, double Pin, double Pout, const double *N)
+{
+    double Lw = 2, H = Lw * tan(be), xl = 1.2, bw = 0.6;         /* the load sits at x in [xl - bw, xl] */
+    double yl = (Lw - xl) * tan(be);                              /* incline height under the load's right edge */
+    double wedge_xy[6] = {0, 0, Lw, 0, 0, H}, load[8] = {xl - bw, yl + bw * tan(be), xl, yl, xl, yl + 0.8,
+                                                         xl - bw, yl + 0.8};
+    double floor[4] = {-0.5, 0, Lw + 0.3, 0}, wall[4] = {xl, yl, xl, yl + 1.2};
+    double sc = mm_sta_scale(fmax(fmax(Pin, W), N[1]), 1.5, 0.4);
+    mm_sta_path(res, "floor", 2, floor, "ground");
+    mm_sta_path(res, "wall", 2, wall, "ground");
+    mm_sta_polygon(res, "wedge", 3, wedge_xy, NULL);
+    mm_sta_polygon(res, "load", 4, load, NULL);
+    mm_sta_force(res, "P", 0, 0.3 * H, Pin, 0, sc, 1);
+    mm_sta_force(res, "W", xl - bw / 2, yl + 0.4, 0, -W, sc, 0);
+    mm_sta_force(res, "N2 on the load", xl - bw / 2, yl + 0.5 * bw * tan(be), N[1] * sin(be), N[1] * cos(be), sc, 1);
+    mm_sta_force(res, "N3 from the wall", xl, yl + 0.4, -N[2], 0, sc, 1);
+    mm_sta_force(res, "N1 from the floor", 0.5 * Lw, 0, 0, N[0], sc, 1);
+    return mm_sta_label(res, 0, H + 0.1, "P_in = %.4g N, P_out = %.4g N", Pin, Pout);
+}
+
 int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
 {
     const double *u = mech;

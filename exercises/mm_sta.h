@@ -178,6 +178,20 @@ int mm_sta_reduced3(mm_result *res, int n, const double *forces, const double *O
  * (per unit areal weight: the arrow's value is the area). */
 int mm_sta_area(mm_result *res, int n, const double *xy, int nd, const double *discs, const mm_section_props *p);
 
+/* A block w long and h high on an incline at angle a, pushed up the slope
+ * by P at height hP on its lower face: the incline, the block, its weight
+ * W, the push, the normal force N at xn along its base and the friction F
+ * there (down the slope when positive; none when 0), all at the limit,
+ * and the label "what at P = ...". */
+int mm_sta_block_incline(mm_result *res, double a, double w, double h, double hP, double W, double P, double N,
+                         double F, double xn, const char *what);
+
+/* A wedge of angle be driven by Pin under a load W that a wall guides:
+ * floor, wall, wedge, load, the push, the weight and the normal forces
+ * N[0] (floor on wedge), N[1] (wedge on load), N[2] (wall on load); the
+ * label gives Pin and Pout. */
+int mm_sta_wedge(mm_result *res, double be, double W, double Pin, double Pout, const double *N);
+
 /* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
 
 /* Why mm_equil_solve found the links of a body singular (MM_ESINGULAR with

@@ -102,29 +102,26 @@ static int block(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar_text(res, O_FIRST, first, firsts[first]);
     mm_res_scalar(res, O_ASLIP, atan(mu));
     mm_res_scalar(res, O_ATIP, atan(w / h));
-
     /* route 2, eq. (5): sliding up, friction mu N down the slope; unknowns
      * P, N and m = N x_N (x_N where N acts on the base) */
     double A[9] = {1, -mu, 0, 0, 1, 0, -hP, 0, 1};
+    /* tipping: N at the upper edge x_N = w, friction F unknown (below its limit) */
+    double B[9] = {1, 0, -1, 0, 1, 0, -hP, w, 0};
     double b[3] = {W * sa, W * ca, W * w * ca / 2 - W * h * sa / 2}, x[3], t[3];
     mm_equil_result er;
     int rc = mm_equil_solve(3, 3, A, b, x, NULL, NULL, &er, err);
-    if (rc != MM_OK)
-        return rc;
-    /* tipping: N at the upper edge x_N = w, friction F unknown (below its limit) */
-    double B[9] = {1, 0, -1, 0, 1, 0, -hP, w, 0};
-    rc = mm_equil_solve(3, 3, B, b, t, NULL, NULL, &er, err);
+    if (rc == MM_OK)
+        rc = mm_equil_solve(3, 3, B, b, t, NULL, NULL, &er, err);
     if (rc != MM_OK)
         return rc;
     mm_res_check_rel(res, "P_up by the equilibrium equations with friction at its limit vs eq. (2)", x[0], Pup,
                      16 * DBL_EPSILON);
     mm_res_check_rel(res, "P_tip by the equilibrium equations with N at the upper edge vs eq. (4)", t[0], Ptip,
                      16 * DBL_EPSILON);
-    /* the slide-or-tip decision twice: N would act beyond the edge <=> P_tip < P_up */
+    /* the slide-or-tip decision twice: tips first <=> at P_up, N would act
+     * beyond the upper edge <=> at P_tip, friction is still below mu N */
     double xN = x[2] / x[1];
     if (first != 3) {
-        /* tips first <=> at P_up, N would act beyond the upper edge <=> at
-         * P_tip, friction is still below its limit mu N */
         mm_res_check_abs(res, "tips first (1/0): N beyond the upper edge at P_up, vs P_tip < P_up", xN > w,
                          first == 2, 0);
         mm_res_check_abs(res, "tips first (1/0): friction below mu N at P_tip, vs P_tip < P_up", t[2] < mu * t[1],
@@ -140,26 +137,10 @@ static int block(const mm_value *in, mm_result *res, mm_error *err)
         s1->y[i] = W * (sin(q) + mu * cos(q));
         s2->y[i] = W * (w * cos(q) + h * sin(q)) / (2 * hP);
     }
-
-    /* the drawing at the first limit, in the slope frame turned by alpha */
-    double P = first == 2 ? Ptip : Pup, N = W * ca, xn = first == 2 ? w : xN, F = P - W * sa;
+    /* the drawing at the first limit: friction F down the slope, N where it acts */
+    double P = first == 2 ? Ptip : Pup;
     mm_sta_fbd(res);
-    double L = 3 * fmax(w, h), ramp[6] = {-0.5 * L * ca, -0.5 * L * sa, 1.5 * L * ca, 1.5 * L * sa, 1.5 * L * ca,
-                                         -0.5 * L * sa};
-    mm_sta_polygon(res, "incline", 3, ramp, "ground");
-    double c[8], loc[8] = {0, 0, w, 0, w, h, 0, h};
-    for (int k = 0; k < 4; k++)
-        c[2 * k] = loc[2 * k] * ca - loc[2 * k + 1] * sa, c[2 * k + 1] = loc[2 * k] * sa + loc[2 * k + 1] * ca;
-    mm_sta_polygon(res, "block", 4, c, NULL);
-    double sc = mm_sta_scale(fmax(fmax(W, P), N), fmax(w, h), 0.6);
-#define AT(u, v) (u) * ca - (v) * sa, (u) * sa + (v) * ca
-    mm_sta_force(res, "W", AT(w / 2, h / 2), 0, -W, sc, 0);
-    mm_sta_force(res, "P", AT(0, hP), P * ca, P * sa, sc, 1);
-    mm_sta_force(res, "N", AT(xn, 0), -N * sa, N * ca, sc, 1);
-    if (F != 0)
-        mm_sta_force(res, "friction", AT(xn, 0), -F * ca, -F * sa, sc, 1);
-    mm_sta_label(res, AT(0, h * 1.3), "%s at P = %.4g N", firsts[first], P);
-#undef AT
+    mm_sta_block_incline(res, a, w, h, hP, W, P, W * ca, P - W * sa, first == 2 ? w : xN, firsts[first]);
     return rc;
 }
 
@@ -197,9 +178,8 @@ static int wedge(const mm_value *in, mm_result *res, mm_error *err)
     if (rc != MM_OK)
         return rc;
     double e = 4 * DBL_EPSILON * W / er.rcond;
-    mm_res_scalar_err(res, O_N1, x[0], e, MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_N2, x[1], e, MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_N3, x[2], e, MM_ERR_ESTIMATE);
+    for (int k = 0; k < 3; k++)
+        mm_res_scalar_err(res, O_N1 + k, x[k], e, MM_ERR_ESTIMATE);
     mm_res_check_rel(res, "P_in by the two bodies' equilibrium with friction at the limit vs W tan(beta + 2 phi)",
                      x[3], Pin, 64 * DBL_EPSILON / er.rcond);
     mm_res_check_abs(res, "P_out the same way vs W tan(beta - 2 phi) [N]", y[3], Pout,
@@ -214,26 +194,9 @@ static int wedge(const mm_value *in, mm_result *res, mm_error *err)
         s1->x[i] = s2->x[i] = q;
         s1->y[i] = W * tan(q + 2 * phi), s2->y[i] = W * tan(q - 2 * phi);
     }
-
     /* the drawing: floor, wall, wedge (thick end left), load box */
     mm_sta_fbd(res);
-    double Lw = 2, H = Lw * tan(be), xl = 1.2, bw = 0.6;         /* the load sits at x in [xl - bw, xl] */
-    double yl = (Lw - xl) * tan(be);                              /* incline height under the load's right edge */
-    double wedge_xy[6] = {0, 0, Lw, 0, 0, H}, load[8] = {xl - bw, yl + bw * tan(be), xl, yl, xl, yl + 0.8,
-                                                         xl - bw, yl + 0.8};
-    double floor[4] = {-0.5, 0, Lw + 0.3, 0}, wall[4] = {xl, yl, xl, yl + 1.2};
-    double sc = mm_sta_scale(fmax(fmax(Pin, W), x[1]), 1.5, 0.4);
-    mm_sta_path(res, "floor", 2, floor, "ground");
-    mm_sta_path(res, "wall", 2, wall, "ground");
-    mm_sta_polygon(res, "wedge", 3, wedge_xy, NULL);
-    mm_sta_polygon(res, "load", 4, load, NULL);
-    mm_sta_force(res, "P", 0, 0.3 * H, Pin, 0, sc, 1);
-    mm_sta_force(res, "W", xl - bw / 2, yl + 0.4, 0, -W, sc, 0);
-    mm_sta_force(res, "N2 on the load", xl - bw / 2, yl + 0.5 * bw * tan(be), x[1] * sin(be),
-                          x[1] * cos(be), sc, 1);
-    mm_sta_force(res, "N3 from the wall", xl, yl + 0.4, -x[2], 0, sc, 1);
-    mm_sta_force(res, "N1 from the floor", 0.5 * Lw, 0, 0, x[0], sc, 1);
-    mm_sta_label(res, 0, H + 0.1, "P_in = %.4g N, P_out = %.4g N", Pin, Pout);
+    mm_sta_wedge(res, be, W, Pin, Pout, x);
     return rc;
 }
 
