@@ -372,6 +372,28 @@ int mm_sta_wedge(mm_result *res, double be, double W, double Pin, double Pout, c
     return mm_sta_label(res, 0, H + 0.1, "P_in = %.4g N, P_out = %.4g N", Pin, Pout);
 }
 
+int mm_sta_rod_spring(mm_result *res, double L, double a, double k, double W, double q, const char *what)
+{
+    double xw = -0.6 * L, tip[2] = {L * sin(q), L * cos(q)}, sp[2] = {a * sin(q), a * cos(q)};
+    mm_sta_pin(res, "hinge", 0, 0, 0.1 * L, 0);
+    mm_sta_line(res, "rod", 0, 0, tip[0], tip[1], NULL, 0, 0);
+    double guide[4] = {xw, 0, xw, 1.2 * L};
+    mm_sta_path(res, "guide", 2, guide, "ground");
+    mm_shape *spring = mm_anim_shape(res, "spring", MM_SHAPE_LINE, 1, 16);
+    if (!spring)
+        return MM_ENOMEM;
+    for (int j = 0; j < 16; j++) {
+        double f = j / 15.0, zig = j > 1 && j < 14 ? (j % 2 ? 0.04 : -0.04) * L : 0;
+        spring->x[j] = xw + f * (sp[0] - xw), spring->y[j] = sp[1] + zig;
+    }
+    double sc = mm_sta_scale(fmax(W, k * a * fabs(sin(q))), L, 0.4);
+    mm_sta_force(res, "W", tip[0], tip[1], 0, -W, sc, 0);
+    if (q != 0)
+        mm_sta_force(res, "spring force", sp[0], sp[1], -k * sp[0], 0, sc, 0);
+    mm_sta_force(res, "hinge reaction", 0, 0, k * sp[0], W, sc, 1);
+    return mm_sta_label(res, tip[0], tip[1] + 0.05 * L, "theta = %.4g rad (%s)", q, what);
+}
+
 int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
 {
     const double *u = mech;

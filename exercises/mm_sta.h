@@ -192,6 +192,12 @@ int mm_sta_block_incline(mm_result *res, double a, double w, double h, double hP
  * label gives Pin and Pout. */
 int mm_sta_wedge(mm_result *res, double be, double W, double Pin, double Pout, const double *N);
 
+/* A rod L long hinged at its foot, tilted by q from upright, a weight W at
+ * its top and a horizontal spring k at height a whose far end slides in a
+ * vertical guide: hinge, rod, guide, spring, the weight, the spring force
+ * (when tilted) and the hinge reaction; the label "theta = q (what)". */
+int mm_sta_rod_spring(mm_result *res, double L, double a, double k, double W, double q, const char *what);
+
 /* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
 
 /* Why mm_equil_solve found the links of a body singular (MM_ESINGULAR with
