@@ -394,6 +394,53 @@ int mm_sta_rod_spring(mm_result *res, double L, double a, double k, double W, do
     return mm_sta_label(res, tip[0], tip[1] + 0.05 * L, "theta = %.4g rad (%s)", q, what);
 }
 
+int mm_sta_beam(mm_result *res, const mm_beam_problem *p, const mm_beam *b, double Mext, double xM)
+{
+    double L = p->L, h = 0.03 * L, beam[8] = {0, -h / 2, L, -h / 2, L, h / 2, 0, h / 2};
+    double rx[2], ry[2], rcpl[2], Fbig = 0, qmax = 0;
+    int nr = mm_beam_reactions(b, rx, ry, rcpl);
+    for (int k = 0; k < nr; k++)
+        Fbig = fmax(Fbig, fabs(ry[k]));
+    for (int i = 0; i < p->n_point; i++)
+        Fbig = fmax(Fbig, fabs(p->point[2 * i + 1]));
+    for (int i = 0; i < p->n_dist; i++)
+        qmax = fmax(qmax, fmax(fabs(p->dist[4 * i + 2]), fabs(p->dist[4 * i + 3])));
+    double sc = mm_sta_scale(Fbig, L, 0.25), qs = qmax > 0 ? 0.12 * L / qmax : 0;
+    mm_sta_polygon(res, "beam", 4, beam, NULL);
+    if (p->kind == MM_BEAM_CANTILEVER) {
+        mm_sta_clamp(res, "clamp", 0, 0, 3 * h);
+        if (rcpl[0] != 0)
+            mm_sta_couple(res, "clamp couple", 0, 0, 2.5 * h, rcpl[0]);
+    } else {
+        mm_sta_pin(res, "pin", p->a, -h / 2, 2 * h, 0);
+        mm_sta_roller(res, "roller", p->b, -h / 2, 2 * h, 0);
+    }
+    for (int k = 0; k < nr; k++)
+        if (ry[k] != 0)
+            mm_sta_force(res, "reaction", rx[k], ry[k] > 0 ? -h / 2 : h / 2, 0, ry[k], sc, 1);
+    for (int i = 0; i < p->n_point; i++) {
+        double x = p->point[2 * i], F = p->point[2 * i + 1];
+        if (F != 0)
+            mm_sta_force(res, "load", x, F < 0 ? h / 2 : -h / 2, 0, F, sc, 1);
+    }
+    for (int i = 0; i < p->n_dist; i++) {
+        const double *d = p->dist + 4 * i;
+        /* the load's shape above (down loads) or below (up loads) the beam */
+        double y1 = h / 2 - qs * d[2], y2 = h / 2 - qs * d[3];
+        double outline[8] = {d[0], h / 2, d[1], h / 2, d[1], y2, d[0], y1};
+        mm_sta_polygon(res, "distributed load", 4, outline, "highlight");
+        for (int k = 0; k <= 4; k++) {
+            double x = d[0] + (d[1] - d[0]) * k / 4, q = d[2] + (d[3] - d[2]) * k / 4;
+            if (q != 0)
+                mm_sta_force(res, "q", x, q < 0 ? h / 2 : -h / 2, 0, q * qs / sc, sc, 1);
+        }
+    }
+    for (int i = 0; i < p->n_moment; i++)
+        mm_sta_couple(res, "couple", p->moment[2 * i], 0, 2 * h, p->moment[2 * i + 1]);
+    mm_sta_label(res, xM, -0.2 * L, "M = %.4g N m at x = %.4g m", Mext, xM);
+    return mm_sta_label(res, 0, 0.3 * L, "V: sum of forces left of x, up +;  M: sagging +");
+}
+
 int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
 {
     const double *u = mech;

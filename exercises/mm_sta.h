@@ -20,6 +20,7 @@
 #ifndef MM_STA_H
 #define MM_STA_H
 
+#include "mm_beam.h"
 #include "mm_equil.h"
 #include "mm_exercise.h"
 #include "mm_section.h"
@@ -197,6 +198,12 @@ int mm_sta_wedge(mm_result *res, double be, double W, double Pin, double Pout, c
  * vertical guide: hinge, rod, guide, spring, the weight, the spring force
  * (when tilted) and the hinge reaction; the label "theta = q (what)". */
 int mm_sta_rod_spring(mm_result *res, double L, double a, double k, double W, double q, const char *what);
+
+/* A beam with its supports (pin and roller, or a clamp), the reactions
+ * of b, the point loads, the distributed loads (their outline and arrows),
+ * the couples, and the labels: the extreme moment Mext at xM and the sign
+ * conventions. */
+int mm_sta_beam(mm_result *res, const mm_beam_problem *p, const mm_beam *b, double Mext, double xM);
 
 /* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
 
