@@ -441,6 +441,48 @@ int mm_sta_beam(mm_result *res, const mm_beam_problem *p, const mm_beam *b, doub
     return mm_sta_label(res, 0, 0.3 * L, "V: sum of forces left of x, up +;  M: sagging +");
 }
 
+int mm_sta_truss(mm_result *res, const mm_truss *t, const double *F, const double *R, double pmax, double ftol)
+{
+    int nj = t->n_nodes;
+    double lo = INFINITY, hi = -INFINITY, rmax = 0;
+    for (int k = 0; k < 2 * nj; k++)
+        lo = fmin(lo, t->xy[k]), hi = fmax(hi, t->xy[k]);
+    for (int k = 0; k < 2 * nj; k++)
+        rmax = fmax(rmax, fabs(R[k]));
+    double fscale = mm_sta_scale(fmax(pmax, rmax), fmax(hi - lo, 1e-6), 0.2);
+    double lo2[2] = {INFINITY, INFINITY}, hi2[2] = {-INFINITY, -INFINITY};
+    for (int j = 0; j < nj; j++)
+        for (int d = 0; d < 2; d++)
+            lo2[d] = fmin(lo2[d], t->xy[2 * j + d]), hi2[d] = fmax(hi2[d], t->xy[2 * j + d]);
+    double size = fmax(fmax(hi2[0] - lo2[0], hi2[1] - lo2[1]), 1e-6), sup = 0.06 * size;
+    for (int e = 0; e < t->n_members; e++) {
+        const double *a = t->xy + 2 * t->ends[2 * e], *b = t->xy + 2 * t->ends[2 * e + 1];
+        char name[24];
+        snprintf(name, sizeof name, "member %d", e + 1);
+        mm_sta_member(res, name, a[0], a[1], b[0], b[1], F[e], ftol);
+    }
+    for (int s = 0; s < t->n_supports; s++) {
+        const int *r = t->supports + 3 * s;
+        const double *p = t->xy + 2 * r[0];
+        if (r[1] && r[2])
+            mm_sta_pin(res, "pin", p[0], p[1], sup, 0);
+        else
+            mm_sta_roller(res, "roller", p[0], p[1], sup, r[2] ? 0 : -M_PI / 2);
+        for (int d = 0; d < 2; d++)
+            if (r[1 + d] && fabs(R[2 * r[0] + d]) > ftol)
+                mm_sta_force(res, "reaction", p[0], p[1], d == 0 ? R[2 * r[0]] : 0, d == 1 ? R[2 * r[0] + 1] : 0,
+                             fscale, 1);
+    }
+    for (int l = 0; l < t->n_loads; l++) {
+        const double *p = t->xy + 2 * t->load_node[l];
+        mm_sta_force(res, "load", p[0], p[1], t->load_f[2 * l], t->load_f[2 * l + 1], fscale, 1);
+    }
+    int rc = MM_OK;
+    for (int j = 0; j < nj; j++)
+        rc = mm_sta_label(res, t->xy[2 * j] + 0.02 * size, t->xy[2 * j + 1] + 0.02 * size, "%d", j + 1);
+    return rc;
+}
+
 int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
 {
     const double *u = mech;

@@ -24,6 +24,7 @@
 #include "mm_equil.h"
 #include "mm_exercise.h"
 #include "mm_section.h"
+#include "mm_truss.h"
 
 /* Start a one-frame animation (the free-body diagram); t = 0. */
 int mm_sta_fbd(mm_result *res);
@@ -204,6 +205,13 @@ int mm_sta_rod_spring(mm_result *res, double L, double a, double k, double W, do
  * the couples, and the labels: the extreme moment Mext at xM and the sign
  * conventions. */
 int mm_sta_beam(mm_result *res, const mm_beam_problem *p, const mm_beam *b, double Mext, double xM);
+
+/* A plane truss: each member coloured by its force F[e] (tension,
+ * compression, or none within ftol), pins and rollers at the supports with
+ * the reactions R[2 n_nodes] larger than ftol, the loads, and the joints'
+ * numbers; forces drawn so that the largest of pmax (largest load) and
+ * the reactions is 0.2 of the truss's extent. */
+int mm_sta_truss(mm_result *res, const mm_truss *t, const double *F, const double *R, double pmax, double ftol);
 
 /* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
 

@@ -130,93 +130,6 @@ static int check(const mm_value *in, mm_error *err)
     return load_model(in, &m, err);
 }
 
-/* ---- the checks -------------------------------------------------------------------- */
-
-/* Every joint's sum of forces, recomputed from the geometry (eq. 1): the
- * largest |sum F| and the largest sum of |terms| at a joint. */
-static void joint_residual(const mm_truss *t, const double *F, const double *R, double *worst, double *scale,
-                           double *total)
-{
-    double sx[MM_TRUSS_MAX_NODES] = {0}, sy[MM_TRUSS_MAX_NODES] = {0}, ab[MM_TRUSS_MAX_NODES] = {0};
-    for (int e = 0; e < t->n_members; e++) {
-        int a = t->ends[2 * e], b = t->ends[2 * e + 1];
-        double dx = t->xy[2 * b] - t->xy[2 * a], dy = t->xy[2 * b + 1] - t->xy[2 * a + 1], L = hypot(dx, dy);
-        double fx = F[e] * dx / L, fy = F[e] * dy / L;
-        sx[a] += fx, sy[a] += fy, sx[b] -= fx, sy[b] -= fy;
-        ab[a] += fabs(F[e]), ab[b] += fabs(F[e]);
-    }
-    for (int l = 0; l < t->n_loads; l++) {
-        int j = t->load_node[l];
-        sx[j] += t->load_f[2 * l], sy[j] += t->load_f[2 * l + 1];
-        ab[j] += fabs(t->load_f[2 * l]) + fabs(t->load_f[2 * l + 1]);
-    }
-    *worst = *scale = *total = 0;
-    for (int j = 0; j < t->n_nodes; j++) {
-        sx[j] += R[2 * j], sy[j] += R[2 * j + 1];
-        ab[j] += fabs(R[2 * j]) + fabs(R[2 * j + 1]);
-        *worst = fmax(*worst, hypot(sx[j], sy[j]));
-        *scale = fmax(*scale, ab[j]);
-        *total += ab[j];
-    }
-}
-
-/* The whole truss as one body: sum Fx, sum Fy and sum M about the first
- * joint of loads and reactions; the largest of the three over its scale. */
-static void body_residual(const mm_truss *t, const double *R, double *worst, double *scale)
-{
-    double fx = 0, fy = 0, mz = 0, sf = 0, sm = 0, x0 = t->xy[0], y0 = t->xy[1];
-    for (int k = 0; k < t->n_loads + t->n_nodes; k++) {
-        int j = k < t->n_loads ? t->load_node[k] : k - t->n_loads;
-        double px = k < t->n_loads ? t->load_f[2 * k] : R[2 * j];
-        double py = k < t->n_loads ? t->load_f[2 * k + 1] : R[2 * j + 1];
-        double m = (t->xy[2 * j] - x0) * py - (t->xy[2 * j + 1] - y0) * px;
-        fx += px, fy += py, mz += m;
-        sf += fabs(px) + fabs(py), sm += fabs(m);
-    }
-    double arm = 1;
-    for (int j = 0; j < t->n_nodes; j++)
-        arm = fmax(arm, hypot(t->xy[2 * j] - x0, t->xy[2 * j + 1] - y0));
-    *worst = fmax(hypot(fx, fy), fabs(mz) / arm);
-    *scale = fmax(sf, sm / arm);
-}
-
-/* ---- the drawing ---------------------------------------------------------------------- */
-
-static int draw(const mm_truss *t, const double *F, const double *R, double fscale, double ftol, mm_result *res)
-{
-    mm_sta_fbd(res);
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int j = 0; j < t->n_nodes; j++)
-        for (int d = 0; d < 2; d++)
-            lo[d] = fmin(lo[d], t->xy[2 * j + d]), hi[d] = fmax(hi[d], t->xy[2 * j + d]);
-    double size = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]), 1e-6), sup = 0.06 * size;
-    for (int e = 0; e < t->n_members; e++) {
-        const double *a = t->xy + 2 * t->ends[2 * e], *b = t->xy + 2 * t->ends[2 * e + 1];
-        char name[24];
-        snprintf(name, sizeof name, "member %d", e + 1);
-        mm_sta_member(res, name, a[0], a[1], b[0], b[1], F[e], ftol);
-    }
-    for (int s = 0; s < t->n_supports; s++) {
-        const int *r = t->supports + 3 * s;
-        const double *p = t->xy + 2 * r[0];
-        if (r[1] && r[2])
-            mm_sta_pin(res, "pin", p[0], p[1], sup, 0);
-        else
-            mm_sta_roller(res, "roller", p[0], p[1], sup, r[2] ? 0 : -M_PI / 2);
-        for (int d = 0; d < 2; d++)
-            if (r[1 + d] && fabs(R[2 * r[0] + d]) > ftol)
-                mm_sta_force(res, "reaction", p[0], p[1], d == 0 ? R[2 * r[0]] : 0,
-                                  d == 1 ? R[2 * r[0] + 1] : 0, fscale, 1);
-    }
-    for (int l = 0; l < t->n_loads; l++) {
-        const double *p = t->xy + 2 * t->load_node[l];
-        mm_sta_force(res, "load", p[0], p[1], t->load_f[2 * l], t->load_f[2 * l + 1], fscale, 1);
-    }
-    for (int j = 0; j < t->n_nodes; j++)
-        mm_sta_label(res, t->xy[2 * j] + 0.02 * size, t->xy[2 * j + 1] + 0.02 * size, "%d", j + 1);
-    return MM_OK;
-}
-
 /* ---- solve ------------------------------------------------------------------------------ */
 
 /* A force below its rounding error is zero (a zero-force member, a reaction
@@ -289,12 +202,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* check 1: every joint, the forces put back into eq. (1) */
     double worst, scale, total;
-    joint_residual(t, F, R, &worst, &scale, &total);
+    mm_truss_joint_residual(t, F, R, &worst, &scale, &total);
     mm_check_residual(res, "joints: largest |sum F| at a joint [N] (scale: its largest sum of |terms|)", worst,
                       scale, 16);
     /* check 2: the whole truss as one body; it is the sum of the joint
      * equations, so it inherits their rounding (scale: every joint's terms) */
-    body_residual(t, R, &worst, &scale);
+    mm_truss_body_residual(t, R, &worst, &scale);
     mm_check_residual(res, "whole truss: sum Fx, sum Fy, sum M / size of loads and reactions [N]", worst,
                       scale + total, 16);
     /* check 3: reactions by Ritter's moments on the whole truss, eq. (5) */
@@ -351,13 +264,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                          "about %.0f correct digits",
                     1 / tr.eq.rcond, fmax(0, 16 - log10(1 / tr.eq.rcond)));
 
-    double lo = INFINITY, hi = -INFINITY;
-    for (int k = 0; k < 2 * nj; k++)
-        lo = fmin(lo, t->xy[k]), hi = fmax(hi, t->xy[k]);
-    double rmax = 0;
-    for (int k = 0; k < 2 * nj; k++)
-        rmax = fmax(rmax, fabs(R[k]));
-    return draw(t, F, R, mm_sta_scale(fmax(pmax, rmax), fmax(hi - lo, 1e-6), 0.2), ftol, res);
+    mm_sta_fbd(res);
+    return mm_sta_truss(res, t, F, R, pmax, ftol);
 }
 
 static const char *const references[] = {
