@@ -483,6 +483,41 @@ int mm_sta_truss(mm_result *res, const mm_truss *t, const double *F, const doubl
     return rc;
 }
 
+double mm_sta_shown(double v, double err)
+{
+    return fabs(v) <= err ? 0 : v;
+}
+
+int mm_sta_truss_tables(mm_result *res, const mm_truss *t, const double *F, const double *R, double ferr,
+                        double ftol, int out_members, int out_plot, int out_react)
+{
+    int m = t->n_members;
+    mm_table *mt = mm_res_table(res, out_members, m);
+    if (!mt)
+        return MM_ENOMEM;
+    for (int e = 0; e < m; e++) {
+        double *row = mt->cell + (size_t)e * 6;
+        int a = t->ends[2 * e], b = t->ends[2 * e + 1];
+        row[0] = e + 1, row[1] = mm_sta_shown(F[e], ferr), row[2] = a + 1, row[3] = b + 1;
+        row[4] = hypot(t->xy[2 * b] - t->xy[2 * a], t->xy[2 * b + 1] - t->xy[2 * a + 1]);
+        mt->text[e * 6 + 5] = F[e] > ftol ? "tension" : F[e] < -ftol ? "compression" : "zero-force";
+    }
+    mm_series *fp = mm_res_series(res, out_plot, m);
+    if (!fp)
+        return MM_ENOMEM;
+    for (int e = 0; e < m; e++)
+        fp->x[e] = e + 1, fp->y[e] = mm_sta_shown(F[e], ferr);
+    mm_table *rt = mm_res_table(res, out_react, t->n_supports);
+    if (!rt)
+        return MM_ENOMEM;
+    for (int s = 0; s < t->n_supports; s++) {
+        int j = t->supports[3 * s];
+        rt->cell[3 * s] = j + 1, rt->cell[3 * s + 1] = mm_sta_shown(R[2 * j], ferr);
+        rt->cell[3 * s + 2] = mm_sta_shown(R[2 * j + 1], ferr);
+    }
+    return MM_OK;
+}
+
 int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
 {
     const double *u = mech;
@@ -734,7 +769,7 @@ double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const doub
     double Rmax = 0;
     mm_series *rp = mm_res_series(res, out_plot, n);
     for (int k = 0; k < n; k++) {
-        double shown = fabs(R[k]) <= rerr ? 0 : R[k];
+        double shown = mm_sta_shown(R[k], rerr);
         mm_scalar *s = mm_res_scalar_i(res, out, k + 1, shown);
         if (s)
             s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;

@@ -213,6 +213,19 @@ int mm_sta_beam(mm_result *res, const mm_beam_problem *p, const mm_beam *b, doub
  * the reactions is 0.2 of the truss's extent. */
 int mm_sta_truss(mm_result *res, const mm_truss *t, const double *F, const double *R, double pmax, double ftol);
 
+/* A force within its rounding error err of zero is zero (a zero-force
+ * member, a reaction the loads do not need): v, or 0 when |v| <= err, so
+ * that the answer prints 0, not the rounding noise. */
+double mm_sta_shown(double v, double err);
+
+/* The truss's answer as tables: the members (number, force shown to
+ * ferr, joints, length, state: tension or compression beyond ftol, else
+ * zero-force) into the table out_members and the series out_plot (force
+ * against member number), the supports' reactions into the table
+ * out_react.  Returns MM_OK or MM_ENOMEM. */
+int mm_sta_truss_tables(mm_result *res, const mm_truss *t, const double *F, const double *R, double ferr,
+                        double ftol, int out_members, int out_plot, int out_react);
+
 /* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
 
 /* Why mm_equil_solve found the links of a body singular (MM_ESINGULAR with

@@ -94,7 +94,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return rc;
     double xerr = 4 * DBL_EPSILON * Fs / er.rcond, Xmax = 0;
     for (int k = 0; k < 6; k++) {
-        mm_res_scalar_err(res, O_AX + k, fabs(x[k]) <= xerr ? 0 : x[k], xerr, MM_ERR_ESTIMATE);
+        mm_res_scalar_err(res, O_AX + k, mm_sta_shown(x[k], xerr), xerr, MM_ERR_ESTIMATE);
         Xmax = fmax(Xmax, fabs(x[k]));
     }
     /* check 1: each body, eq. (1) put back */

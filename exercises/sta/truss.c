@@ -40,8 +40,7 @@ static const mm_param params[] = {
                             "level ground, 1,0 a roller on a wall"},
     [P_LOADS] = {"loads", "loads (joint, Fx, Fy per row)", "N", MM_MATRIX, 0, -1e9, 1e9, "2,0,-10000", NULL,
                  MM_TRUSS_MAX_LOADS, 3,
-                 .help = "one row per load: the joint it acts on and its components (+y up); at most "
-                         "100 rows"},
+                 .help = "one row per load: the joint it acts on and its components (+y up); at most 100 rows"},
 };
 
 enum { O_DET, O_NJ, O_NM, O_NR, O_TMAX, O_CMAX, O_MEMBERS, O_REACT, O_FPLOT, O_ANIM };
@@ -49,7 +48,6 @@ static const char *const mcols[] = {"member", "force", "joint_i", "joint_j", "le
 static const char *const munits[] = {"", "N", "", "", "m", "", NULL};
 static const char *const rcols[] = {"node", "Rx", "Ry", NULL};
 static const char *const runits[] = {"", "N", "N", NULL};
-
 static const mm_output outputs[] = {
     [O_DET] = MM_SCALAR("determinacy", "determinacy m + r - 2j", "", .flags = MM_ANSWER | MM_EXACT),
     [O_NJ] = MM_SCALAR("n_joints", "joints j", "", .flags = MM_EXACT),
@@ -64,8 +62,8 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the truss: members in tension and compression, loads and reactions"),
 };
 
-/* ---- the truss from the parameters ---------------------------------------------- */
-
+/* The truss from the parameters: joints numbered from 1 turned into 0-based
+ * indices, with the storage the mm_truss points into. */
 typedef struct model {
     int ends[2 * MM_TRUSS_MAX_MEMBERS], sup[3 * MM_TRUSS_MAX_SUPPORTS], lnode[MM_TRUSS_MAX_LOADS];
     double lf[2 * MM_TRUSS_MAX_LOADS];
@@ -130,15 +128,6 @@ static int check(const mm_value *in, mm_error *err)
     return load_model(in, &m, err);
 }
 
-/* ---- solve ------------------------------------------------------------------------------ */
-
-/* A force below its rounding error is zero (a zero-force member, a reaction
- * the loads do not need): print 0, not the rounding noise. */
-static double shown(double v, double err)
-{
-    return fabs(v) <= err ? 0 : v;
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     model md;
@@ -154,7 +143,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     rc = mm_truss_solve(t, &tr, err);
     if (rc != MM_OK)
         return rc;                     /* a mechanism or indeterminate: 422 in mechanics words */
-
     double Fbig = 0, pmax = 0, tmax = 0, cmax = 0;
     for (int e = 0; e < m; e++) {
         Fbig = fmax(Fbig, fabs(F[e]));
@@ -165,7 +153,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         pmax = fmax(pmax, hypot(t->load_f[2 * l], t->load_f[2 * l + 1]));
     /* forward error of the forces: cond * eps * |F| (rcond estimated, eq. 4) */
     double ferr = 4 * DBL_EPSILON * Fbig / tr.eq.rcond, ftol = 1e-9 * fmax(pmax, Fbig);
-
     mm_scalar *d = mm_res_scalar(res, O_DET, tr.determinacy);
     d->text = "determinate";
     mm_res_scalar(res, O_NJ, nj);
@@ -173,30 +160,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_NR, tr.n_reactions);
     mm_res_scalar_err(res, O_TMAX, tmax, ferr, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_CMAX, cmax, ferr, MM_ERR_ESTIMATE);
-
-    mm_table *mt = mm_res_table(res, O_MEMBERS, m);
-    if (!mt)
+    if (mm_sta_truss_tables(res, t, F, R, ferr, ftol, O_MEMBERS, O_FPLOT, O_REACT) != MM_OK)
         return MM_ENOMEM;
-    for (int e = 0; e < m; e++) {
-        double *row = mt->cell + (size_t)e * 6;
-        int a = t->ends[2 * e], b = t->ends[2 * e + 1];
-        row[0] = e + 1, row[1] = shown(F[e], ferr), row[2] = a + 1, row[3] = b + 1;
-        row[4] = hypot(t->xy[2 * b] - t->xy[2 * a], t->xy[2 * b + 1] - t->xy[2 * a + 1]);
-        mt->text[e * 6 + 5] = F[e] > ftol ? "tension" : F[e] < -ftol ? "compression" : "zero-force";
-    }
-    mm_series *fp = mm_res_series(res, O_FPLOT, m);
-    if (!fp)
-        return MM_ENOMEM;
-    for (int e = 0; e < m; e++)
-        fp->x[e] = e + 1, fp->y[e] = shown(F[e], ferr);
-    mm_table *rt = mm_res_table(res, O_REACT, t->n_supports);
-    if (!rt)
-        return MM_ENOMEM;
-    for (int s = 0; s < t->n_supports; s++) {
-        int j = t->supports[3 * s];
-        rt->cell[3 * s] = j + 1, rt->cell[3 * s + 1] = shown(R[2 * j], ferr);
-        rt->cell[3 * s + 2] = shown(R[2 * j + 1], ferr);
-    }
     mm_res_method(res, "method of joints: sparse LU with partial pivoting, rank test by QR", 0);
     mm_res_method_stat(res, "rcond", tr.eq.rcond);
 
@@ -248,7 +213,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_warn(res, "no straight cut crosses exactly three members here, so the method of sections "
                          "is not shown; the joint and whole-truss checks still apply");
     }
-
     /* nearly collinear joints: forces of about 1/sin(spread) times the load */
     double spread[MM_TRUSS_MAX_NODES];
     mm_truss_spread(t, spread);
@@ -263,7 +227,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_warn(res, "the joint equations are nearly singular (condition about %.1e): the forces have "
                          "about %.0f correct digits",
                     1 / tr.eq.rcond, fmax(0, 16 - log10(1 / tr.eq.rcond)));
-
     mm_sta_fbd(res);
     return mm_sta_truss(res, t, F, R, pmax, ftol);
 }
