@@ -623,6 +623,13 @@ int mm_sta_polygon3(mm_result *res, const char *name, int n, const double *xyz, 
     return mm_sta_polygon(res, name, n, xy, style);
 }
 
+int mm_sta_rows(const mm_value *v, const char *param, const char *what, const char *row, int cols, mm_error *err)
+{
+    if (v->rows && v->cols != cols)
+        return mm_error_set(err, MM_ERANGE, param, "each %s is one row %s; got %d numbers", what, row, v->cols);
+    return MM_OK;
+}
+
 int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, const char *fmt, ...)
 {
     char buf[400];

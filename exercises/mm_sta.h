@@ -96,6 +96,12 @@ int mm_sta_arrow3(mm_result *res, const char *name, const double *p, const doubl
  * lost to memory is recorded in res). */
 double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr);
 
+/* A matrix parameter v (named param) must have rows of `cols` numbers (an
+ * empty one passes: the server lets only a matrix whose default is empty
+ * be empty): MM_OK, or MM_ERANGE with "each <what> is one row <row>; got
+ * <n> numbers". */
+int mm_sta_rows(const mm_value *v, const char *param, const char *what, const char *row, int cols, mm_error *err);
+
 /* A check against ref within the absolute tolerance tol (mm_res_check_abs)
  * whose name is printf-formatted, for names that say which member, link or
  * cable was the worst.  Returns MM_OK or MM_ENOMEM (sticky, in res). */

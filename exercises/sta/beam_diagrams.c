@@ -68,15 +68,10 @@ static const mm_output outputs[] = {
 
 static int problem(const mm_value *in, mm_beam_problem *p, mm_error *err)
 {
-    if (in[P_POINT].rows && in[P_POINT].cols != 2)
-        return mm_error_set(err, MM_ERANGE, "point_loads", "each point load is one row x,Fy; got %d numbers",
-                            in[P_POINT].cols);
-    if (in[P_DIST].rows && in[P_DIST].cols != 4)
-        return mm_error_set(err, MM_ERANGE, "distributed", "each distributed load is one row x1,x2,q1,q2; got %d "
-                            "numbers", in[P_DIST].cols);
-    if (in[P_MOMENTS].rows && in[P_MOMENTS].cols != 2)
-        return mm_error_set(err, MM_ERANGE, "moments", "each couple is one row x,C; got %d numbers",
-                            in[P_MOMENTS].cols);
+    if (mm_sta_rows(&in[P_POINT], "point_loads", "point load", "x,Fy", 2, err) ||
+        mm_sta_rows(&in[P_DIST], "distributed", "distributed load", "x1,x2,q1,q2", 4, err) ||
+        mm_sta_rows(&in[P_MOMENTS], "moments", "couple", "x,C", 2, err))
+        return MM_ERANGE;
     *p = (mm_beam_problem){.L = in[P_L].x, .a = in[P_A].x, .b = in[P_B].x,
                            .kind = (int)in[P_SUPPORTS].x == 1 ? MM_BEAM_CANTILEVER : MM_BEAM_TWO_SUPPORTS,
                            .n_point = in[P_POINT].rows, .point = in[P_POINT].data,

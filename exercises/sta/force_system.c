@@ -57,12 +57,9 @@ static const mm_output outputs[] = {
 
 static int check(const mm_value *in, mm_error *err)
 {
-    if (in[P_FORCES].cols != 6)
-        return mm_error_set(err, MM_ERANGE, "forces", "each force is one row x,y,z,Fx,Fy,Fz; got %d numbers",
-                            in[P_FORCES].cols);
-    if (in[P_COUPLES].rows && in[P_COUPLES].cols != 3)
-        return mm_error_set(err, MM_ERANGE, "couples", "each couple is one row Cx,Cy,Cz; got %d numbers",
-                            in[P_COUPLES].cols);
+    if (mm_sta_rows(&in[P_FORCES], "forces", "force", "x,y,z,Fx,Fy,Fz", 6, err) ||
+        mm_sta_rows(&in[P_COUPLES], "couples", "couple", "Cx,Cy,Cz", 3, err))
+        return MM_ERANGE;
     if (in[P_O].cols != 3)
         return mm_error_set(err, MM_ERANGE, "O", "O needs 3 coordinates; got %d", in[P_O].cols);
     return MM_OK;
@@ -77,32 +74,23 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_forces_resultant(Fs->rows, Fs->data, Cs->rows, Cs->data, O, &so);
     const double *R = so.R, *M = so.M;
     double Rs = so.sum_F, Ms = so.sum_M, Rn = mm_sta_norm(R), Mn = mm_sta_norm(M);
-    for (int k = 0; k < 3; k++)
-        mm_res_scalar(res, O_RX + k, R[k]);
-    mm_res_scalar(res, O_R, Rn);
-    for (int k = 0; k < 3; k++)
-        mm_res_scalar(res, O_MX + k, M[k]);
+    const double out[] = {R[0], R[1], R[2], Rn, M[0], M[1], M[2]};      /* O_RX ... O_MZ */
+    for (int k = 0; k < 7; k++)
+        mm_res_scalar(res, O_RX + k, out[k]);
     /* the simplest equivalent: R and M vanish to rounding, or R . M does */
-    int kind;
-    double tolR = 64 * DBL_EPSILON * Rs, tolM = 64 * DBL_EPSILON * Ms;
-    double P[3] = {O[0], O[1], O[2]}, pitch = 0;
-    if (Rn <= tolR)
-        kind = Mn <= tolM ? 0 : 1;
-    else {
+    double tolR = 64 * DBL_EPSILON * Rs, tolM = 64 * DBL_EPSILON * Ms, RM = mm_sta_dot(R, M);
+    int kind = Rn <= tolR ? (Mn <= tolM ? 0 : 1) : fabs(RM) <= 64 * DBL_EPSILON * Rs * Ms ? 2 : 3;
+    double P[3] = {O[0], O[1], O[2]}, pitch = kind == 3 ? RM / (Rn * Rn) : 0;       /* eq. (4) */
+    static const char *const kinds[] = {"in equilibrium", "a couple", "a single force", "a wrench"};
+    mm_res_scalar_text(res, O_KIND, kind, kinds[kind]);
+    if (Rn > tolR) {
         double RxM[3];
         mm_sta_cross(R, M, RxM);
         for (int k = 0; k < 3; k++)
             P[k] = O[k] + RxM[k] / (Rn * Rn);              /* eq. (4) */
-        kind = fabs(mm_sta_dot(R, M)) <= 64 * DBL_EPSILON * Rs * Ms ? 2 : 3;
-        pitch = kind == 2 ? 0 : mm_sta_dot(R, M) / (Rn * Rn);
-    }
-    static const char *const kinds[] = {"in equilibrium", "a couple", "a single force", "a wrench"};
-    mm_res_scalar_text(res, O_KIND, kind, kinds[kind]);
-    if (Rn > tolR) {
-        mm_res_scalar(res, O_PITCH, pitch);
-        for (int k = 0; k < 3; k++)
-            mm_res_scalar(res, O_PX + k, P[k]);
-        mm_res_scalar(res, O_MW, pitch * Rn);
+        const double axis[] = {pitch, P[0], P[1], P[2], pitch * Rn};     /* O_PITCH ... O_MW */
+        for (int k = 0; k < 5; k++)
+            mm_res_scalar(res, O_PITCH + k, axis[k]);
         /* check 1: summed directly at P, the moment lies along R: |M_P x R| */
         mm_forces_resultant(Fs->rows, Fs->data, Cs->rows, Cs->data, P, &sp);
         double *MP = sp.M, MPs = sp.sum_M, c[3];
@@ -110,7 +98,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_check_residual(res, "moment summed at the central axis point P, across R: |M_P x R| / |R| [N m]",
                           mm_sta_norm(c) / Rn, MPs + Ms, 64);
         /* check 2: the invariant R . M */
-        mm_check_residual(res, "R . M at P vs at O [N^2 m]", mm_sta_dot(R, MP) - mm_sta_dot(R, M), Rs * (MPs + Ms), 64);
+        mm_check_residual(res, "R . M at P vs at O [N^2 m]", mm_sta_dot(R, MP) - RM, Rs * (MPs + Ms), 64);
         /* check 3: it is the wrench's couple p R */
         double d[3];
         for (int k = 0; k < 3; k++)
