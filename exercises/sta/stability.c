@@ -93,14 +93,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * theta = pi is inside (then folded into (-pi, pi]) */
     enum { NSUB = 720 };
     mm_roots_root roots[NSUB + 1];
-    mm_roots_result rr = {.roots = roots, .cap = NSUB + 1};
-    mm_roots_options opt;
-    mm_roots_options_init(&opt);
-    opt.n = NSUB;
-    opt.tol = 1e-15;
-    opt.max_iter = 200;
-    mm_roots_problem pb = {.f = dV_fn, .params = &s, .a = -M_PI + 0.1, .b = M_PI + 0.1};
-    int rc = mm_roots_solve(&pb, &opt, &rr, err);
+    mm_roots_result rr;
+    int rc = mm_roots_scan(dV_fn, &s, -M_PI + 0.1, M_PI + 0.1, NSUB, 1e-15, 200, roots, &rr, err);
     if (rc != MM_OK)
         return rc;
     int n = rr.nroots;

@@ -81,7 +81,7 @@ static int check(const mm_value *in, mm_error *err)
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     mech m = {in[P_R].x, in[P_L].x, in[P_E].x, in[P_P].x, 0};
-    double th = in[P_THETA].x, dx, d2x, x = xB(&m, th, &dx, &d2x);
+    double th = in[P_THETA].x, dx, x = xB(&m, th, &dx, NULL);
     m.M = m.P * dx;                                                               /* eq. (2) */
     mm_res_scalar(res, O_M, m.M);
     mm_res_scalar(res, O_DX, dx);
@@ -114,8 +114,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_equil_residual(8, 8, A, b, u, &res8, &sc8);
     mm_check_residual(res, "the eight equilibrium equations, largest residual", res8, sc8, 16);
     /* dx_B/dtheta against a central difference (truncation h^2 x'''/6, x''' by a difference of x'') */
-    double h = 1e-5, xp, xm, d2p, d2m, hh = 1e-3;
-    xp = xB(&m, th + h, NULL, NULL), xm = xB(&m, th - h, NULL, NULL);
+    double h = 1e-5, hh = 1e-3, xp = xB(&m, th + h, NULL, NULL), xm = xB(&m, th - h, NULL, NULL), d2p, d2m;
     xB(&m, th + hh, NULL, &d2p), xB(&m, th - hh, NULL, &d2m);
     double x3 = fabs(d2p - d2m) / (2 * hh);        /* |x'''|, itself by a difference: doubled below */
     mm_res_check_abs(res, "dx_B/dtheta vs a central difference of x_B [m] (truncation and rounding)",
@@ -136,12 +135,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (m.P != 0) {
         enum { NSUB = 360 };
         mm_roots_root roots[NSUB + 1];
-        mm_roots_result rr = {.roots = roots, .cap = NSUB + 1};
-        mm_roots_options opt;
-        mm_roots_options_init(&opt);
-        opt.n = NSUB, opt.tol = 1e-13;
-        mm_roots_problem pb = {.f = dV_fn, .params = &m, .a = 0, .b = 2 * M_PI};
-        if (mm_roots_solve(&pb, &opt, &rr, err) != MM_OK)
+        mm_roots_result rr;
+        if (mm_roots_scan(dV_fn, &m, 0, 2 * M_PI, NSUB, 1e-13, 0, roots, &rr, err) != MM_OK)
             rr.nroots = 0;                        /* the plot then marks theta only */
         /* the given angle is an equilibrium by construction (a double root
          * of V' where the torque curve peaks, so not always bracketed): put
