@@ -88,7 +88,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_scalar(res, O_RATIO, s.W / Wcr);
     if (c < 1)
         mm_res_scalar(res, O_THEQ, acos(c));
-
     /* the equilibria: roots of V' over one turn, from -pi + 0.1 so that
      * theta = pi is inside (then folded into (-pi, pi]) */
     enum { NSUB = 720 };
@@ -105,8 +104,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         th[i] = roots[i].x > M_PI ? roots[i].x - 2 * M_PI : roots[i].x;
         /* the root lies within its final bracket; when Brent stopped on an
          * exact zero of the computed V', within the rounding of V' over V'' */
-        w[i] = roots[i].fx != 0 ? roots[i].width
-                                : 4 * DBL_EPSILON * (s.k * s.a * s.a + s.W * s.L) / fmax(fabs(d2V(&s, roots[i].x)), 1e-300);
+        w[i] = roots[i].fx != 0 ? roots[i].width : 4 * DBL_EPSILON * big / fmax(fabs(d2V(&s, roots[i].x)), 1e-300);
         /* a neutral (triple) root: cos(theta) - 1 rounds to 0 below sqrt(2 eps) */
         if (roots[i].fx == 0)
             w[i] = fmin(w[i], 4 * sqrt(DBL_EPSILON));
@@ -136,13 +134,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     int ncf = c < 1 && acos(c) > 0 ? 4 : 2;             /* the tilted pair only below W_cr */
     double worst = 0, wtol = 0;
     for (int j = 0; j < ncf; j++) {
-        int best = -1;
-        for (int i = 0; i < n; i++) {
-            double d = fabs(remainder(th[i] - cf[j], 2 * M_PI));
-            if (best < 0 || d < fabs(remainder(th[best] - cf[j], 2 * M_PI)))
-                best = i;
-        }
-        double d = best >= 0 ? fabs(remainder(th[best] - cf[j], 2 * M_PI)) : INFINITY;
+        int best = -1;                                   /* the root found nearest to cf[j] */
+        double d = INFINITY;
+        for (int i = 0; i < n; i++)
+            if (fabs(remainder(th[i] - cf[j], 2 * M_PI)) < d)
+                d = fabs(remainder(th[i] - cf[j], 2 * M_PI)), best = i;
         double tol = best >= 0 ? w[best] + 8 * DBL_EPSILON * M_PI : 0;   /* and the rounding of the closed form */
         if (d / (tol + 1e-300) >= worst / (wtol + 1e-300))
             worst = d, wtol = tol;

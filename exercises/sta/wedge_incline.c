@@ -80,24 +80,21 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* ---- the block -------------------------------------------------------------------- */
-
-/* The slope frame: s up the slope, n across it; the block's downhill
- * bottom corner at the origin, its base from s = 0 to w. */
+/* ---- the block, in the slope frame: s up the slope, n across it; the
+ * block's downhill bottom corner at the origin, its base from s = 0 to w */
 static int block(const mm_value *in, mm_result *res, mm_error *err)
 {
     double W = in[P_W].x, mu = in[P_MU].x, a = in[P_ALPHA].x, w = in[P_WIDTH].x, h = in[P_H].x, hP = in[P_HP].x;
     double sa = sin(a), ca = cos(a);
     double Pup = W * (sa + mu * ca);                                   /* eq. (2) */
-    double down = sa - mu * ca, Phold = down > 8 * DBL_EPSILON * (sa + mu * ca) ? W * down : 0;   /* eq. (3) */
+    double down = sa - mu * ca, lim = 8 * DBL_EPSILON * (sa + mu * ca), Phold = down > lim ? W * down : 0; /* (3) */
     double Ptip = W * (w * ca + h * sa) / (2 * hP);                    /* eq. (4) */
     int first = fabs(Pup - Ptip) <= 1e-12 * Pup ? 3 : Pup < Ptip ? 1 : 2;
     static const char *const firsts[] = {"", "slides up", "tips over its upper edge", "slides and tips at once"};
     mm_res_scalar(res, O_PUP, Pup);
-    mm_scalar *s = mm_res_scalar(res, O_PHOLD, Phold);
-    s->text = down > 8 * DBL_EPSILON * (sa + mu * ca) ? "it would slide down without it"
-              : fabs(down) <= 8 * DBL_EPSILON * (sa + mu * ca) ? "at the slip limit: mu = tan(alpha)"
-                                                                : "self-locking: it stays without a push";
+    mm_res_scalar_text(res, O_PHOLD, Phold, down > lim           ? "it would slide down without it"
+                                            : fabs(down) <= lim ? "at the slip limit: mu = tan(alpha)"
+                                                                : "self-locking: it stays without a push");
     mm_res_scalar(res, O_PTIP, Ptip);
     mm_res_scalar_text(res, O_FIRST, first, firsts[first]);
     mm_res_scalar(res, O_ASLIP, atan(mu));
@@ -144,11 +141,9 @@ static int block(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
-/* ---- the wedge ------------------------------------------------------------------- */
-
-/* eq. (8): wedge moving +x under the load, which rises against a wall on
- * its right; s = +1 driving in, -1 starting out (every friction reversed).
- * Unknowns N1 (floor), N2 (incline), N3 (wall), P. */
+/* ---- the wedge.  Eq. (8): wedge moving +x under the load, which rises
+ * against a wall on its right; s = +1 driving in, -1 starting out (every
+ * friction reversed).  Unknowns N1 (floor), N2 (incline), N3 (wall), P. */
 static int wedge_solve(double W, double mu, double be, double s, double *x, mm_equil_result *er, mm_error *err)
 {
     double sb = sin(be), cb = cos(be), m = s * mu;
