@@ -5,6 +5,8 @@
 #include <stdarg.h>
 #include <stdio.h>
 
+/* ---- drawing: the free-body diagram and its parts ----------------------------------- */
+
 int mm_sta_fbd(mm_result *res)
 {
     mm_anim *a = mm_res_animation(res, 1, "t", "s");
@@ -119,6 +121,134 @@ int mm_sta_label(mm_result *res, double x, double y, const char *fmt, ...)
     return rc;
 }
 
+int mm_sta_arrow(mm_result *res, const char *name, double x0, double y0, double x1, double y1, const char *unit,
+                 double scale, double value)
+{
+    mm_shape *s = shape(res, name, MM_SHAPE_ARROW, 2);
+    double *v = s ? mm_shape_values(res, s) : NULL;
+    if (!v)
+        return MM_ENOMEM;
+    s->x[0] = x0, s->y[0] = y0, s->x[1] = x1, s->y[1] = y1;
+    s->unit = unit, s->scale = scale, v[0] = value;
+    return MM_OK;
+}
+
+/* (u, v) in the support's frame (v up from the ground) to the drawing */
+static void turn(double x, double y, double angle, double u, double v, double *px, double *py)
+{
+    double c = cos(angle), s = sin(angle);
+    *px = x + c * u - s * v;
+    *py = y + s * u + c * v;
+}
+
+static int ground(mm_result *res, const char *name, double x, double y, double size, double angle, double depth)
+{
+    double xy[4];
+    turn(x, y, angle, -0.8 * size, -depth, &xy[0], &xy[1]);
+    turn(x, y, angle, 0.8 * size, -depth, &xy[2], &xy[3]);
+    return mm_sta_path(res, name, 2, xy, "ground");
+}
+
+int mm_sta_pin(mm_result *res, const char *name, double x, double y, double size, double angle)
+{
+    double tri[6];
+    turn(x, y, angle, 0, 0, &tri[0], &tri[1]);
+    turn(x, y, angle, -0.5 * size, -0.8 * size, &tri[2], &tri[3]);
+    turn(x, y, angle, 0.5 * size, -0.8 * size, &tri[4], &tri[5]);
+    int rc = mm_sta_polygon(res, name, 3, tri, "ground");
+    return rc ? rc : ground(res, "ground", x, y, size, angle, 0.8 * size);
+}
+
+int mm_sta_roller(mm_result *res, const char *name, double x, double y, double size, double angle)
+{
+    double tri[6], c[2];
+    turn(x, y, angle, 0, 0, &tri[0], &tri[1]);
+    turn(x, y, angle, -0.5 * size, -0.6 * size, &tri[2], &tri[3]);
+    turn(x, y, angle, 0.5 * size, -0.6 * size, &tri[4], &tri[5]);
+    int rc = mm_sta_polygon(res, name, 3, tri, "ground");
+    for (int k = -1; k <= 1 && !rc; k += 2) {
+        turn(x, y, angle, 0.25 * k * size, -0.7 * size, &c[0], &c[1]);
+        rc = mm_sta_circle(res, "wheel", c[0], c[1], 0.1 * size, "ground");
+    }
+    return rc ? rc : ground(res, "ground", x, y, size, angle, 0.8 * size);
+}
+
+int mm_sta_clamp(mm_result *res, const char *name, double x, double y, double size)
+{
+    int rc = mm_sta_line(res, name, x, y - size, x, y + size, "ground", 0, 0);
+    for (int k = 0; k < 5 && !rc; k++) {
+        double yk = y - size + 0.5 * size * k;
+        rc = mm_sta_line(res, "hatch", x, yk, x - 0.35 * size, yk + 0.35 * size, "ground", 0, 0);
+    }
+    return rc;
+}
+
+int mm_sta_couple(mm_result *res, const char *name, double x, double y, double r, double C)
+{
+    enum { N = 19 };
+    double xy[2 * N], dir = C >= 0 ? 1 : -1;
+    for (int k = 0; k < N; k++) {
+        double t = -0.75 * M_PI + dir * 1.5 * M_PI * k / (N - 1);
+        xy[2 * k] = x + r * cos(t), xy[2 * k + 1] = y + r * sin(t);
+    }
+    mm_shape *s = shape(res, name, MM_SHAPE_LINE, N);
+    double *v = s ? mm_shape_values(res, s) : NULL;
+    if (!v)
+        return MM_ENOMEM;
+    for (int k = 0; k < N; k++)
+        s->x[k] = xy[2 * k], s->y[k] = xy[2 * k + 1];
+    v[0] = C;
+    /* the head: a short arrow along the arc's last step */
+    mm_shape *h = shape(res, "couple head", MM_SHAPE_ARROW, 2);
+    double *hv = h ? mm_shape_values(res, h) : NULL;
+    if (!hv)
+        return MM_ENOMEM;
+    h->unit = "N m";
+    h->scale = 0;
+    hv[0] = fabs(C);
+    h->x[0] = xy[2 * (N - 2)], h->y[0] = xy[2 * (N - 2) + 1];
+    h->x[1] = xy[2 * (N - 1)], h->y[1] = xy[2 * (N - 1) + 1];
+    return MM_OK;
+}
+
+/* ---- drawing in space (an oblique projection) --------------------------------------- */
+
+void mm_sta_project(double x, double y, double z, double *u, double *v)
+{
+    /* cabinet projection: x drawn at 210 degrees, half length */
+    *u = y - 0.5 * x * cos(M_PI / 6);
+    *v = z - 0.5 * x * sin(M_PI / 6);
+}
+
+int mm_sta_line3(mm_result *res, const char *name, const double *a, const double *b, const char *style)
+{
+    double xy[4];
+    mm_sta_project(a[0], a[1], a[2], &xy[0], &xy[1]);
+    mm_sta_project(b[0], b[1], b[2], &xy[2], &xy[3]);
+    return mm_sta_path(res, name, 2, xy, style);
+}
+
+int mm_sta_arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale, int head,
+                  const char *unit, const char *style)
+{
+    double u0, v0, u1, v1;
+    if (head) {
+        mm_sta_project(p[0] - scale * v[0], p[1] - scale * v[1], p[2] - scale * v[2], &u0, &v0);
+        mm_sta_project(p[0], p[1], p[2], &u1, &v1);
+    } else {
+        mm_sta_project(p[0], p[1], p[2], &u0, &v0);
+        mm_sta_project(p[0] + scale * v[0], p[1] + scale * v[1], p[2] + scale * v[2], &u1, &v1);
+    }
+    mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_ARROW, 1, 2);
+    double *val = s ? mm_shape_values(res, s) : NULL;
+    if (!val)
+        return MM_ENOMEM;
+    s->x[0] = u0, s->y[0] = v0, s->x[1] = u1, s->y[1] = v1;
+    s->unit = unit, s->scale = scale, s->style = style;
+    val[0] = mm_sta_norm(v);
+    return MM_OK;
+}
+
 int mm_sta_label3(mm_result *res, const double *p, const char *fmt, ...)
 {
     double u, v;
@@ -144,16 +274,54 @@ int mm_sta_axes3(mm_result *res, const double *O, double len)
     return rc;
 }
 
-int mm_sta_arrow(mm_result *res, const char *name, double x0, double y0, double x1, double y1, const char *unit,
-                 double scale, double value)
+int mm_sta_polygon3(mm_result *res, const char *name, int n, const double *xyz, const char *style)
 {
-    mm_shape *s = shape(res, name, MM_SHAPE_ARROW, 2);
-    double *v = s ? mm_shape_values(res, s) : NULL;
-    if (!v)
+    double *xy = mm_res_alloc(res, 2 * (size_t)n * sizeof *xy);
+    if (!xy)
         return MM_ENOMEM;
-    s->x[0] = x0, s->y[0] = y0, s->x[1] = x1, s->y[1] = y1;
-    s->unit = unit, s->scale = scale, v[0] = value;
+    for (int i = 0; i < n; i++)
+        mm_sta_project(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], &xy[2 * i], &xy[2 * i + 1]);
+    return mm_sta_polygon(res, name, n, xy, style);
+}
+
+/* ---- answers and checks: the idioms of the chapter ---------------------------------- */
+
+int mm_sta_rows(const mm_value *v, const char *param, const char *what, const char *row, int cols, mm_error *err)
+{
+    if (v->rows && v->cols != cols)
+        return mm_error_set(err, MM_ERANGE, param, "each %s is one row %s; got %d numbers", what, row, v->cols);
     return MM_OK;
+}
+
+double mm_sta_shown(double v, double err)
+{
+    return fabs(v) <= err ? 0 : v;
+}
+
+double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr)
+{
+    double Rmax = 0;
+    mm_series *rp = mm_res_series(res, out_plot, n);
+    for (int k = 0; k < n; k++) {
+        double shown = mm_sta_shown(R[k], rerr);
+        mm_scalar *s = mm_res_scalar_i(res, out, k + 1, shown);
+        if (s)
+            s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;
+        if (rp)
+            rp->x[k] = k + 1, rp->y[k] = shown;
+        Rmax = fmax(Rmax, fabs(R[k]));
+    }
+    return Rmax;
+}
+
+int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, const char *fmt, ...)
+{
+    char buf[400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    return mm_res_check_abs(res, buf, value, ref, tol);
 }
 
 int mm_sta_worst(int n, const double *a, const double *b, int last)
@@ -166,6 +334,152 @@ int mm_sta_worst(int n, const double *a, const double *b, int last)
             d = e, w = k;
     }
     return w;
+}
+
+int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
+{
+    const double *u = mech;
+    int red = -1;
+    if (r->n_self > 0) {
+        red = 0;
+        for (int k = 1; k < n; k++)
+            if (fabs(self[k]) > fabs(self[red]))
+                red = k;
+    }
+    if (r->n_mech == 0)
+        return mm_error_set(err, MM_ESINGULAR, "links",
+                            "statically indeterminate: %d links for 3 equations; link %d is redundant", n, red + 1);
+    char what[120];
+    if (fabs(u[2]) > 1e-9 * hypot(u[0], u[1]))
+        snprintf(what, sizeof what, "the links let the body turn about (%.4g, %.4g) m", 0.0 - u[1] / u[2],
+                 0.0 + u[0] / u[2]);
+    else
+        snprintf(what, sizeof what, "the links let the body slide along a line at %.1f deg to x",
+                 atan2(u[1], u[0]) * 180 / M_PI);
+    return mm_error_set(err, MM_ESINGULAR, "links", "improperly supported (%d link%s): %s%s; add or move a link", n,
+                        n > 1 ? "s" : "", what, red >= 0 ? ", while another link is redundant" : "");
+}
+
+int mm_sta_improper3(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
+{
+    if (r->n_mech > 0) {
+        /* the free motion: origin velocity v, angular velocity w */
+        const double *v = mech, *w = mech + 3;
+        double wn = mm_sta_norm(w);
+        if (wn > 1e-9 * mm_sta_norm(v)) {
+            double p[3];
+            mm_sta_cross(w, v, p);
+            return mm_error_set(err, MM_ESINGULAR, "links",
+                                "improperly supported (%d links, rank %d): the body can turn about the axis "
+                                "through (%.3g, %.3g, %.3g) along (%.3g, %.3g, %.3g); add or move a link",
+                                n, r->rank, p[0] / (wn * wn) + 0.0, p[1] / (wn * wn) + 0.0,
+                                p[2] / (wn * wn) + 0.0, w[0] / wn + 0.0, w[1] / wn + 0.0, w[2] / wn + 0.0);
+        }
+        double vn = mm_sta_norm(v);
+        return mm_error_set(err, MM_ESINGULAR, "links",
+                            "improperly supported (%d links, rank %d): the body can slide along (%.3g, %.3g, "
+                            "%.3g); add or move a link", n, r->rank, v[0] / vn + 0.0, v[1] / vn + 0.0,
+                            v[2] / vn + 0.0);
+    }
+    int red = 0;
+    for (int k = 1; k < n; k++)
+        if (fabs(self[k]) > fabs(self[red]))
+            red = k;
+    return mm_error_set(err, MM_ESINGULAR, "links",
+                        "statically indeterminate: %d links for 6 equations; link %d is redundant", n, red + 1);
+}
+
+int mm_sta_equilibria(mm_result *res, int n, const double *x, const double *y, const int *kind, int nk,
+                      const int *outs)
+{
+    for (int k = 0; k < nk; k++) {
+        int m = 0;
+        for (int i = 0; i < n; i++)
+            m += kind[i] == k;
+        if (!m)
+            continue;
+        mm_series *d = mm_res_series(res, outs[k], m);
+        if (!d)
+            return MM_ENOMEM;
+        for (int i = 0, j = 0; i < n; i++)
+            if (kind[i] == k)
+                d->x[j] = x[i], d->y[j] = y[i], j++;
+    }
+    return MM_OK;
+}
+
+int mm_sta_truss_tables(mm_result *res, const mm_truss *t, const double *F, const double *R, double ferr,
+                        double ftol, int out_members, int out_plot, int out_react)
+{
+    int m = t->n_members;
+    mm_table *mt = mm_res_table(res, out_members, m);
+    if (!mt)
+        return MM_ENOMEM;
+    for (int e = 0; e < m; e++) {
+        double *row = mt->cell + (size_t)e * 6;
+        int a = t->ends[2 * e], b = t->ends[2 * e + 1];
+        row[0] = e + 1, row[1] = mm_sta_shown(F[e], ferr), row[2] = a + 1, row[3] = b + 1;
+        row[4] = hypot(t->xy[2 * b] - t->xy[2 * a], t->xy[2 * b + 1] - t->xy[2 * a + 1]);
+        mt->text[e * 6 + 5] = F[e] > ftol ? "tension" : F[e] < -ftol ? "compression" : "zero-force";
+    }
+    mm_series *fp = mm_res_series(res, out_plot, m);
+    if (!fp)
+        return MM_ENOMEM;
+    for (int e = 0; e < m; e++)
+        fp->x[e] = e + 1, fp->y[e] = mm_sta_shown(F[e], ferr);
+    mm_table *rt = mm_res_table(res, out_react, t->n_supports);
+    if (!rt)
+        return MM_ENOMEM;
+    for (int s = 0; s < t->n_supports; s++) {
+        int j = t->supports[3 * s];
+        rt->cell[3 * s] = j + 1, rt->cell[3 * s + 1] = mm_sta_shown(R[2 * j], ferr);
+        rt->cell[3 * s + 2] = mm_sta_shown(R[2 * j + 1], ferr);
+    }
+    return MM_OK;
+}
+
+/* ---- the standard figures of the exercises ------------------------------------------ */
+
+int mm_sta_links2(mm_result *res, int n, const double *links, const double *R, double size, double sc)
+{
+    int rc = MM_OK;
+    for (int k = 0; k < n; k++) {
+        const double *l = links + 4 * k;
+        double len = hypot(l[2], l[3]), e[2] = {l[2] / len, l[3] / len};
+        mm_sta_line(res, "link", l[0], l[1], l[0] - 0.12 * size * e[0], l[1] - 0.12 * size * e[1], "ground", 0, 0);
+        if (R[k] != 0)
+            mm_sta_force(res, "reaction", l[0], l[1], R[k] * e[0], R[k] * e[1], sc, 1);
+        rc = mm_sta_label(res, l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], "R%d", k + 1);
+    }
+    return rc;
+}
+
+int mm_sta_links3(mm_result *res, int n, const double *links, const double *R, double size, double sc)
+{
+    int rc = MM_OK;
+    for (int k = 0; k < n; k++) {
+        const double *l = links + 6 * k;
+        double len = mm_sta_norm(l + 3), e[3] = {l[3] / len, l[4] / len, l[5] / len}, t[4], f[3];
+        mm_sta_project(l[0], l[1], l[2], &t[0], &t[1]);
+        mm_sta_project(l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], l[2] - 0.15 * size * e[2], &t[2], &t[3]);
+        mm_sta_path(res, "link", 2, t, "ground");
+        for (int c = 0; c < 3; c++)
+            f[c] = R[k] * e[c];
+        if (R[k] != 0)
+            mm_sta_arrow3(res, "reaction", l, f, sc, 1, "N", NULL);
+        rc = mm_sta_label(res, t[2], t[3], "R%d", k + 1);
+    }
+    return rc;
+}
+
+int mm_sta_loads2(mm_result *res, int n, const double *loads, double sc)
+{
+    int rc = MM_OK;
+    for (int i = 0; i < n; i++) {
+        const double *p = loads + 4 * i;
+        rc = mm_sta_force(res, "load", p[0], p[1], p[2], p[3], sc, 1);
+    }
+    return rc;
 }
 
 int mm_sta_frame_apart(mm_result *res, const double *A, const double *B, const double *C, const double *R, int n,
@@ -237,25 +551,6 @@ int mm_sta_belt(mm_result *res, double T1, double T2, double theta, double r, do
     mm_sta_couple(res, "torque on the drum", 0, 0, 0.4 * r, torque);
     mm_sta_label(res, 1.1 * r * cos(a0), 1.1 * r * sin(a0), "T1 = %.4g N", T1);
     return mm_sta_label(res, 1.1 * r * cos(a1), 1.1 * r * sin(a1), "T2 = %.4g N", T2);
-}
-
-int mm_sta_equilibria(mm_result *res, int n, const double *x, const double *y, const int *kind, int nk,
-                      const int *outs)
-{
-    for (int k = 0; k < nk; k++) {
-        int m = 0;
-        for (int i = 0; i < n; i++)
-            m += kind[i] == k;
-        if (!m)
-            continue;
-        mm_series *d = mm_res_series(res, outs[k], m);
-        if (!d)
-            return MM_ENOMEM;
-        for (int i = 0, j = 0; i < n; i++)
-            if (kind[i] == k)
-                d->x[j] = x[i], d->y[j] = y[i], j++;
-    }
-    return MM_OK;
 }
 
 int mm_sta_slider_crank(mm_result *res, double r, double l, double e, double th, double xb, double Frod,
@@ -483,276 +778,7 @@ int mm_sta_truss(mm_result *res, const mm_truss *t, const double *F, const doubl
     return rc;
 }
 
-double mm_sta_shown(double v, double err)
-{
-    return fabs(v) <= err ? 0 : v;
-}
-
-int mm_sta_truss_tables(mm_result *res, const mm_truss *t, const double *F, const double *R, double ferr,
-                        double ftol, int out_members, int out_plot, int out_react)
-{
-    int m = t->n_members;
-    mm_table *mt = mm_res_table(res, out_members, m);
-    if (!mt)
-        return MM_ENOMEM;
-    for (int e = 0; e < m; e++) {
-        double *row = mt->cell + (size_t)e * 6;
-        int a = t->ends[2 * e], b = t->ends[2 * e + 1];
-        row[0] = e + 1, row[1] = mm_sta_shown(F[e], ferr), row[2] = a + 1, row[3] = b + 1;
-        row[4] = hypot(t->xy[2 * b] - t->xy[2 * a], t->xy[2 * b + 1] - t->xy[2 * a + 1]);
-        mt->text[e * 6 + 5] = F[e] > ftol ? "tension" : F[e] < -ftol ? "compression" : "zero-force";
-    }
-    mm_series *fp = mm_res_series(res, out_plot, m);
-    if (!fp)
-        return MM_ENOMEM;
-    for (int e = 0; e < m; e++)
-        fp->x[e] = e + 1, fp->y[e] = mm_sta_shown(F[e], ferr);
-    mm_table *rt = mm_res_table(res, out_react, t->n_supports);
-    if (!rt)
-        return MM_ENOMEM;
-    for (int s = 0; s < t->n_supports; s++) {
-        int j = t->supports[3 * s];
-        rt->cell[3 * s] = j + 1, rt->cell[3 * s + 1] = mm_sta_shown(R[2 * j], ferr);
-        rt->cell[3 * s + 2] = mm_sta_shown(R[2 * j + 1], ferr);
-    }
-    return MM_OK;
-}
-
-int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
-{
-    const double *u = mech;
-    int red = -1;
-    if (r->n_self > 0) {
-        red = 0;
-        for (int k = 1; k < n; k++)
-            if (fabs(self[k]) > fabs(self[red]))
-                red = k;
-    }
-    if (r->n_mech == 0)
-        return mm_error_set(err, MM_ESINGULAR, "links",
-                            "statically indeterminate: %d links for 3 equations; link %d is redundant", n, red + 1);
-    char what[120];
-    if (fabs(u[2]) > 1e-9 * hypot(u[0], u[1]))
-        snprintf(what, sizeof what, "the links let the body turn about (%.4g, %.4g) m", 0.0 - u[1] / u[2],
-                 0.0 + u[0] / u[2]);
-    else
-        snprintf(what, sizeof what, "the links let the body slide along a line at %.1f deg to x",
-                 atan2(u[1], u[0]) * 180 / M_PI);
-    return mm_error_set(err, MM_ESINGULAR, "links", "improperly supported (%d link%s): %s%s; add or move a link", n,
-                        n > 1 ? "s" : "", what, red >= 0 ? ", while another link is redundant" : "");
-}
-
-int mm_sta_improper3(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err)
-{
-    if (r->n_mech > 0) {
-        /* the free motion: origin velocity v, angular velocity w */
-        const double *v = mech, *w = mech + 3;
-        double wn = mm_sta_norm(w);
-        if (wn > 1e-9 * mm_sta_norm(v)) {
-            double p[3];
-            mm_sta_cross(w, v, p);
-            return mm_error_set(err, MM_ESINGULAR, "links",
-                                "improperly supported (%d links, rank %d): the body can turn about the axis "
-                                "through (%.3g, %.3g, %.3g) along (%.3g, %.3g, %.3g); add or move a link",
-                                n, r->rank, p[0] / (wn * wn) + 0.0, p[1] / (wn * wn) + 0.0,
-                                p[2] / (wn * wn) + 0.0, w[0] / wn + 0.0, w[1] / wn + 0.0, w[2] / wn + 0.0);
-        }
-        double vn = mm_sta_norm(v);
-        return mm_error_set(err, MM_ESINGULAR, "links",
-                            "improperly supported (%d links, rank %d): the body can slide along (%.3g, %.3g, "
-                            "%.3g); add or move a link", n, r->rank, v[0] / vn + 0.0, v[1] / vn + 0.0,
-                            v[2] / vn + 0.0);
-    }
-    int red = 0;
-    for (int k = 1; k < n; k++)
-        if (fabs(self[k]) > fabs(self[red]))
-            red = k;
-    return mm_error_set(err, MM_ESINGULAR, "links",
-                        "statically indeterminate: %d links for 6 equations; link %d is redundant", n, red + 1);
-}
-
-int mm_sta_links2(mm_result *res, int n, const double *links, const double *R, double size, double sc)
-{
-    int rc = MM_OK;
-    for (int k = 0; k < n; k++) {
-        const double *l = links + 4 * k;
-        double len = hypot(l[2], l[3]), e[2] = {l[2] / len, l[3] / len};
-        mm_sta_line(res, "link", l[0], l[1], l[0] - 0.12 * size * e[0], l[1] - 0.12 * size * e[1], "ground", 0, 0);
-        if (R[k] != 0)
-            mm_sta_force(res, "reaction", l[0], l[1], R[k] * e[0], R[k] * e[1], sc, 1);
-        rc = mm_sta_label(res, l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], "R%d", k + 1);
-    }
-    return rc;
-}
-
-int mm_sta_links3(mm_result *res, int n, const double *links, const double *R, double size, double sc)
-{
-    int rc = MM_OK;
-    for (int k = 0; k < n; k++) {
-        const double *l = links + 6 * k;
-        double len = mm_sta_norm(l + 3), e[3] = {l[3] / len, l[4] / len, l[5] / len}, t[4], f[3];
-        mm_sta_project(l[0], l[1], l[2], &t[0], &t[1]);
-        mm_sta_project(l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], l[2] - 0.15 * size * e[2], &t[2], &t[3]);
-        mm_sta_path(res, "link", 2, t, "ground");
-        for (int c = 0; c < 3; c++)
-            f[c] = R[k] * e[c];
-        if (R[k] != 0)
-            mm_sta_arrow3(res, "reaction", l, f, sc, 1, "N", NULL);
-        rc = mm_sta_label(res, t[2], t[3], "R%d", k + 1);
-    }
-    return rc;
-}
-
-int mm_sta_loads2(mm_result *res, int n, const double *loads, double sc)
-{
-    int rc = MM_OK;
-    for (int i = 0; i < n; i++) {
-        const double *p = loads + 4 * i;
-        rc = mm_sta_force(res, "load", p[0], p[1], p[2], p[3], sc, 1);
-    }
-    return rc;
-}
-
-int mm_sta_polygon3(mm_result *res, const char *name, int n, const double *xyz, const char *style)
-{
-    double *xy = mm_res_alloc(res, 2 * (size_t)n * sizeof *xy);
-    if (!xy)
-        return MM_ENOMEM;
-    for (int i = 0; i < n; i++)
-        mm_sta_project(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], &xy[2 * i], &xy[2 * i + 1]);
-    return mm_sta_polygon(res, name, n, xy, style);
-}
-
-int mm_sta_rows(const mm_value *v, const char *param, const char *what, const char *row, int cols, mm_error *err)
-{
-    if (v->rows && v->cols != cols)
-        return mm_error_set(err, MM_ERANGE, param, "each %s is one row %s; got %d numbers", what, row, v->cols);
-    return MM_OK;
-}
-
-int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, const char *fmt, ...)
-{
-    char buf[400];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(buf, sizeof buf, fmt, ap);
-    va_end(ap);
-    return mm_res_check_abs(res, buf, value, ref, tol);
-}
-
-/* (u, v) in the support's frame (v up from the ground) to the drawing */
-static void turn(double x, double y, double angle, double u, double v, double *px, double *py)
-{
-    double c = cos(angle), s = sin(angle);
-    *px = x + c * u - s * v;
-    *py = y + s * u + c * v;
-}
-
-static int ground(mm_result *res, const char *name, double x, double y, double size, double angle, double depth)
-{
-    double xy[4];
-    turn(x, y, angle, -0.8 * size, -depth, &xy[0], &xy[1]);
-    turn(x, y, angle, 0.8 * size, -depth, &xy[2], &xy[3]);
-    return mm_sta_path(res, name, 2, xy, "ground");
-}
-
-int mm_sta_pin(mm_result *res, const char *name, double x, double y, double size, double angle)
-{
-    double tri[6];
-    turn(x, y, angle, 0, 0, &tri[0], &tri[1]);
-    turn(x, y, angle, -0.5 * size, -0.8 * size, &tri[2], &tri[3]);
-    turn(x, y, angle, 0.5 * size, -0.8 * size, &tri[4], &tri[5]);
-    int rc = mm_sta_polygon(res, name, 3, tri, "ground");
-    return rc ? rc : ground(res, "ground", x, y, size, angle, 0.8 * size);
-}
-
-int mm_sta_roller(mm_result *res, const char *name, double x, double y, double size, double angle)
-{
-    double tri[6], c[2];
-    turn(x, y, angle, 0, 0, &tri[0], &tri[1]);
-    turn(x, y, angle, -0.5 * size, -0.6 * size, &tri[2], &tri[3]);
-    turn(x, y, angle, 0.5 * size, -0.6 * size, &tri[4], &tri[5]);
-    int rc = mm_sta_polygon(res, name, 3, tri, "ground");
-    for (int k = -1; k <= 1 && !rc; k += 2) {
-        turn(x, y, angle, 0.25 * k * size, -0.7 * size, &c[0], &c[1]);
-        rc = mm_sta_circle(res, "wheel", c[0], c[1], 0.1 * size, "ground");
-    }
-    return rc ? rc : ground(res, "ground", x, y, size, angle, 0.8 * size);
-}
-
-int mm_sta_clamp(mm_result *res, const char *name, double x, double y, double size)
-{
-    int rc = mm_sta_line(res, name, x, y - size, x, y + size, "ground", 0, 0);
-    for (int k = 0; k < 5 && !rc; k++) {
-        double yk = y - size + 0.5 * size * k;
-        rc = mm_sta_line(res, "hatch", x, yk, x - 0.35 * size, yk + 0.35 * size, "ground", 0, 0);
-    }
-    return rc;
-}
-
-int mm_sta_couple(mm_result *res, const char *name, double x, double y, double r, double C)
-{
-    enum { N = 19 };
-    double xy[2 * N], dir = C >= 0 ? 1 : -1;
-    for (int k = 0; k < N; k++) {
-        double t = -0.75 * M_PI + dir * 1.5 * M_PI * k / (N - 1);
-        xy[2 * k] = x + r * cos(t), xy[2 * k + 1] = y + r * sin(t);
-    }
-    mm_shape *s = shape(res, name, MM_SHAPE_LINE, N);
-    double *v = s ? mm_shape_values(res, s) : NULL;
-    if (!v)
-        return MM_ENOMEM;
-    for (int k = 0; k < N; k++)
-        s->x[k] = xy[2 * k], s->y[k] = xy[2 * k + 1];
-    v[0] = C;
-    /* the head: a short arrow along the arc's last step */
-    mm_shape *h = shape(res, "couple head", MM_SHAPE_ARROW, 2);
-    double *hv = h ? mm_shape_values(res, h) : NULL;
-    if (!hv)
-        return MM_ENOMEM;
-    h->unit = "N m";
-    h->scale = 0;
-    hv[0] = fabs(C);
-    h->x[0] = xy[2 * (N - 2)], h->y[0] = xy[2 * (N - 2) + 1];
-    h->x[1] = xy[2 * (N - 1)], h->y[1] = xy[2 * (N - 1) + 1];
-    return MM_OK;
-}
-
-void mm_sta_project(double x, double y, double z, double *u, double *v)
-{
-    /* cabinet projection: x drawn at 210 degrees, half length */
-    *u = y - 0.5 * x * cos(M_PI / 6);
-    *v = z - 0.5 * x * sin(M_PI / 6);
-}
-
-int mm_sta_line3(mm_result *res, const char *name, const double *a, const double *b, const char *style)
-{
-    double xy[4];
-    mm_sta_project(a[0], a[1], a[2], &xy[0], &xy[1]);
-    mm_sta_project(b[0], b[1], b[2], &xy[2], &xy[3]);
-    return mm_sta_path(res, name, 2, xy, style);
-}
-
-int mm_sta_arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale, int head,
-                  const char *unit, const char *style)
-{
-    double u0, v0, u1, v1;
-    if (head) {
-        mm_sta_project(p[0] - scale * v[0], p[1] - scale * v[1], p[2] - scale * v[2], &u0, &v0);
-        mm_sta_project(p[0], p[1], p[2], &u1, &v1);
-    } else {
-        mm_sta_project(p[0], p[1], p[2], &u0, &v0);
-        mm_sta_project(p[0] + scale * v[0], p[1] + scale * v[1], p[2] + scale * v[2], &u1, &v1);
-    }
-    mm_shape *s = mm_anim_shape(res, name, MM_SHAPE_ARROW, 1, 2);
-    double *val = s ? mm_shape_values(res, s) : NULL;
-    if (!val)
-        return MM_ENOMEM;
-    s->x[0] = u0, s->y[0] = v0, s->x[1] = u1, s->y[1] = v1;
-    s->unit = unit, s->scale = scale, s->style = style;
-    val[0] = mm_sta_norm(v);
-    return MM_OK;
-}
+/* ---- vectors ------------------------------------------------------------------------ */
 
 void mm_sta_cross(const double *a, const double *b, double *c)
 {
@@ -769,20 +795,4 @@ double mm_sta_dot(const double *a, const double *b)
 double mm_sta_norm(const double *a)
 {
     return sqrt(mm_sta_dot(a, a));
-}
-
-double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr)
-{
-    double Rmax = 0;
-    mm_series *rp = mm_res_series(res, out_plot, n);
-    for (int k = 0; k < n; k++) {
-        double shown = mm_sta_shown(R[k], rerr);
-        mm_scalar *s = mm_res_scalar_i(res, out, k + 1, shown);
-        if (s)
-            s->error = rerr, s->error_kind = MM_ERR_ESTIMATE;
-        if (rp)
-            rp->x[k] = k + 1, rp->y[k] = shown;
-        Rmax = fmax(Rmax, fabs(R[k]));
-    }
-    return Rmax;
 }

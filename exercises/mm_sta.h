@@ -1,6 +1,10 @@
-/* mm_sta.h — drawing free-body diagrams for the statics exercises (chapter
- * 3): one-frame animations (mm_exercise.h) of bodies, members, supports,
- * forces and couples, with the conventions every statics answer shares:
+/* mm_sta.h — the statics kit (chapter 3): drawing free-body diagrams, the
+ * standard figures of the chapter's exercises, and the idioms their answers
+ * and checks share (the numerics they use live in solvers/).
+ *
+ * The drawings are one-frame animations (mm_exercise.h) of bodies, members,
+ * supports, forces and couples, with the conventions every statics answer
+ * shares:
  *
  *   - forces are arrows (kind "arrow") in metres per newton `scale`, with
  *     the force's magnitude as `value` and "N" as unit; an applied load
@@ -11,8 +15,8 @@
  *   - supports and ground are styled "ground";
  *   - couples are an arc (kind "line", value in N m) with an arrow head.
  *
- * Every function adds shapes to res's animation, which the caller started
- * with mm_sta_fbd(); each returns MM_OK or MM_ENOMEM.  A failure is
+ * Every drawing function adds shapes to res's animation, which the caller
+ * started with mm_sta_fbd(); each returns MM_OK or MM_ENOMEM.  A failure is
  * recorded in res (sticky: mm_result_status, and the server refuses the
  * answer), and every later call is safe, so a drawing is a plain list of
  * calls whose returns need no checking.  Texts are copied into the arena.
@@ -25,6 +29,8 @@
 #include "mm_exercise.h"
 #include "mm_section.h"
 #include "mm_truss.h"
+
+/* ---- drawing: the free-body diagram and its parts ----------------------------------- */
 
 /* Start a one-frame animation (the free-body diagram); t = 0. */
 int mm_sta_fbd(mm_result *res);
@@ -65,6 +71,12 @@ int mm_sta_label(mm_result *res, double x, double y, const char *fmt, ...)
 #endif
     ;
 
+/* An arrow from (x0, y0) to (x1, y1) [m] for a quantity that is not a
+ * force in N: a pressure drawn at `scale` m/Pa, a weight per unit areal
+ * weight...; value its size in unit. */
+int mm_sta_arrow(mm_result *res, const char *name, double x0, double y0, double x1, double y1, const char *unit,
+                 double scale, double value);
+
 /* Supports, `size` [m] across, under the point (x, y) with the ground
  * turned by angle [rad] (0: ground below, the support pushes up):
  * a pin (a triangle on a ground line), a roller (a triangle on two wheels
@@ -76,6 +88,8 @@ int mm_sta_clamp(mm_result *res, const char *name, double x, double y, double si
 /* A couple C [N m] (counter-clockwise positive) drawn round (x, y) with
  * radius r: a 3/4 arc whose arrow head shows the sense. */
 int mm_sta_couple(mm_result *res, const char *name, double x, double y, double r, double C);
+
+/* ---- drawing in space (an oblique projection) --------------------------------------- */
 
 /* Oblique projection of a point in space for 3-D diagrams: x toward the
  * viewer and left, y right, z up, into the drawing's (u, v). */
@@ -89,18 +103,38 @@ int mm_sta_line3(mm_result *res, const char *name, const double *a, const double
 int mm_sta_arrow3(mm_result *res, const char *name, const double *p, const double *v, double scale, int head,
                   const char *unit, const char *style);
 
-/* Support reactions or member forces R[0..n-1] with the error estimate
- * rerr (cond x eps of the loads): the scalars out_1..out_n, a value within
- * rerr of zero printed as 0, and the series out_plot (x = 1..n) of the
- * same.  R itself is left as it is.  Returns the largest |R[k]| (the series
- * lost to memory is recorded in res). */
-double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr);
+/* A text at the point p in space (mm_sta_project). */
+int mm_sta_label3(mm_result *res, const double *p, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* The axes x, y, z drawn from O, len long, each with its name at its tip. */
+int mm_sta_axes3(mm_result *res, const double *O, double len);
+
+/* A closed body of n vertices in space (rows x, y, z), projected. */
+int mm_sta_polygon3(mm_result *res, const char *name, int n, const double *xyz, const char *style);
+
+/* ---- answers and checks: the idioms of the chapter ---------------------------------- */
 
 /* A matrix parameter v (named param) must have rows of `cols` numbers (an
  * empty one passes: the server lets only a matrix whose default is empty
  * be empty): MM_OK, or MM_ERANGE with "each <what> is one row <row>; got
  * <n> numbers". */
 int mm_sta_rows(const mm_value *v, const char *param, const char *what, const char *row, int cols, mm_error *err);
+
+/* A force within its rounding error err of zero is zero (a zero-force
+ * member, a reaction the loads do not need): v, or 0 when |v| <= err, so
+ * that the answer prints 0, not the rounding noise. */
+double mm_sta_shown(double v, double err);
+
+/* Support reactions or member forces R[0..n-1] with the error estimate
+ * rerr (cond x eps of the loads): the scalars out_1..out_n, a value within
+ * rerr of zero printed as 0, and the series out_plot (x = 1..n) of the
+ * same.  R itself is left as it is.  Returns the largest |R[k]| (the series
+ * lost to memory is recorded in res). */
+double mm_sta_reactions(mm_result *res, int out, int out_plot, int n, const double *R, double rerr);
 
 /* A check against ref within the absolute tolerance tol (mm_res_check_abs)
  * whose name is printf-formatted, for names that say which member, link or
@@ -116,21 +150,43 @@ int mm_sta_check_absf(mm_result *res, double value, double ref, double tol, cons
  * the first (0 when none is a number). */
 int mm_sta_worst(int n, const double *a, const double *b, int last);
 
-/* An arrow from (x0, y0) to (x1, y1) [m] for a quantity that is not a
- * force in N: a pressure drawn at `scale` m/Pa, a weight per unit areal
- * weight...; value its size in unit. */
-int mm_sta_arrow(mm_result *res, const char *name, double x0, double y0, double x1, double y1, const char *unit,
-                 double scale, double value);
+/* Why mm_equil_solve found the links of a body singular (MM_ESINGULAR with
+ * the result r, the free motion mech and the self-stress self it returned),
+ * in mechanics words: the motion the n links allow (in the plane: the
+ * point the body can turn about, or the direction it can slide in, from
+ * mech = (vx, vy of the origin, turn w); in space: the axis it can turn
+ * about, or the direction it can slide in, from mech = (v of the origin,
+ * angular velocity w)), else the link that is redundant (the largest
+ * |self|).  Fills err (param "links"); returns MM_ESINGULAR. */
+int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err);
+int mm_sta_improper3(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err);
 
-/* A text at the point p in space (mm_sta_project). */
-int mm_sta_label3(mm_result *res, const double *p, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
+/* Equilibria marked on a plot of the potential: the n points (x[i], y[i])
+ * of kind k (kind[i] = k, 0 <= k < nk) as the series outs[k], made in the
+ * order of k and only for a kind that has points.  Returns MM_OK or
+ * MM_ENOMEM. */
+int mm_sta_equilibria(mm_result *res, int n, const double *x, const double *y, const int *kind, int nk,
+                      const int *outs);
 
-/* The axes x, y, z drawn from O, len long, each with its name at its tip. */
-int mm_sta_axes3(mm_result *res, const double *O, double len);
+/* The truss's answer as tables: the members (number, force shown to
+ * ferr, joints, length, state: tension or compression beyond ftol, else
+ * zero-force) into the table out_members and the series out_plot (force
+ * against member number), the supports' reactions into the table
+ * out_react.  Returns MM_OK or MM_ENOMEM. */
+int mm_sta_truss_tables(mm_result *res, const mm_truss *t, const double *F, const double *R, double ferr,
+                        double ftol, int out_members, int out_plot, int out_react);
+
+/* ---- the standard figures of the exercises ------------------------------------------ */
+
+/* n support links (rows x, y, dx, dy in the plane; x, y, z, dx, dy, dz in
+ * space) of a body of the given size: each link a short stroke on the side
+ * its reaction R[k] (along the direction) pushes from, the reaction drawn
+ * at sc m/N unless it is 0, and its label Rk. */
+int mm_sta_links2(mm_result *res, int n, const double *links, const double *R, double size, double sc);
+int mm_sta_links3(mm_result *res, int n, const double *links, const double *R, double size, double sc);
+
+/* n loads (rows x, y, Fx, Fy) pushing on a body, at sc m/N. */
+int mm_sta_loads2(mm_result *res, int n, const double *loads, double sc);
 
 /* A three-hinged frame of span `size` taken apart at its crown hinge C:
  * the left body from A to C, the right one from C to B moved right by a
@@ -155,13 +211,6 @@ int mm_sta_cables3(mm_result *res, int n, const double *ring, const double *anch
  * tight-side T2 along the tangents where it leaves, and the torque on the
  * drum as a couple. */
 int mm_sta_belt(mm_result *res, double T1, double T2, double theta, double r, double torque);
-
-/* Equilibria marked on a plot of the potential: the n points (x[i], y[i])
- * of kind k (kind[i] = k, 0 <= k < nk) as the series outs[k], made in the
- * order of k and only for a kind that has points.  Returns MM_OK or
- * MM_ENOMEM. */
-int mm_sta_equilibria(mm_result *res, int n, const double *x, const double *y, const int *kind, int nk,
-                      const int *outs);
 
 /* A slider-crank held by a torque: pivot O at the origin, the crank r at
  * angle th to the pin A, the rod l (axial force Frod, zero within ftol) to
@@ -219,44 +268,7 @@ int mm_sta_beam(mm_result *res, const mm_beam_problem *p, const mm_beam *b, doub
  * the reactions is 0.2 of the truss's extent. */
 int mm_sta_truss(mm_result *res, const mm_truss *t, const double *F, const double *R, double pmax, double ftol);
 
-/* A force within its rounding error err of zero is zero (a zero-force
- * member, a reaction the loads do not need): v, or 0 when |v| <= err, so
- * that the answer prints 0, not the rounding noise. */
-double mm_sta_shown(double v, double err);
-
-/* The truss's answer as tables: the members (number, force shown to
- * ferr, joints, length, state: tension or compression beyond ftol, else
- * zero-force) into the table out_members and the series out_plot (force
- * against member number), the supports' reactions into the table
- * out_react.  Returns MM_OK or MM_ENOMEM. */
-int mm_sta_truss_tables(mm_result *res, const mm_truss *t, const double *F, const double *R, double ferr,
-                        double ftol, int out_members, int out_plot, int out_react);
-
-/* ---- bodies on support links (sta-plane-body, sta-space-body) ---------------------- */
-
-/* Why mm_equil_solve found the links of a body singular (MM_ESINGULAR with
- * the result r, the free motion mech and the self-stress self it returned),
- * in mechanics words: the motion the n links allow (in the plane: the
- * point the body can turn about, or the direction it can slide in, from
- * mech = (vx, vy of the origin, turn w); in space: the axis it can turn
- * about, or the direction it can slide in, from mech = (v of the origin,
- * angular velocity w)), else the link that is redundant (the largest
- * |self|).  Fills err (param "links"); returns MM_ESINGULAR. */
-int mm_sta_improper2(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err);
-int mm_sta_improper3(const mm_equil_result *r, int n, const double *mech, const double *self, mm_error *err);
-
-/* n support links (rows x, y, dx, dy in the plane; x, y, z, dx, dy, dz in
- * space) of a body of the given size: each link a short stroke on the side
- * its reaction R[k] (along the direction) pushes from, the reaction drawn
- * at sc m/N unless it is 0, and its label Rk. */
-int mm_sta_links2(mm_result *res, int n, const double *links, const double *R, double size, double sc);
-int mm_sta_links3(mm_result *res, int n, const double *links, const double *R, double size, double sc);
-
-/* n loads (rows x, y, Fx, Fy) pushing on a body, at sc m/N. */
-int mm_sta_loads2(mm_result *res, int n, const double *loads, double sc);
-
-/* A closed body of n vertices in space (rows x, y, z), projected. */
-int mm_sta_polygon3(mm_result *res, const char *name, int n, const double *xyz, const char *style);
+/* ---- references and vectors --------------------------------------------------------- */
 
 /* The textbooks the chapter cites, to be followed by the section:
  * MM_STA_HIBBELER "section 8.6". */
