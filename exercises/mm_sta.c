@@ -1,4 +1,4 @@
-/* mm_sta.c — free-body diagrams for chapter 3 (see mm_sta.h). */
+/* mm_sta.c — the statics kit for chapter 3: drawings, standard figures, answer and check idioms (see mm_sta.h). */
 #include "mm_sta.h"
 
 #include <math.h>

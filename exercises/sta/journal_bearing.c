@@ -19,7 +19,6 @@
 #include <float.h>
 #include <math.h>
 
-#include "mm_exhelp.h"
 #include "mm_geom.h"
 #include "mm_sta.h"
 

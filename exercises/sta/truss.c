@@ -18,8 +18,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
-#include <string.h>
 
 #include "mm_exhelp.h"
 #include "mm_sta.h"
