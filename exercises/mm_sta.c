@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 
 /* ---- drawing: the free-body diagram and its parts ----------------------------------- */
 
@@ -569,8 +570,9 @@ int mm_sta_slider_crank(mm_result *res, double r, double l, double e, double th,
         mm_sta_force(res, "P", xb + bw, yb, -P, 0, sc, 1);
     if (M != 0)
         mm_sta_couple(res, "M", 0, 0, 0.25 * r, M);
-    return mm_sta_line(res, "virtual displacement dx_B", xb, yb + bw, xb + 0.3 * L * (dx >= 0 ? 1 : -1), yb + bw,
-                       "highlight", 1, dx);
+    mm_sta_line(res, "virtual displacement dx_B", xb, yb + bw, xb + 0.3 * L * (dx >= 0 ? 1 : -1), yb + bw,
+                "highlight", 1, dx);
+    return mm_sta_label(res, -0.2 * L, 0.5 * L, "M = P dx_B/dtheta = %.4g N m", M);
 }
 
 int mm_sta_reduced3(mm_result *res, int n, const double *forces, const double *O, const double *R, const double *M,
@@ -734,6 +736,20 @@ int mm_sta_beam(mm_result *res, const mm_beam_problem *p, const mm_beam *b, doub
         mm_sta_couple(res, "couple", p->moment[2 * i], 0, 2 * h, p->moment[2 * i + 1]);
     mm_sta_label(res, xM, -0.2 * L, "M = %.4g N m at x = %.4g m", Mext, xM);
     return mm_sta_label(res, 0, 0.3 * L, "V: sum of forces left of x, up +;  M: sagging +");
+}
+
+int mm_sta_beam_diagrams(mm_result *res, const mm_beam *b, int n, int with_y, int out_V, int out_M, int out_y)
+{
+    int total = mm_beam_sample_size(b, n);
+    mm_series *V = mm_res_series(res, out_V, total), *M = mm_res_series(res, out_M, total);
+    mm_series *Y = with_y ? mm_res_series(res, out_y, total) : NULL;
+    if (!V || !M || (with_y && !Y))
+        return MM_ENOMEM;
+    mm_beam_sample(b, n, V->x, V->y, M->y, Y ? Y->y : NULL);
+    memcpy(M->x, V->x, (size_t)total * sizeof *V->x);
+    if (Y)
+        memcpy(Y->x, V->x, (size_t)total * sizeof *V->x);
+    return MM_OK;
 }
 
 int mm_sta_truss(mm_result *res, const mm_truss *t, const double *F, const double *R, double pmax, double ftol)

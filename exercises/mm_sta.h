@@ -216,7 +216,7 @@ int mm_sta_belt(mm_result *res, double T1, double T2, double theta, double r, do
  * angle th to the pin A, the rod l (axial force Frod, zero within ftol) to
  * the slider B = (xb, e) on its guide y = e, the load P on the slider
  * along -x, the torque M on the crank and the virtual displacement
- * dx_B/dtheta = dx drawn beside the slider. */
+ * dx_B/dtheta = dx drawn beside the slider; the label M = P dx_B/dtheta. */
 int mm_sta_slider_crank(mm_result *res, double r, double l, double e, double th, double xb, double Frod,
                         double ftol, double P, double M, double dx);
 
@@ -260,6 +260,11 @@ int mm_sta_rod_spring(mm_result *res, double L, double a, double k, double W, do
  * the couples, and the labels: the extreme moment Mext at xM and the sign
  * conventions. */
 int mm_sta_beam(mm_result *res, const mm_beam_problem *p, const mm_beam *b, double Mext, double xM);
+
+/* The diagrams of b as series of about n points (mm_beam_sample: every
+ * jump by both its one-sided values): V into out_V, M into out_M and, when
+ * with_y, the deflection into out_y.  Returns MM_OK or MM_ENOMEM. */
+int mm_sta_beam_diagrams(mm_result *res, const mm_beam *b, int n, int with_y, int out_V, int out_M, int out_y);
 
 /* A plane truss: each member coloured by its force F[e] (tension,
  * compression, or none within ftol), pins and rollers at the supports with

@@ -17,7 +17,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
 #include "mm_beam.h"
 #include "mm_exhelp.h"
@@ -98,10 +97,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double Vext, xV, Mext, xM;
     mm_beam_extreme_V(b, &Vext, &xV);
     mm_beam_extreme_M(b, &Mext, &xM);
-    mm_res_scalar(res, O_VEXT, Vext);
-    mm_res_scalar(res, O_XV, xV);
-    mm_res_scalar(res, O_MEXT, Mext);
-    mm_res_scalar(res, O_XM, xM);
+    const double ext[] = {Vext, xV, Mext, xM};                      /* O_VEXT ... O_XM */
+    for (int k = 0; k < 4; k++)
+        mm_res_scalar(res, O_VEXT + k, ext[k]);
     double rx[2], ry[2], rcpl[2];
     int nr = mm_beam_reactions(b, rx, ry, rcpl);
     mm_table *rt = mm_res_table(res, O_REACT, nr);          /* NULL: the failure is kept in res */
@@ -152,18 +150,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_check_residual(res, "y at the supports [m]", worst, yscale, 64.0 * nb);
     }
     /* the diagrams, each jump by both its one-sided values */
-    int total = mm_beam_sample_size(b, n);
     mm_series *vp = mm_res_series(res, O_VPT, 1), *mp = mm_res_series(res, O_MPT, 1);
-    mm_series *V = mm_res_series(res, O_V, total), *M = mm_res_series(res, O_M, total);
-    mm_series *Y = p.EI > 0 ? mm_res_series(res, O_Y, total) : NULL;
-    if (!V || !M || (p.EI > 0 && !Y) || !vp || !mp) {
+    if (!vp || !mp || mm_sta_beam_diagrams(res, b, n, p.EI > 0, O_V, O_M, O_Y) != MM_OK) {
         mm_beam_free(b);
         return MM_ENOMEM;
     }
-    mm_beam_sample(b, n, V->x, V->y, M->y, Y ? Y->y : NULL);
-    memcpy(M->x, V->x, (size_t)total * sizeof *V->x);
-    if (Y)
-        memcpy(Y->x, V->x, (size_t)total * sizeof *V->x);
     vp->x[0] = xV, vp->y[0] = Vext;
     mp->x[0] = xM, mp->y[0] = Mext;
     int kind = (int)in[P_SUPPORTS].x;

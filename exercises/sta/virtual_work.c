@@ -160,7 +160,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* the drawing */
     mm_sta_fbd(res);
     mm_sta_slider_crank(res, m.r, m.l, m.e, th, xb, Frod, ferr, m.P, m.M, dx);
-    mm_sta_label(res, -0.2 * (m.r + m.l), 0.5 * (m.r + m.l), "M = P dx_B/dtheta = %.4g N m", m.M);
     return rc;
 }
 
