@@ -505,3 +505,91 @@ int mm_beam_unit_load(const mm_beam *b, double x0, double *y, double *scale, mm_
     mm_beam_free(ub);
     return MM_OK;
 }
+
+/* ---- statics (chapter 3): the diagrams sampled, and the checks' numerics ------ */
+
+static int sample_count(const mm_beam *b, int n, int k)
+{
+    int c = 2 + (int)((n - 2 * (b->nb - 1)) * (b->xs[k + 1] - b->xs[k]) / b->L);
+    return c < 2 ? 2 : c;
+}
+
+int mm_beam_sample_size(const mm_beam *b, int n)
+{
+    int total = 0;
+    for (int k = 0; k + 1 < b->nb; k++)
+        total += sample_count(b, n, k);
+    return total;
+}
+
+void mm_beam_sample(const mm_beam *b, int n, double *x, double *V, double *M, double *y)
+{
+    int i = 0;
+    for (int k = 0; k + 1 < b->nb; k++) {
+        double h = b->xs[k + 1] - b->xs[k];
+        int cnt = sample_count(b, n, k);
+        for (int j = 0; j < cnt; j++, i++) {
+            double s = j == cnt - 1 ? h : h * j / (cnt - 1);
+            mm_beam_value v;
+            mm_beam_eval_segment(b, k, s, &v);
+            x[i] = j == cnt - 1 ? b->xs[k + 1] : b->xs[k] + s;
+            V[i] = v.V, M[i] = v.M;
+            if (y)
+                y[i] = v.y;
+        }
+    }
+}
+
+void mm_beam_residual(const mm_beam_problem *p, const mm_beam *b, double *Fy, double *Mo, double *sF, double *sM)
+{
+    double fy = 0, mo = 0, f = 0, m = 0;
+    for (int k = 0; k < b->nr; k++) {
+        fy += b->ry[k], mo += b->ry[k] * b->rx[k] + b->rc[k];
+        f += fabs(b->ry[k]), m += fabs(b->ry[k] * b->rx[k]) + fabs(b->rc[k]);
+    }
+    for (int i = 0; i < p->n_point; i++) {
+        fy += p->point[2 * i + 1], mo += p->point[2 * i + 1] * p->point[2 * i];
+        f += fabs(p->point[2 * i + 1]), m += fabs(p->point[2 * i + 1] * p->point[2 * i]);
+    }
+    for (int i = 0; i < p->n_dist; i++) {          /* each piece by the trapezoid's centroid */
+        const double *d = p->dist + 4 * i;
+        double l = d[1] - d[0], W1 = d[2] * l / 2, W2 = d[3] * l / 2;
+        fy += W1 + W2, mo += W1 * (d[0] + l / 3) + W2 * (d[0] + 2 * l / 3);
+        f += fabs(W1) + fabs(W2), m += fabs(W1 * (d[0] + l / 3)) + fabs(W2 * (d[0] + 2 * l / 3));
+    }
+    for (int i = 0; i < p->n_moment; i++)
+        mo += p->moment[2 * i + 1], m += fabs(p->moment[2 * i + 1]);
+    *Fy = fy, *Mo = mo, *sF = f, *sM = m;
+}
+
+void mm_beam_derivative_check(const mm_beam *b, double *wi, double *wd)
+{
+    static const double gx[3] = {-0.77459666924148337704, 0, 0.77459666924148337704};
+    static const double gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+    *wi = *wd = 0;
+    for (int k = 0; k + 1 < b->nb; k++) {
+        double hk = b->xs[k + 1] - b->xs[k], I = 0, Iq = 0;
+        mm_beam_value v0, v1, vg;
+        mm_beam_eval_segment(b, k, 0, &v0);
+        mm_beam_eval_segment(b, k, hk, &v1);
+        double q1 = (v1.q - v0.q) / hk;
+        double Vs = fabs(v0.V) + fabs(v0.q) * hk + fabs(q1) * hk * hk / 2 + 1e-300;
+        double Ms = fabs(v0.M) + fabs(v0.V) * hk + fabs(v0.q) * hk * hk / 2 + fabs(q1) * hk * hk * hk / 6 + 1e-300;
+        for (int g = 0; g < 3; g++) {
+            mm_beam_eval_segment(b, k, 0.5 * hk * (1 + gx[g]), &vg);
+            I += 0.5 * hk * gw[g] * vg.V;
+            Iq += 0.5 * hk * gw[g] * vg.q;
+        }
+        *wi = fmax(*wi, fmax(fabs(v1.M - v0.M - I) / (16 * DBL_EPSILON * Ms),
+                             fabs(v1.V - v0.V - Iq) / (16 * DBL_EPSILON * Vs)));
+        double d = 1e-3 * hk;
+        mm_beam_value m, lo, hi;
+        mm_beam_eval_segment(b, k, 0.5 * hk, &m);
+        mm_beam_eval_segment(b, k, 0.5 * hk - d, &lo);
+        mm_beam_eval_segment(b, k, 0.5 * hk + d, &hi);
+        /* the difference of a cubic is off by exactly d^2 M'''/6 = d^2 q1/6 */
+        double tol = 16 * DBL_EPSILON * Ms / d, tolV = 16 * DBL_EPSILON * Vs / d;
+        *wd = fmax(*wd, fmax(fabs(0.5 * (hi.M - lo.M) / d - d * d * q1 / 6 - m.V) / tol,
+                             fabs(0.5 * (hi.V - lo.V) / d - m.q) / tolV));
+    }
+}

@@ -118,4 +118,33 @@ void mm_beam_extreme_y(const mm_beam *b, double *value, double *x);
  * MM_ENOMEM. */
 int mm_beam_unit_load(const mm_beam *b, double x0, double *y, double *scale, mm_error *err);
 
+/* ---- statics (chapter 3): the diagrams sampled, and the checks' numerics ------ */
+
+/* The diagrams sampled for a plot of about n points: each segment gets
+ * points in proportion to its length, at least its two ends, so that
+ * every jump shows as two points at one x (the values from either side).
+ * mm_beam_sample_size gives the number of points (max(n, 2 segments) at
+ * most); mm_beam_sample writes them: x ascending, V, M and, when y is not
+ * NULL, the deflection.  Cannot fail. */
+int mm_beam_sample_size(const mm_beam *b, int n);
+void mm_beam_sample(const mm_beam *b, int n, double *x, double *V, double *M, double *y);
+
+/* The whole beam's two equilibrium equations put back, with the reactions
+ * found: *Fy the sum of the vertical forces (loads, each distributed load
+ * as the two triangles of its trapezoid, and reactions), *Mo the sum of
+ * their moments about x = 0 and of the couples, *sF and *sM the sums of
+ * the magnitudes of those terms (what their rounding is measured against).
+ * Cannot fail. */
+void mm_beam_residual(const mm_beam_problem *p, const mm_beam *b, double *Fy, double *Mo, double *sF, double *sM);
+
+/* dV/dx = q and dM/dx = V on every segment, two ways, each as the worst
+ * ratio of a difference to its rounding tolerance (16 eps of the
+ * segment's terms): *wi in integral form, V(end) - V(start) against the
+ * integral of q and M likewise against that of V by 3-point Gauss-Legendre
+ * (exact: V is quadratic); *wd by central differences of step 1e-3 of the
+ * segment at its middle, less the truncation d^2 q'/6 of M's (none for V's,
+ * a quadratic).  Both are at most 1 for diagrams that are consistent.
+ * Cannot fail. */
+void mm_beam_derivative_check(const mm_beam *b, double *wi, double *wd);
+
 #endif

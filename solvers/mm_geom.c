@@ -463,4 +463,11 @@ double mm_geom_trochoid_arch(double R, double b, int split)
         }
     }
     return 2 * sum;
+
+/* ---- statics (chapter 3) ------------------------------------------------------ */
+
+double mm_geom_angle3(const double a[3], const double b[3])
+{
+    mm_v3 u = {a[0], a[1], a[2]}, v = {b[0], b[1], b[2]};
+    return atan2(mm_v3_norm(mm_v3_cross(u, v)), mm_v3_dot(u, v));
 }

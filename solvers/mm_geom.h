@@ -254,4 +254,12 @@ double mm_geom_m3_maxdiff(const double A[9], const double B[9]);
  * fail. */
 double mm_geom_trochoid_arch(double R, double b, int split);
 
+/* ---- statics (chapter 3) ------------------------------------------------------ */
+
+/* The angle in [0, pi] between the vectors a and b (three doubles each, not
+ * both zero) as atan2(|a x b|, a . b): accurate near 0 and pi, where acos
+ * of the cosine loses half the digits (while |a x b|^2 stays a normal
+ * double: for unit vectors, angles above 1e-154).  Cannot fail. */
+double mm_geom_angle3(const double a[3], const double b[3]);
+
 #endif

@@ -97,4 +97,17 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
  * panels of their own). */
 extern const double mm_quad_gl5_node[5], mm_quad_gl5_weight[5];
 
+/* ---- statics (chapter 3): a fixed rule, its nodes and weights ---------------- */
+
+/* Composite 5-point Gauss-Legendre on m >= 1 equal pieces of [a, b] (piece
+ * k from a + (b - a) k / m to a + (b - a) (k + 1) / m) as 5 m nodes x and
+ * weights w, piece by piece, each piece's nodes in the order mid, then
+ * +-0.538, +-0.906 of its half-width out: sum w[i] f(x[i]) is the integral
+ * of f, exact for a polynomial of degree 9 or less.  For a sum written out
+ * by the caller (several integrands on the same nodes, each weighted its
+ * own way), where mm_quad_gl would call one f again and again.  The
+ * constants are to 16 digits (the two outer weights 1 ulp above their
+ * correctly rounded values, 2e-16 relative: far below any use here). */
+void mm_quad_gl5_nodes(double a, double b, int m, double *x, double *w);
+
 #endif

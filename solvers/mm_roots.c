@@ -293,3 +293,19 @@ double mm_roots_band(mm_roots_fn_err f, void *params, double x, double w, double
     }
     return worst;
 }
+
+/* ---- statics (chapter 3): every root on an interval, in one call ----------------- */
+
+int mm_roots_scan(mm_roots_fn f, void *params, double a, double b, int n, double tol, int max_iter,
+                  mm_roots_root *roots, mm_roots_result *res, mm_error *err)
+{
+    mm_roots_options opt;
+    mm_roots_options_init(&opt);
+    opt.n = n;
+    opt.tol = tol;
+    if (max_iter > 0)
+        opt.max_iter = max_iter;
+    *res = (mm_roots_result){.roots = roots, .cap = n + 1};
+    mm_roots_problem pb = {.f = f, .params = params, .a = a, .b = b};
+    return mm_roots_solve(&pb, &opt, res, err);
+}

@@ -143,4 +143,14 @@ typedef int (*mm_roots_fn_err)(double x, double *fx, double *err, void *params);
  * Cannot fail (a stop or a non-finite value ends that side). */
 double mm_roots_band(mm_roots_fn_err f, void *params, double x, double w, double lo, double hi);
 
+/* ---- statics (chapter 3): every root on an interval, in one call ----------------- */
+
+/* mm_roots_solve on [a, b] in n equal parts at tolerance tol, at most
+ * max_iter Brent iterations a bracket (0: the default of
+ * mm_roots_options_init), the roots into roots[n + 1] (enough for any f):
+ * res is set up here (no poles kept) and filled as by mm_roots_solve.
+ * Returns as mm_roots_solve. */
+int mm_roots_scan(mm_roots_fn f, void *params, double a, double b, int n, double tol, int max_iter,
+                  mm_roots_root *roots, mm_roots_result *res, mm_error *err);
+
 #endif

@@ -282,3 +282,46 @@ int mm_section_inside(int n, const double *xy, double x, double y, double *dist)
         *dist = best;
     return in && best > 0;
 }
+
+/* ---- statics (chapter 3): a polygon with discs added or cut out ------------- */
+
+int mm_section_discs_check(int n, const double *xy, int n_disc, const double *disc, mm_error *err)
+{
+    for (int k = 0; k < n_disc; k++) {
+        const double *c = disc + 3 * k;
+        double d;
+        int in = mm_section_inside(n, xy, c[0], c[1], &d);
+        if (c[2] == 0)
+            return mm_error_set(err, MM_ERANGE, "circles", "disc %d has radius 0", k + 1);
+        if (c[2] < 0 && !(in && d >= -c[2]))
+            return mm_error_set(err, MM_ERANGE, "circles",
+                                "hole %d (radius %g at %g, %g) must lie inside the polygon; it reaches %.3g m "
+                                "past an edge", k + 1, -c[2], c[0], c[1], in ? -c[2] - d : -c[2] + d);
+        if (c[2] > 0 && (in || d < c[2]))
+            return mm_error_set(err, MM_ERANGE, "circles",
+                                "disc %d (radius %g at %g, %g) must lie outside the polygon; composite parts "
+                                "may not overlap (their areas would count twice)", k + 1, c[2], c[0], c[1]);
+        for (int q = 0; q < k; q++) {
+            const double *o = disc + 3 * q;
+            if (hypot(c[0] - o[0], c[1] - o[1]) < fabs(c[2]) + fabs(o[2]))
+                return mm_error_set(err, MM_ERANGE, "circles", "discs %d and %d overlap", q + 1, k + 1);
+        }
+    }
+    return MM_OK;
+}
+
+int mm_section_with_discs(const mm_section_props *poly, int n_disc, const double *disc, mm_section_props *out,
+                          mm_error *err)
+{
+    if (n_disc > MM_SECTION_MAX_DISCS)
+        return mm_error_set(err, MM_ERANGE, "circles", "at most %d discs; got %d", MM_SECTION_MAX_DISCS, n_disc);
+    mm_section_props parts[1 + MM_SECTION_MAX_DISCS];
+    int sign[1 + MM_SECTION_MAX_DISCS];
+    parts[0] = *poly, sign[0] = 1;
+    for (int k = 0; k < n_disc; k++) {
+        const double *d = disc + 3 * k;
+        mm_section_disc(d[0], d[1], fabs(d[2]), &parts[k + 1]);
+        sign[k + 1] = d[2] > 0 ? 1 : -1;
+    }
+    return mm_section_combine(1 + n_disc, parts, sign, out, err);
+}

@@ -91,4 +91,23 @@ void mm_section_principal(mm_section_props *p);
  * be NULL).  Cannot fail. */
 int mm_section_inside(int n, const double *xy, double x, double y, double *dist);
 
+/* ---- statics (chapter 3): a polygon with discs added or cut out ------------- */
+
+#define MM_SECTION_MAX_DISCS 100
+
+/* The n_disc discs (rows x, y, r) of a composite made on a simple polygon
+ * of n vertices: r > 0 a disc added outside the polygon, r < 0 a hole of
+ * radius |r| cut inside it; no two may overlap (their areas would count
+ * twice).  MM_OK, or MM_ERANGE (param "circles") naming the first fault in
+ * row order: a radius 0, a hole that reaches past an edge (and by how
+ * much), a disc that reaches into the polygon, two discs that overlap. */
+int mm_section_discs_check(int n, const double *xy, int n_disc, const double *disc, mm_error *err);
+
+/* The composite of the region poly (a polygon's properties, or any) with
+ * the n_disc <= MM_SECTION_MAX_DISCS discs (rows x, y, r as above) added
+ * or cut out, by mm_section_combine.  Fails as it does (err may be NULL),
+ * or with MM_ERANGE (param "circles") for too many discs. */
+int mm_section_with_discs(const mm_section_props *poly, int n_disc, const double *disc, mm_section_props *out,
+                          mm_error *err);
+
 #endif

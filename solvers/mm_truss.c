@@ -556,3 +556,49 @@ void mm_truss_spread(const mm_truss *t, double *spread)
         spread[j] = worst;
     }
 }
+
+/* ---- statics (chapter 3): the equilibrium put back, for the checks ------------- */
+
+void mm_truss_joint_residual(const mm_truss *t, const double *F, const double *R, double *worst, double *scale,
+                             double *total)
+{
+    double sx[MM_TRUSS_MAX_NODES] = {0}, sy[MM_TRUSS_MAX_NODES] = {0}, ab[MM_TRUSS_MAX_NODES] = {0};
+    for (int e = 0; e < t->n_members; e++) {
+        int a = t->ends[2 * e], b = t->ends[2 * e + 1];
+        double dx = t->xy[2 * b] - t->xy[2 * a], dy = t->xy[2 * b + 1] - t->xy[2 * a + 1], L = hypot(dx, dy);
+        double fx = F[e] * dx / L, fy = F[e] * dy / L;
+        sx[a] += fx, sy[a] += fy, sx[b] -= fx, sy[b] -= fy;
+        ab[a] += fabs(F[e]), ab[b] += fabs(F[e]);
+    }
+    for (int l = 0; l < t->n_loads; l++) {
+        int j = t->load_node[l];
+        sx[j] += t->load_f[2 * l], sy[j] += t->load_f[2 * l + 1];
+        ab[j] += fabs(t->load_f[2 * l]) + fabs(t->load_f[2 * l + 1]);
+    }
+    *worst = *scale = *total = 0;
+    for (int j = 0; j < t->n_nodes; j++) {
+        sx[j] += R[2 * j], sy[j] += R[2 * j + 1];
+        ab[j] += fabs(R[2 * j]) + fabs(R[2 * j + 1]);
+        *worst = fmax(*worst, hypot(sx[j], sy[j]));
+        *scale = fmax(*scale, ab[j]);
+        *total += ab[j];
+    }
+}
+
+void mm_truss_body_residual(const mm_truss *t, const double *R, double *worst, double *scale)
+{
+    double fx = 0, fy = 0, mz = 0, sf = 0, sm = 0, x0 = t->xy[0], y0 = t->xy[1];
+    for (int k = 0; k < t->n_loads + t->n_nodes; k++) {
+        int j = k < t->n_loads ? t->load_node[k] : k - t->n_loads;
+        double px = k < t->n_loads ? t->load_f[2 * k] : R[2 * j];
+        double py = k < t->n_loads ? t->load_f[2 * k + 1] : R[2 * j + 1];
+        double m = (t->xy[2 * j] - x0) * py - (t->xy[2 * j + 1] - y0) * px;
+        fx += px, fy += py, mz += m;
+        sf += fabs(px) + fabs(py), sm += fabs(m);
+    }
+    double arm = 1;
+    for (int j = 0; j < t->n_nodes; j++)
+        arm = fmax(arm, hypot(t->xy[2 * j] - x0, t->xy[2 * j + 1] - y0));
+    *worst = fmax(hypot(fx, fy), fabs(mz) / arm);
+    *scale = fmax(sf, sm / arm);
+}

@@ -109,4 +109,21 @@ int mm_truss_sections(const mm_truss *t, const double *reaction, double *sec_for
  * load.  Joints with fewer than two lines get 0.  Cannot fail. */
 void mm_truss_spread(const mm_truss *t, double *spread);
 
+/* ---- statics (chapter 3): the equilibrium put back, for the checks ------------- */
+
+/* Every joint's sum of forces recomputed from the geometry with the member
+ * forces F[n_members] and reactions R[2 n_nodes] (eq. 1), independent of
+ * how they were found: *worst the largest |sum F| at a joint, *scale the
+ * largest sum of |terms| at a joint, *total the sum of |terms| over all
+ * joints.  Cannot fail. */
+void mm_truss_joint_residual(const mm_truss *t, const double *F, const double *R, double *worst, double *scale,
+                             double *total);
+
+/* The whole truss as one body: sum Fx, sum Fy and sum M about the first
+ * joint of the loads and reactions R[2 n_nodes]; *worst the largest of
+ * |(sum Fx, sum Fy)| and |sum M| / arm, *scale the larger of the sums of
+ * their |terms| (forces, and moments over arm), arm the largest distance
+ * of a joint from the first (at least 1 m).  Cannot fail. */
+void mm_truss_body_residual(const mm_truss *t, const double *R, double *worst, double *scale);
+
 #endif

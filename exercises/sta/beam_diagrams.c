@@ -17,16 +17,13 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
 
 #include "mm_beam.h"
 #include "mm_exhelp.h"
 #include "mm_sta.h"
 
 enum { P_L, P_SUPPORTS, P_A, P_B, P_POINT, P_DIST, P_MOMENTS, P_EI, P_POINTS };
-
 static const char *const support_kinds[] = {"simply-supported", "cantilever", "overhanging", NULL};
-
 static const mm_param params[] = {
     [P_L] = {"L", "length", "m", MM_REAL, 4, 0.01, 100, .help = "the beam runs from x = 0 to x = L"},
     [P_SUPPORTS] = {"supports", "supports", "", MM_CHOICE, 0, 0, 0, NULL, support_kinds,
@@ -50,10 +47,8 @@ static const mm_param params[] = {
 };
 
 enum { O_VEXT, O_XV, O_MEXT, O_XM, O_YMAX, O_XY, O_V, O_M, O_Y, O_VPT, O_MPT, O_REACT, O_ANIM };
-
 static const char *const rcols[] = {"x", "Ry", "C", NULL};
 static const char *const runits[] = {"m", "N", "N m", NULL};
-
 static const mm_output outputs[] = {
     [O_VEXT] = MM_SCALAR("V_extreme", "shear force of largest magnitude", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_XV] = MM_SCALAR("x_V_extreme", "where it occurs", "m", .flags = MM_ANSWER | MM_EXACT),
@@ -72,22 +67,15 @@ static const mm_output outputs[] = {
 
 static int problem(const mm_value *in, mm_beam_problem *p, mm_error *err)
 {
-    if (in[P_POINT].rows && in[P_POINT].cols != 2)
-        return mm_error_set(err, MM_ERANGE, "point_loads", "each point load is one row x,Fy; got %d numbers",
-                            in[P_POINT].cols);
-    if (in[P_DIST].rows && in[P_DIST].cols != 4)
-        return mm_error_set(err, MM_ERANGE, "distributed", "each distributed load is one row x1,x2,q1,q2; got %d "
-                            "numbers", in[P_DIST].cols);
-    if (in[P_MOMENTS].rows && in[P_MOMENTS].cols != 2)
-        return mm_error_set(err, MM_ERANGE, "moments", "each couple is one row x,C; got %d numbers",
-                            in[P_MOMENTS].cols);
-    *p = (mm_beam_problem){.L = in[P_L].x,
+    if (mm_sta_rows(&in[P_POINT], "point_loads", "point load", "x,Fy", 2, err) ||
+        mm_sta_rows(&in[P_DIST], "distributed", "distributed load", "x1,x2,q1,q2", 4, err) ||
+        mm_sta_rows(&in[P_MOMENTS], "moments", "couple", "x,C", 2, err))
+        return MM_ERANGE;
+    *p = (mm_beam_problem){.L = in[P_L].x, .a = in[P_A].x, .b = in[P_B].x,
                            .kind = (int)in[P_SUPPORTS].x == 1 ? MM_BEAM_CANTILEVER : MM_BEAM_TWO_SUPPORTS,
-                           .a = in[P_A].x, .b = in[P_B].x,
                            .n_point = in[P_POINT].rows, .point = in[P_POINT].data,
-                           .n_dist = in[P_DIST].rows, .dist = in[P_DIST].data,
-                           .n_moment = in[P_MOMENTS].rows, .moment = in[P_MOMENTS].data,
-                           .EI = in[P_EI].x};
+                           .n_dist = in[P_DIST].rows, .dist = in[P_DIST].data, .n_moment = in[P_MOMENTS].rows,
+                           .moment = in[P_MOMENTS].data, .EI = in[P_EI].x};
     return mm_beam_check(p, err);
 }
 
@@ -96,93 +84,6 @@ static int check(const mm_value *in, mm_error *err)
     mm_beam_problem p;
     return problem(in, &p, err);
 }
-
-/* ---- the diagrams, sampled per segment with both sides of every jump --------------- */
-
-static int sample(const mm_beam *b, double L, int n, mm_result *res, int with_y)
-{
-    const double *xs;
-    int nb = mm_beam_breaks(b, &xs), total = 0, *cnt = mm_res_alloc(res, (size_t)nb * sizeof *cnt);
-    if (!cnt)
-        return MM_ENOMEM;
-    for (int k = 0; k + 1 < nb; k++) {
-        cnt[k] = 2 + (int)((n - 2 * (nb - 1)) * (xs[k + 1] - xs[k]) / L);
-        if (cnt[k] < 2)
-            cnt[k] = 2;
-        total += cnt[k];
-    }
-    mm_series *V = mm_res_series(res, O_V, total), *M = mm_res_series(res, O_M, total);
-    mm_series *Y = with_y ? mm_res_series(res, O_Y, total) : NULL;
-    if (!V || !M || (with_y && !Y))
-        return MM_ENOMEM;
-    int i = 0;
-    for (int k = 0; k + 1 < nb; k++) {
-        double h = xs[k + 1] - xs[k];
-        for (int j = 0; j < cnt[k]; j++, i++) {
-            double s = j == cnt[k] - 1 ? h : h * j / (cnt[k] - 1);
-            mm_beam_value v;
-            mm_beam_eval_segment(b, k, s, &v);
-            V->x[i] = M->x[i] = j == cnt[k] - 1 ? xs[k + 1] : xs[k] + s;
-            V->y[i] = v.V, M->y[i] = v.M;
-            if (Y)
-                Y->x[i] = V->x[i], Y->y[i] = v.y;
-        }
-    }
-    return MM_OK;
-}
-
-/* ---- the drawing ------------------------------------------------------------------- */
-
-static int draw(const mm_beam_problem *p, const mm_beam *b, double Mext, double xM, mm_result *res)
-{
-    mm_sta_fbd(res);
-    double L = p->L, h = 0.03 * L, beam[8] = {0, -h / 2, L, -h / 2, L, h / 2, 0, h / 2};
-    double rx[2], ry[2], rcpl[2], Fbig = 0, qmax = 0;
-    int nr = mm_beam_reactions(b, rx, ry, rcpl);
-    for (int k = 0; k < nr; k++)
-        Fbig = fmax(Fbig, fabs(ry[k]));
-    for (int i = 0; i < p->n_point; i++)
-        Fbig = fmax(Fbig, fabs(p->point[2 * i + 1]));
-    for (int i = 0; i < p->n_dist; i++)
-        qmax = fmax(qmax, fmax(fabs(p->dist[4 * i + 2]), fabs(p->dist[4 * i + 3])));
-    double sc = mm_sta_scale(Fbig, L, 0.25), qs = qmax > 0 ? 0.12 * L / qmax : 0;
-    mm_sta_polygon(res, "beam", 4, beam, NULL);
-    if (p->kind == MM_BEAM_CANTILEVER) {
-        mm_sta_clamp(res, "clamp", 0, 0, 3 * h);
-        if (rcpl[0] != 0)
-            mm_sta_couple(res, "clamp couple", 0, 0, 2.5 * h, rcpl[0]);
-    } else {
-        mm_sta_pin(res, "pin", p->a, -h / 2, 2 * h, 0);
-        mm_sta_roller(res, "roller", p->b, -h / 2, 2 * h, 0);
-    }
-    for (int k = 0; k < nr; k++)
-        if (ry[k] != 0)
-            mm_sta_force(res, "reaction", rx[k], ry[k] > 0 ? -h / 2 : h / 2, 0, ry[k], sc, 1);
-    for (int i = 0; i < p->n_point; i++) {
-        double x = p->point[2 * i], F = p->point[2 * i + 1];
-        if (F != 0)
-            mm_sta_force(res, "load", x, F < 0 ? h / 2 : -h / 2, 0, F, sc, 1);
-    }
-    for (int i = 0; i < p->n_dist; i++) {
-        const double *d = p->dist + 4 * i;
-        /* the load's shape above (down loads) or below (up loads) the beam */
-        double y1 = h / 2 - qs * d[2], y2 = h / 2 - qs * d[3];
-        double outline[8] = {d[0], h / 2, d[1], h / 2, d[1], y2, d[0], y1};
-        mm_sta_polygon(res, "distributed load", 4, outline, "highlight");
-        for (int k = 0; k <= 4; k++) {
-            double x = d[0] + (d[1] - d[0]) * k / 4, q = d[2] + (d[3] - d[2]) * k / 4;
-            if (q != 0)
-                mm_sta_force(res, "q", x, q < 0 ? h / 2 : -h / 2, 0, q * qs / sc, sc, 1);
-        }
-    }
-    for (int i = 0; i < p->n_moment; i++)
-        mm_sta_couple(res, "couple", p->moment[2 * i], 0, 2 * h, p->moment[2 * i + 1]);
-    mm_sta_label(res, xM, -0.2 * L, "M = %.4g N m at x = %.4g m", Mext, xM);
-    mm_sta_label(res, 0, 0.3 * L, "V: sum of forces left of x, up +;  M: sagging +");
-    return MM_OK;
-}
-
-/* ---- solve ----------------------------------------------------------------------------- */
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
@@ -196,39 +97,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double Vext, xV, Mext, xM;
     mm_beam_extreme_V(b, &Vext, &xV);
     mm_beam_extreme_M(b, &Mext, &xM);
-    mm_res_scalar(res, O_VEXT, Vext);
-    mm_res_scalar(res, O_XV, xV);
-    mm_res_scalar(res, O_MEXT, Mext);
-    mm_res_scalar(res, O_XM, xM);
-
+    const double ext[] = {Vext, xV, Mext, xM};                      /* O_VEXT ... O_XM */
+    for (int k = 0; k < 4; k++)
+        mm_res_scalar(res, O_VEXT + k, ext[k]);
     double rx[2], ry[2], rcpl[2];
     int nr = mm_beam_reactions(b, rx, ry, rcpl);
-    mm_table *rt = mm_res_table(res, O_REACT, nr);
-    if (!rt) {
-        mm_beam_free(b);
-        return MM_ENOMEM;
-    }
-    for (int k = 0; k < nr; k++)
+    mm_table *rt = mm_res_table(res, O_REACT, nr);          /* NULL: the failure is kept in res */
+    for (int k = 0; rt && k < nr; k++)
         rt->cell[3 * k] = rx[k], rt->cell[3 * k + 1] = ry[k], rt->cell[3 * k + 2] = rcpl[k];
-
     /* check 1: the whole beam, eqs. (2)-(3) with the reactions found */
-    double Fy = 0, Mo = 0, sF = 0, sM = 0;
-    for (int k = 0; k < nr; k++) {
-        Fy += ry[k], Mo += ry[k] * rx[k] + rcpl[k];
-        sF += fabs(ry[k]), sM += fabs(ry[k] * rx[k]) + fabs(rcpl[k]);
-    }
-    for (int i = 0; i < p.n_point; i++) {
-        Fy += p.point[2 * i + 1], Mo += p.point[2 * i + 1] * p.point[2 * i];
-        sF += fabs(p.point[2 * i + 1]), sM += fabs(p.point[2 * i + 1] * p.point[2 * i]);
-    }
-    for (int i = 0; i < p.n_dist; i++) {          /* each piece by the trapezoid's centroid */
-        const double *d = p.dist + 4 * i;
-        double l = d[1] - d[0], W1 = d[2] * l / 2, W2 = d[3] * l / 2;
-        Fy += W1 + W2, Mo += W1 * (d[0] + l / 3) + W2 * (d[0] + 2 * l / 3);
-        sF += fabs(W1) + fabs(W2), sM += fabs(W1 * (d[0] + l / 3)) + fabs(W2 * (d[0] + 2 * l / 3));
-    }
-    for (int i = 0; i < p.n_moment; i++)
-        Mo += p.moment[2 * i + 1], sM += fabs(p.moment[2 * i + 1]);
+    double Fy, Mo, sF, sM;
+    mm_beam_residual(&p, b, &Fy, &Mo, &sF, &sM);
     mm_check_residual(res, "whole beam: sum Fy of loads and reactions [N]", Fy, sF, 32);
     mm_check_residual(res, "whole beam: sum M about x = 0 [N m]", Mo, sM, 32);
     /* check 2: the diagrams summed load by load close past x = L */
@@ -236,45 +115,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_beam_closure(b, &Ve, &Me, &Vsum, &Msum);
     mm_check_residual(res, "V just right of x = L, after every load [N]", Ve, Vsum, 32);
     mm_check_residual(res, "M just right of x = L, after every load [N m]", Me, Msum, 32);
-    /* check 3: dV/dx = q and dM/dx = V in integral form on every segment
-     * (3-point Gauss-Legendre: exact for the quadratic V) and by central
-     * differences at its middle (error h^2 q'/6 for M, none for V); each
-     * against the rounding of that segment's terms */
-    static const double gx[3] = {-0.77459666924148337704, 0, 0.77459666924148337704};
-    static const double gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+    /* check 3: dV/dx = q and dM/dx = V on every segment, integrated (exact
+     * Gauss-Legendre) and by central differences at its middle (less their
+     * truncation), each against the rounding of the segment's terms */
     const double *xs;
     int nb = mm_beam_breaks(b, &xs);
-    double wi = 0, wd = 0;
-    for (int k = 0; k + 1 < nb; k++) {
-        double hk = xs[k + 1] - xs[k], I = 0, Iq = 0;
-        mm_beam_value v0, v1, vg;
-        mm_beam_eval_segment(b, k, 0, &v0);
-        mm_beam_eval_segment(b, k, hk, &v1);
-        double q1 = (v1.q - v0.q) / hk;
-        double Vs = fabs(v0.V) + fabs(v0.q) * hk + fabs(q1) * hk * hk / 2 + 1e-300;
-        double Ms = fabs(v0.M) + fabs(v0.V) * hk + fabs(v0.q) * hk * hk / 2 + fabs(q1) * hk * hk * hk / 6 + 1e-300;
-        for (int g = 0; g < 3; g++) {
-            mm_beam_eval_segment(b, k, 0.5 * hk * (1 + gx[g]), &vg);
-            I += 0.5 * hk * gw[g] * vg.V;
-            Iq += 0.5 * hk * gw[g] * vg.q;
-        }
-        wi = fmax(wi, fmax(fabs(v1.M - v0.M - I) / (16 * DBL_EPSILON * Ms),
-                           fabs(v1.V - v0.V - Iq) / (16 * DBL_EPSILON * Vs)));
-        double d = 1e-3 * hk;
-        mm_beam_value m, lo, hi;
-        mm_beam_eval_segment(b, k, 0.5 * hk, &m);
-        mm_beam_eval_segment(b, k, 0.5 * hk - d, &lo);
-        mm_beam_eval_segment(b, k, 0.5 * hk + d, &hi);
-        /* the difference of a cubic is off by exactly d^2 M'''/6 = d^2 q1/6 */
-        double tol = 16 * DBL_EPSILON * Ms / d, tolV = 16 * DBL_EPSILON * Vs / d;
-        wd = fmax(wd, fmax(fabs(0.5 * (hi.M - lo.M) / d - d * d * q1 / 6 - m.V) / tol,
-                           fabs(0.5 * (hi.V - lo.V) / d - m.q) / tolV));
-    }
+    double wi, wd;
+    mm_beam_derivative_check(b, &wi, &wd);
     mm_res_check_abs(res, "dM/dx = V, dV/dx = q integrated over every segment (Gauss-Legendre): worst "
                           "difference / its rounding tolerance", wi, 0, 1);
     mm_res_check_abs(res, "dM/dx = V, dV/dx = q by central differences at every segment's middle: worst "
                           "difference (less the truncation h^2 q'/6) / its rounding tolerance", wd, 0, 1);
-
     int n = (int)in[P_POINTS].x;
     double ymax = 0, xy = 0;
     if (p.EI > 0) {
@@ -298,8 +149,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         }
         mm_check_residual(res, "y at the supports [m]", worst, yscale, 64.0 * nb);
     }
+    /* the diagrams, each jump by both its one-sided values */
     mm_series *vp = mm_res_series(res, O_VPT, 1), *mp = mm_res_series(res, O_MPT, 1);
-    if (!vp || !mp || sample(b, p.L, n, res, p.EI > 0) != MM_OK) {
+    if (!vp || !mp || mm_sta_beam_diagrams(res, b, n, p.EI > 0, O_V, O_M, O_Y) != MM_OK) {
         mm_beam_free(b);
         return MM_ENOMEM;
     }
@@ -312,31 +164,24 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (kind == 1 && (p.a != 0 || p.b != 4))
         mm_res_warn(res, "a cantilever is clamped at x = 0: a and b are not used");
     mm_res_method(res, "exact piecewise polynomials between the load points (V quadratic, M cubic, y quintic)", 0);
-    rc = draw(&p, b, Mext, xM, res);
+    mm_sta_fbd(res);
+    rc = mm_sta_beam(res, &p, b, Mext, xM);
     mm_beam_free(b);
     return rc;
 }
 
 static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, ch. 7",
-    "J. M. Gere, B. J. Goodno, Mechanics of Materials, 8th ed., Cengage 2013, ch. 4 and 9",
+    MM_STA_HIBBELER "ch. 7", "J. M. Gere, B. J. Goodno, Mechanics of Materials, 8th ed., Cengage 2013, ch. 4 and 9",
     NULL,
 };
 
 const mm_exercise mm_ex_sta_beam_diagrams = {
-    .id = "sta-beam-diagrams",
-    .chapter = 3,
-    .section = "3.10",
+    .id = "sta-beam-diagrams", .chapter = 3, .section = "3.10",
     .title = "Shear force and bending moment diagrams",
     .summary = "Simply supported, overhanging or cantilever beams under point, distributed and couple loads: "
                "exact V and M diagrams, their extremes and the deflection.",
     .tags = "statics, beam, shear force, bending moment, internal forces, deflection",
     .theory = "exercises/sta/beam_diagrams.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

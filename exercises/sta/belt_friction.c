@@ -19,10 +19,11 @@
 #include <math.h>
 
 #include "mm_exhelp.h"
+#include "mm_order.h"
+#include "mm_quad.h"
 #include "mm_sta.h"
 
 enum { P_T1, P_MU, P_THETA, P_R, P_BETA, P_POINTS };
-
 static const mm_param params[] = {
     [P_T1] = {"T1", "tension on the slack side", "N", MM_REAL, 100, 1e-3, 1e7,
               .help = "the smaller tension, where the belt leaves the drum on the side it is pulled from"},
@@ -38,7 +39,6 @@ static const mm_param params[] = {
 };
 
 enum { O_T2, O_T2MIN, O_RATIO, O_TORQUE, O_MUEFF, O_T, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_T2] = MM_SCALAR("T2", "tight-side tension at the slip limit", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_T2MIN] = MM_SCALAR("T2_min", "smallest tight-side tension before slipping the other way", "N",
@@ -50,64 +50,13 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the drum with the belt, its two tensions and the torque"),
 };
 
-/* The belt over n sharp pegs spread evenly over theta: at each, the belt
- * turns by d = theta / n, the peg pushes with N = (T_in + T_out) sin(d/2)
- * and friction mu_e N makes up the difference (eq. 5), so each peg
- * multiplies the tension by (1 + s) / (1 - s) = e^(2 atanh s), s =
- * mu_e sin(d/2).  Through atanh the product of n factors rounds like one
- * exponential, (6 mu_e theta + 4) eps relative at most, where pow((1 + s) /
- * (1 - s), n) rounded at n eps. */
-static double pegs(double T1, double mue, double theta, int n)
-{
-    double s = mue * sin(theta / (2.0 * n));
-    return T1 * exp(2.0 * n * atanh(s));
-}
-
-/* How far the least-squares slope over K halvings of log |e| strays from 2
- * when e = c d^2 (1 + B d^2) and |B| d0^2 = b < 1 on the coarsest level:
- * the larger of the two signs of B, which is B < 0 (log(1 - b 4^-k) bends
- * more). */
-static double order_drift(double b, int K)
-{
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (int k = 0; k < K; k++) {
-        double x = -k * M_LN2, y = log1p(-b * ldexp(1.0, -2 * k));
-        sx += x, sy += y, sxx += x * x, sxy += x * y;
-    }
-    return fabs((K * sxy - sx * sy) / (K * sxx - sx * sx));
-}
-
 /* e^50 = 5e21: beyond it the belt holds any load no belt could carry */
 static int check(const mm_value *in, mm_error *err)
 {
     double a = in[P_MU].x * in[P_THETA].x / sin(in[P_BETA].x);
     if (a > 50)
-        return mm_error_set(err, MM_ERANGE, "mu",
-                            "mu theta / sin(beta) = %.3g would make T2/T1 = e^%.3g; keep it at most 50 "
-                            "(a ratio of 5e21): lower mu or theta", a, a);
-    return MM_OK;
-}
-
-static int draw(double T1, double T2, double theta, double r, double torque, mm_result *res)
-{
-    mm_sta_fbd(res);
-    double shown = fmin(theta, 2 * M_PI - 0.2), a0 = M_PI / 2 + shown / 2, a1 = a0 - shown;
-    enum { N = 73 };
-    double arc[2 * N];
-    for (int k = 0; k < N; k++) {
-        double t = a0 - shown * k / (N - 1);
-        arc[2 * k] = 1.04 * r * cos(t), arc[2 * k + 1] = 1.04 * r * sin(t);
-    }
-    double sc = mm_sta_scale(T2, r, 1.6);
-    /* the belt leaves at a0 (slack) and a1 (tight), along the tangents */
-    double t1x = -sin(a0), t1y = cos(a0), t2x = sin(a1), t2y = -cos(a1);
-    mm_sta_circle(res, "drum", 0, 0, r, NULL);
-    mm_sta_path(res, "belt", N, arc, "tension");
-    mm_sta_force(res, "T1", r * cos(a0), r * sin(a0), T1 * t1x, T1 * t1y, sc, 0);
-    mm_sta_force(res, "T2", r * cos(a1), r * sin(a1), T2 * t2x, T2 * t2y, sc, 0);
-    mm_sta_couple(res, "torque on the drum", 0, 0, 0.4 * r, torque);
-    mm_sta_label(res, 1.1 * r * cos(a0), 1.1 * r * sin(a0), "T1 = %.4g N", T1);
-    mm_sta_label(res, 1.1 * r * cos(a1), 1.1 * r * sin(a1), "T2 = %.4g N", T2);
+        return mm_error_set(err, MM_ERANGE, "mu", "mu theta / sin(beta) = %.3g would make T2/T1 = e^%.3g; keep "
+                            "it at most 50 (a ratio of 5e21): lower mu or theta", a, a);
     return MM_OK;
 }
 
@@ -122,14 +71,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_RATIO, ratio);
     mm_res_scalar(res, O_TORQUE, (T2 - T1) * r);
     mm_res_scalar(res, O_MUEFF, mue);
-
     mm_series *s = mm_res_series(res, O_T, n);
     if (!s)
         return MM_ENOMEM;
     mm_linspace(0, theta, n, s->x);
     for (int i = 0; i < n; i++)
         s->y[i] = T1 * exp(mue * s->x[i]);                                    /* eq. (2) */
-
     /* check 1: the peg belt converges to (3) at order 2.  With d = theta / n
      * and s = mu_e sin(d/2), log(T_n / T2) = n 2 atanh(s) - mu_e theta =
      * c1 d^2 + c2 d^4 + ..., c1 = theta (mu_e^3/12 - mu_e/24) and c2 = theta
@@ -141,15 +88,21 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * cancellations (|c2| summed term by term, |c1| at least its value where
      * the check is made) */
     enum { K = 6 };
-    double mt = mue * theta;
-    double c1 = fabs(mue * mue * mue / 12 - mue / 24) * theta, c1min = 0.05 * mue * theta / 24;
+    double mt = mue * theta, c1 = fabs(mue * mue * mue / 12 - mue / 24) * theta, c1min = 0.05 * mue * theta / 24;
     double c2 = (mue / 1920 + mue * mue * mue / 96 + pow(mue, 5) / 80) * theta;
     double B = (c2 + 0.5 * c1 * c1) / fmax(c1, c1min);
     int n0 = (int)fmax(fmax(8, ceil(5 * mt)), ceil(theta * sqrt(B / 0.02)));
+    /* The belt over np sharp pegs spread evenly over theta: at each, it
+     * turns by d = theta / np, the peg pushes with N = (T_in + T_out) sin(d/2)
+     * and friction mu_e N makes up the difference (eq. 5), so each peg
+     * multiplies the tension by (1 + s) / (1 - s) = e^(2 atanh s), s =
+     * mu_e sin(d/2).  Through atanh the product of np factors rounds like one
+     * exponential, (6 mu_e theta + 4) eps relative at most, where pow((1 + s)
+     * / (1 - s), np) rounded at np eps. */
     double h[K], e[K], Tn[K];
     for (int k = 0; k < K; k++) {
         int np = n0 << k;
-        Tn[k] = pegs(T1, mue, theta, np);
+        Tn[k] = T1 * exp(2.0 * np * atanh(mue * sin(theta / (2.0 * np))));
         h[k] = theta / np;
         e[k] = fabs(Tn[k] - T2);
     }
@@ -159,70 +112,39 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * 1/2 (where the order is 4) and the finest error is 1e4 roundings; the
      * tolerance is twice the slope's drift from the d^4 term (measured over
      * 2e5 draws: at most 0.9993 of it) plus what rounding can move the slope */
-    if (c1 > c1min && e[K - 1] > 1e4 * rnd) {
-        double xm = 0, sxx = 0, drift = 0;
-        for (int k = 0; k < K; k++)
-            xm += log(h[k]) / K;
-        for (int k = 0; k < K; k++)
-            sxx += (log(h[k]) - xm) * (log(h[k]) - xm);
-        for (int k = 0; k < K; k++)
-            drift += fabs(log(h[k]) - xm) / sxx * rnd / e[k];
-        double b = B * h[0] * h[0];
+    if (c1 > c1min && e[K - 1] > 1e4 * rnd)
         mm_check_order(res, "n-peg belt -> T1 e^(mu theta / sin beta): observed order (tolerance: 2 x the "
-                            "drift of its d^4 term)", K, h, e, 2, 2 * (order_drift(b, K) + drift));
-    }
+                            "drift of its d^4 term)", K, h, e, 2,
+                       2 * (mm_order_drift_h2(B * h[0] * h[0], K) + mm_order_rounding_drift(K, h, e, rnd)));
     /* check 2: the finest peg belt meets (3) within its Richardson estimate */
-    double est = fabs(Tn[K - 1] - Tn[K - 2]) / 3;
-    char *name = mm_res_printf(res, "%d-peg belt vs T1 e^(mu theta / sin beta) [N] (tolerance: 1.5 x its "
-                                    "Richardson error estimate)", n0 << (K - 1));
-    if (!name)
-        return MM_ENOMEM;
-    /* plus rounding: once in T_n and T2, once more in the estimate */
-    mm_res_check_abs(res, name, Tn[K - 1], T2, 1.5 * est + 2 * rnd);
+    double est = fabs(Tn[K - 1] - Tn[K - 2]) / 3;    /* plus rounding: once in T_n and T2, once more in est */
+    mm_sta_check_absf(res, Tn[K - 1], T2, 1.5 * est + 2 * rnd, "%d-peg belt vs T1 e^(mu theta / sin beta) [N] "
+                      "(tolerance: 1.5 x its Richardson error estimate)", n0 << (K - 1));
     /* check 3: the drum's moment balance: (T2 - T1) r against the friction
      * moment integral of mu_e T(phi) r dphi (eq. 6), 5-point Gauss-Legendre
      * on pieces where mu_e phi grows by at most 1/2 (relative error < 1e-15) */
-    static const double gx[5] = {0, 0.5384693101056831, -0.5384693101056831, 0.9061798459386640,
-                                 -0.9061798459386640};
-    static const double gw[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
-                                 0.2369268850561891, 0.2369268850561891};
-    int pieces = (int)fmax(8, ceil(2 * mue * theta));
-    double Mf = 0;
-    for (int p = 0; p < pieces; p++) {
-        double a = theta * p / pieces, b = theta * (p + 1) / pieces;
-        for (int g = 0; g < 5; g++) {
-            double ph = 0.5 * (a + b) + 0.5 * (b - a) * gx[g];
-            Mf += 0.5 * (b - a) * gw[g] * mue * T1 * exp(mue * ph) * r;
-        }
-    }
+    int pieces = (int)fmax(8, ceil(2 * mue * theta));       /* at most 101: mu_e theta <= 50 (check) */
+    double gp[5 * 101], gw[5 * 101], Mf = 0;
+    mm_quad_gl5_nodes(0, theta, pieces, gp, gw);
+    for (int i = 0; i < 5 * pieces; i++)
+        Mf += gw[i] * mue * T1 * exp(mue * gp[i]) * r;
     mm_res_check_abs(res, "drum: (T2 - T1) r vs the integral of the friction moment [N m]", Mf, (T2 - T1) * r,
                      64 * DBL_EPSILON * T2 * r);
     mm_res_method(res, "closed form (capstan equation); peg belt and quadrature as checks", 0);
     if (theta > 2 * M_PI)
         mm_res_warn(res, "theta = %.3g rad is %.2f turns: the drawing shows one", theta, theta / (2 * M_PI));
-    return draw(T1, T2, theta, r, (T2 - T1) * r, res);
+    mm_sta_fbd(res);
+    return mm_sta_belt(res, T1, T2, theta, r, (T2 - T1) * r);
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 8.5",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 6/9",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 8.5", MM_STA_MERIAM "article 6/9", NULL};
 
 const mm_exercise mm_ex_sta_belt_friction = {
-    .id = "sta-belt-friction",
-    .chapter = 3,
-    .section = "3.8.4",
+    .id = "sta-belt-friction", .chapter = 3, .section = "3.8.4",
     .title = "Belt friction: the capstan equation",
     .summary = "A belt on a drum at the verge of slipping: T2 = T1 e^(mu theta), both slip limits and the "
                "torque, checked by a belt over many pegs.",
-    .tags = "statics, friction, belt, capstan, slipping",
-    .theory = "exercises/sta/belt_friction.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, friction, belt, capstan, slipping", .theory = "exercises/sta/belt_friction.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

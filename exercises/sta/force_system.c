@@ -17,15 +17,14 @@
  */
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
 #include "mm_exhelp.h"
+#include "mm_forces.h"
 #include "mm_sta.h"
 
 #define MAXF 20
 
 enum { P_FORCES, P_COUPLES, P_O };
-
 static const mm_param params[] = {
     [P_FORCES] = {"forces", "forces (x, y, z, Fx, Fy, Fz per row)", "", MM_MATRIX, 0, -1e9, 1e9,
                   "0,0,0,0,0,100;2,0,0,0,50,0;0,1,0,30,0,0", NULL, MAXF, 6,
@@ -37,7 +36,6 @@ static const mm_param params[] = {
 };
 
 enum { O_RX, O_RY, O_RZ, O_R, O_MX, O_MY, O_MZ, O_PITCH, O_PX, O_PY, O_PZ, O_MW, O_KIND, O_MLINE, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_RX] = MM_SCALAR("Rx", "resultant force, x", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_RY] = MM_SCALAR("Ry", "resultant force, y", "N", .flags = MM_ANSWER | MM_EXACT),
@@ -59,93 +57,48 @@ static const mm_output outputs[] = {
 
 static int check(const mm_value *in, mm_error *err)
 {
-    if (in[P_FORCES].cols != 6)
-        return mm_error_set(err, MM_ERANGE, "forces", "each force is one row x,y,z,Fx,Fy,Fz; got %d numbers",
-                            in[P_FORCES].cols);
-    if (in[P_COUPLES].rows && in[P_COUPLES].cols != 3)
-        return mm_error_set(err, MM_ERANGE, "couples", "each couple is one row Cx,Cy,Cz; got %d numbers",
-                            in[P_COUPLES].cols);
+    if (mm_sta_rows(&in[P_FORCES], "forces", "force", "x,y,z,Fx,Fy,Fz", 6, err) ||
+        mm_sta_rows(&in[P_COUPLES], "couples", "couple", "Cx,Cy,Cz", 3, err))
+        return MM_ERANGE;
     if (in[P_O].cols != 3)
         return mm_error_set(err, MM_ERANGE, "O", "O needs 3 coordinates; got %d", in[P_O].cols);
     return MM_OK;
 }
 
-/* eq. (1) about the point B: the moment and the sum of |terms| */
-static void moment_about(const mm_value *in, const double *B, double *M, double *scale)
-{
-    const mm_value *Fs = &in[P_FORCES], *Cs = &in[P_COUPLES];
-    M[0] = M[1] = M[2] = 0;
-    *scale = 0;
-    for (int i = 0; i < Fs->rows; i++) {
-        const double *f = Fs->data + 6 * i;
-        double w[3] = {f[0] - B[0], f[1] - B[1], f[2] - B[2]}, m[3];
-        mm_sta_cross(w, f + 3, m);
-        for (int k = 0; k < 3; k++)
-            M[k] += m[k];
-        *scale += mm_sta_norm(w) * mm_sta_norm(f + 3);
-    }
-    for (int j = 0; j < Cs->rows; j++) {
-        for (int k = 0; k < 3; k++)
-            M[k] += Cs->data[3 * j + k];
-        *scale += mm_sta_norm(Cs->data + 3 * j);
-    }
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     (void)err;
-    const mm_value *Fs = &in[P_FORCES];
+    const mm_value *Fs = &in[P_FORCES], *Cs = &in[P_COUPLES];
     const double *O = in[P_O].data;
-    double R[3] = {0, 0, 0}, M[3], Ms, Rs = 0, size = 0;
-    for (int i = 0; i < Fs->rows; i++) {
-        for (int k = 0; k < 3; k++)
-            R[k] += Fs->data[6 * i + 3 + k];
-        Rs += mm_sta_norm(Fs->data + 6 * i + 3);
-        double w[3] = {Fs->data[6 * i] - O[0], Fs->data[6 * i + 1] - O[1], Fs->data[6 * i + 2] - O[2]};
-        size = fmax(size, mm_sta_norm(w));
-    }
-    moment_about(in, O, M, &Ms);
-    double Rn = mm_sta_norm(R), Mn = mm_sta_norm(M);
-    mm_res_scalar(res, O_RX, R[0]);
-    mm_res_scalar(res, O_RY, R[1]);
-    mm_res_scalar(res, O_RZ, R[2]);
-    mm_res_scalar(res, O_R, Rn);
-    mm_res_scalar(res, O_MX, M[0]);
-    mm_res_scalar(res, O_MY, M[1]);
-    mm_res_scalar(res, O_MZ, M[2]);
-
+    mm_forces_sum so, sp, sb, st;                      /* eq. (1) about O, P, B and along a line */
+    mm_forces_resultant(Fs->rows, Fs->data, Cs->rows, Cs->data, O, &so);
+    const double *R = so.R, *M = so.M;
+    double Rs = so.sum_F, Ms = so.sum_M, Rn = mm_sta_norm(R), Mn = mm_sta_norm(M);
+    const double out[] = {R[0], R[1], R[2], Rn, M[0], M[1], M[2]};      /* O_RX ... O_MZ */
+    for (int k = 0; k < 7; k++)
+        mm_res_scalar(res, O_RX + k, out[k]);
     /* the simplest equivalent: R and M vanish to rounding, or R . M does */
-    int kind;
-    double tolR = 64 * DBL_EPSILON * Rs, tolM = 64 * DBL_EPSILON * Ms;
-    double P[3] = {O[0], O[1], O[2]}, pitch = 0;
-    if (Rn <= tolR)
-        kind = Mn <= tolM ? 0 : 1;
-    else {
+    double tolR = 64 * DBL_EPSILON * Rs, tolM = 64 * DBL_EPSILON * Ms, RM = mm_sta_dot(R, M);
+    int kind = Rn <= tolR ? (Mn <= tolM ? 0 : 1) : fabs(RM) <= 64 * DBL_EPSILON * Rs * Ms ? 2 : 3;
+    double P[3] = {O[0], O[1], O[2]}, pitch = kind == 3 ? RM / (Rn * Rn) : 0;       /* eq. (4) */
+    static const char *const kinds[] = {"in equilibrium", "a couple", "a single force", "a wrench"};
+    mm_res_scalar_text(res, O_KIND, kind, kinds[kind]);
+    if (Rn > tolR) {
         double RxM[3];
         mm_sta_cross(R, M, RxM);
         for (int k = 0; k < 3; k++)
             P[k] = O[k] + RxM[k] / (Rn * Rn);              /* eq. (4) */
-        pitch = mm_sta_dot(R, M) / (Rn * Rn);
-        kind = fabs(mm_sta_dot(R, M)) <= 64 * DBL_EPSILON * Rs * Ms ? 2 : 3;
-        if (kind == 2)
-            pitch = 0;
-    }
-    static const char *const kinds[] = {"in equilibrium", "a couple", "a single force", "a wrench"};
-    mm_res_scalar_text(res, O_KIND, kind, kinds[kind]);
-    if (Rn > tolR) {
-        mm_res_scalar(res, O_PITCH, pitch);
-        mm_res_scalar(res, O_PX, P[0]);
-        mm_res_scalar(res, O_PY, P[1]);
-        mm_res_scalar(res, O_PZ, P[2]);
-        mm_res_scalar(res, O_MW, pitch * Rn);
+        const double axis[] = {pitch, P[0], P[1], P[2], pitch * Rn};     /* O_PITCH ... O_MW */
+        for (int k = 0; k < 5; k++)
+            mm_res_scalar(res, O_PITCH + k, axis[k]);
         /* check 1: summed directly at P, the moment lies along R: |M_P x R| */
-        double MP[3], MPs, c[3];
-        moment_about(in, P, MP, &MPs);
+        mm_forces_resultant(Fs->rows, Fs->data, Cs->rows, Cs->data, P, &sp);
+        double *MP = sp.M, MPs = sp.sum_M, c[3];
         mm_sta_cross(MP, R, c);
         mm_check_residual(res, "moment summed at the central axis point P, across R: |M_P x R| / |R| [N m]",
                           mm_sta_norm(c) / Rn, MPs + Ms, 64);
         /* check 2: the invariant R . M */
-        mm_check_residual(res, "R . M at P vs at O [N^2 m]", mm_sta_dot(R, MP) - mm_sta_dot(R, M), Rs * (MPs + Ms), 64);
+        mm_check_residual(res, "R . M at P vs at O [N^2 m]", mm_sta_dot(R, MP) - RM, Rs * (MPs + Ms), 64);
         /* check 3: it is the wrench's couple p R */
         double d[3];
         for (int k = 0; k < 3; k++)
@@ -156,13 +109,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     /* check 4: the transfer theorem (2) to the first force's point */
     const double *B = Fs->data;
-    double MB[3], MBs, OB[3] = {O[0] - B[0], O[1] - B[1], O[2] - B[2]}, t[3];
-    moment_about(in, B, MB, &MBs);
+    double OB[3] = {O[0] - B[0], O[1] - B[1], O[2] - B[2]}, t[3];
+    mm_forces_resultant(Fs->rows, Fs->data, Cs->rows, Cs->data, B, &sb);
     mm_sta_cross(OB, R, t);
     for (int k = 0; k < 3; k++)
-        t[k] += M[k] - MB[k];
+        t[k] += M[k] - sb.M[k];
     mm_check_residual(res, "M_B = M_O + (O - B) x R at B, the first force's point [N m]", mm_sta_norm(t),
-                      Ms + MBs + mm_sta_norm(OB) * Rs, 64);
+                      Ms + sb.sum_M + mm_sta_norm(OB) * Rs, 64);
     /* the couple's size at points B from O toward P: smallest on the central axis */
     mm_series *ml = mm_res_series(res, O_MLINE, 61);
     if (!ml)
@@ -171,59 +124,26 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (mm_sta_norm(dir) == 0)
         dir[0] = 1;                                  /* P = O (or R = 0): along x */
     for (int i = 0; i < 61; i++) {
-        double tt = -1 + 3.0 * i / 60, Bt[3] = {O[0] + tt * dir[0], O[1] + tt * dir[1], O[2] + tt * dir[2]}, Mt[3], st;
-        moment_about(in, Bt, Mt, &st);
-        ml->x[i] = tt, ml->y[i] = mm_sta_norm(Mt);
+        double tt = -1 + 3.0 * i / 60, Bt[3] = {O[0] + tt * dir[0], O[1] + tt * dir[1], O[2] + tt * dir[2]};
+        mm_forces_resultant(Fs->rows, Fs->data, Cs->rows, Cs->data, Bt, &st);
+        ml->x[i] = tt, ml->y[i] = mm_sta_norm(st.M);
     }
     mm_res_method(res, "closed form (sums of forces and cross products)", 0);
-
     /* the drawing */
     mm_sta_fbd(res);
-    double fmx = 0;
-    for (int i = 0; i < Fs->rows; i++)
-        fmx = fmax(fmx, mm_sta_norm(Fs->data + 6 * i + 3));
-    double L = fmax(size, 1e-3), fs = mm_sta_scale(fmax(fmx, Rn), L, 0.5);
-    for (int i = 0; i < Fs->rows; i++)
-        mm_sta_arrow3(res, "force", Fs->data + 6 * i, Fs->data + 6 * i + 3, fs, 0, "N", NULL);
-    if (Rn > tolR) {
-        mm_sta_arrow3(res, "R on the central axis", P, R, fs, 0, "N", "highlight");
-        double a[3], b[3];
-        for (int k = 0; k < 3; k++)
-            a[k] = P[k] - L * R[k] / Rn, b[k] = P[k] + L * R[k] / Rn;
-        mm_sta_line3(res, "central axis", a, b, "ground");
-        if (kind == 3) {
-            double mw[3] = {pitch * R[0], pitch * R[1], pitch * R[2]};
-            mm_sta_arrow3(res, "couple of the wrench", P, mw, 0.5 * L / fabs(pitch * Rn), 0, "N m", "highlight");
-        }
-    } else if (kind == 1) {
-        mm_sta_arrow3(res, "couple", O, M, 0.5 * L / Mn, 0, "N m", "highlight");
-    }
-    double u, v;
-    mm_sta_project(O[0], O[1], O[2], &u, &v);
-    mm_sta_label(res, u, v, "O: %s", kinds[kind]);
+    mm_sta_reduced3(res, Fs->rows, Fs->data, O, R, M, P, pitch, kind, so.reach, kinds[kind]);
     return MM_OK;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 4.7-4.8",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 2/9",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 4.7-4.8", MM_STA_MERIAM "article 2/9", NULL};
 
 const mm_exercise mm_ex_sta_force_system = {
-    .id = "sta-force-system",
-    .chapter = 3,
-    .section = "3.2.3",
+    .id = "sta-force-system", .chapter = 3, .section = "3.2.3",
     .title = "Reducing a force system: resultant, couple and wrench",
     .summary = "Forces and couples in space reduced to a force and a couple at a point, and to their simplest "
                "equivalent: a single force, a couple or a wrench on its central axis.",
     .tags = "statics, force system, resultant, couple, wrench, equivalence, central axis",
     .theory = "exercises/sta/force_system.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

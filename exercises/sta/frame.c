@@ -17,16 +17,12 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
 
 #include "mm_equil.h"
 #include "mm_exhelp.h"
 #include "mm_sta.h"
 
-#define MAXP 20
-
 enum { P_A, P_B, P_C, P_LOADS };
-
 static const mm_param params[] = {
     [P_A] = {"A", "left ground hinge (x, y)", "m", MM_VECTOR, 0, -1e4, 1e4, "0,0", NULL, 0, 2,
              .help = "the pin of the left body on the ground"},
@@ -35,13 +31,12 @@ static const mm_param params[] = {
     [P_C] = {"C", "crown hinge (x, y)", "m", MM_VECTOR, 0, -1e4, 1e4, "4,3", NULL, 0, 2,
              .help = "the pin joining the two bodies; loads left of it act on the left body"},
     [P_LOADS] = {"loads", "loads (x, y, Fx, Fy per row)", "", MM_MATRIX, 0, -1e9, 1e9,
-                 "2,1.5,0,-10000;6,1.5,2000,-5000", NULL, MAXP, 4,
+                 "2,1.5,0,-10000;6,1.5,2000,-5000", NULL, 20, 4,
                  .help = "one row per force: its point (m) and components (N, y up); x < x_C on the left "
                          "body, x > x_C on the right, x = x_C on the hinge (counted with the left body)"},
 };
 
 enum { O_AX, O_AY, O_BX, O_BY, O_CX, O_CY, O_THRUST, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_AX] = MM_SCALAR("Ax", "reaction at A, x", "N", .flags = MM_ANSWER),
     [O_AY] = MM_SCALAR("Ay", "reaction at A, y", "N", .flags = MM_ANSWER),
@@ -93,14 +88,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_equil_result er;
     int rc = mm_equil_solve(6, 6, M, b, x, NULL, NULL, &er, err);
     if (rc == MM_ESINGULAR)
-        return mm_error_set(err, MM_ESINGULAR, "C",
-                            "the hinges A, C and B lie on one line: C can move across it without turning either "
-                            "body much (a mechanism); move C off the line AB");
+        return mm_error_set(err, MM_ESINGULAR, "C", "the hinges A, C and B lie on one line: C can move across it "
+                            "without turning either body much (a mechanism); move C off the line AB");
     if (rc != MM_OK)
         return rc;
     double xerr = 4 * DBL_EPSILON * Fs / er.rcond, Xmax = 0;
     for (int k = 0; k < 6; k++) {
-        mm_res_scalar_err(res, O_AX + k, fabs(x[k]) <= xerr ? 0 : x[k], xerr, MM_ERR_ESTIMATE);
+        mm_res_scalar_err(res, O_AX + k, mm_sta_shown(x[k], xerr), xerr, MM_ERR_ESTIMATE);
         Xmax = fmax(Xmax, fabs(x[k]));
     }
     /* check 1: each body, eq. (1) put back */
@@ -120,74 +114,37 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double det = a11 * a22 - a12 * a21;
     double Bx = (-MA * a22 + MC * a12) / det, By = (-MC * a11 + MA * a21) / det;
     double cf[6] = {-Bx - PL[0] - PR[0], -By - PL[1] - PR[1], Bx, By, Bx + PR[0], By + PR[1]};
-    int wk = 0;
-    double wd = -1;
-    for (int k = 0; k < 6; k++)
-        if (fabs(cf[k] - x[k]) > wd)
-            wd = fabs(cf[k] - x[k]), wk = k;
+    int wk = mm_sta_worst(6, cf, x, 0);
     static const char *const names[] = {"Ax", "Ay", "Bx", "By", "Cx", "Cy"};
-    char *name = mm_res_printf(res, "%s by moments about A (whole frame) and C (right body) vs the linear "
-                                    "solve [N]", names[wk]);
-    if (!name)
-        return MM_ENOMEM;
-    mm_res_check_abs(res, name, cf[wk], x[wk], 64 * DBL_EPSILON * (Fs + Xmax) / er.rcond);
+    mm_sta_check_absf(res, cf[wk], x[wk], 64 * DBL_EPSILON * (Fs + Xmax) / er.rcond,
+                      "%s by moments about A (whole frame) and C (right body) vs the linear solve [N]", names[wk]);
     /* the thrust against the rise of the crown, by the closed form (3) */
-    {
-        double yl = A[1] + (B[1] - A[1]) * (C[0] - A[0]) / (B[0] - A[0]), h0 = C[1] - yl;
-        mm_series *th = mm_res_series(res, O_THRUST, 60);
-        if (!th)
-            return MM_ENOMEM;
-        for (int i = 0; i < 60; i++) {
-            double hh = h0 * (0.2 + 2.8 * i / 59), Cy = yl + hh;
-            double MCi = PR[2] - (C[0] * PR[1] - Cy * PR[0]);
-            double b21 = -(B[1] - Cy), dt = a11 * a22 - a12 * b21;
-            double Bxi = (-MA * a22 + MCi * a12) / dt;
-            th->x[i] = hh, th->y[i] = -Bxi - PL[0] - PR[0];
-        }
+    double yl = A[1] + (B[1] - A[1]) * (C[0] - A[0]) / (B[0] - A[0]), h0 = C[1] - yl;
+    mm_series *th = mm_res_series(res, O_THRUST, 60);
+    if (!th)
+        return MM_ENOMEM;
+    for (int i = 0; i < 60; i++) {
+        double hh = h0 * (0.2 + 2.8 * i / 59), Cy = yl + hh;
+        double MCi = PR[2] - (C[0] * PR[1] - Cy * PR[0]);
+        double b21 = -(B[1] - Cy), dt = a11 * a22 - a12 * b21;
+        double Bxi = (-MA * a22 + MCi * a12) / dt;
+        th->x[i] = hh, th->y[i] = -Bxi - PL[0] - PR[0];
     }
     mm_res_method(res, "six equilibrium equations of the two bodies, LU with the rank test", 0);
-
     /* the drawing: the bodies taken apart at C (the right one moved right) */
     mm_sta_fbd(res);
-    double gap = 0.08 * size, sc = mm_sta_scale(fmax(Fs, Xmax), size, 0.2), s = 0.04 * size;
-    mm_sta_line(res, "left body", A[0], A[1], C[0], C[1], NULL, 0, 0);
-    mm_sta_line(res, "right body", C[0] + gap, C[1], B[0] + gap, B[1], NULL, 0, 0);
-    mm_sta_pin(res, "pin A", A[0], A[1], s, 0);
-    mm_sta_pin(res, "pin B", B[0] + gap, B[1], s, 0);
-    mm_sta_force(res, "reaction A", A[0], A[1], x[0], x[1], sc, 1);
-    mm_sta_force(res, "reaction B", B[0] + gap, B[1], x[2], x[3], sc, 1);
-    mm_sta_force(res, "pin force on the left body", C[0], C[1], x[4], x[5], sc, 1);
-    mm_sta_force(res, "pin force on the right body", C[0] + gap, C[1], -x[4], -x[5], sc, 1);
-    for (int i = 0; i < Ld->rows; i++) {
-        const double *p = Ld->data + 4 * i;
-        mm_sta_force(res, "load", p[0] + (p[0] > C[0] ? gap : 0), p[1], p[2], p[3], sc, 1);
-    }
-    mm_sta_label(res, A[0], A[1] - 2 * s, "A");
-    mm_sta_label(res, B[0] + gap, B[1] - 2 * s, "B");
-    mm_sta_label(res, C[0] + 0.5 * gap, C[1] + s, "C");
+    mm_sta_frame_apart(res, A, B, C, x, Ld->rows, Ld->data, size, mm_sta_scale(fmax(Fs, Xmax), size, 0.2));
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 6.6",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 4/6",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 6.6", MM_STA_MERIAM "article 4/6", NULL};
 
 const mm_exercise mm_ex_sta_frame = {
-    .id = "sta-frame",
-    .chapter = 3,
-    .section = "3.6",
+    .id = "sta-frame", .chapter = 3, .section = "3.6",
     .title = "A three-hinged frame: systems of rigid bodies",
     .summary = "Two bodies pinned to the ground and to each other: ground reactions and the hinge force from "
                "six equations, the arch's horizontal thrust.",
-    .tags = "statics, frame, arch, three-hinged, systems of bodies, pin forces",
-    .theory = "exercises/sta/frame.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, frame, arch, three-hinged, systems of bodies, pin forces", .theory = "exercises/sta/frame.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -19,11 +19,10 @@
 #include <float.h>
 #include <math.h>
 
-#include "mm_exhelp.h"
+#include "mm_geom.h"
 #include "mm_sta.h"
 
 enum { P_W, P_R, P_RJ, P_MU };
-
 static const mm_param params[] = {
     [P_W] = {"W", "load", "N", MM_REAL, 1000, 1e-3, 1e7, .help = "the weight on one side of the rope"},
     [P_R] = {"R", "pulley radius", "m", MM_REAL, 0.15, 1e-3, 10, .help = "where the rope runs"},
@@ -32,7 +31,6 @@ static const mm_param params[] = {
 };
 
 enum { O_PHI, O_RF, O_TR, O_TL, O_MF, O_ETA, O_RFA, O_TRMU, O_TLMU, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_PHI] = MM_SCALAR("phi", "friction angle atan(mu)", "rad", .flags = MM_EXACT),
     [O_RF] = MM_SCALAR("r_f", "radius of the friction circle r sin(phi)", "m", .flags = MM_ANSWER | MM_EXACT),
@@ -63,20 +61,15 @@ static int contact(double W, double R, double r, double mu, double s, double *x,
     for (int it = 1; it <= 50; it++) {
         double N = x[0], c = cos(x[1]), sn = sin(x[1]), m = s * mu;
         double f[3] = {-N * sn + m * N * c, N * c + m * N * sn - x[2] - W, W * R - x[2] * R + m * N * r};
-        double J[3][3] = {{-sn + m * c, -N * c - m * N * sn, 0},
-                          {c + m * sn, -N * sn + m * N * c, -1},
-                          {m * r, 0, -R}};
-        /* Cramer on the 3x3 */
-        double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                     J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-        double d[3];
-        for (int k = 0; k < 3; k++) {
-            double M[3][3];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                    M[i][j] = j == k ? -f[i] : J[i][j];
-            d[k] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-                    M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
+        double J[9] = {-sn + m * c, -N * c - m * N * sn, 0,
+                       c + m * sn, -N * sn + m * N * c, -1,
+                       m * r, 0, -R};
+        double det = mm_geom_m3_det(J), d[3];
+        for (int k = 0; k < 3; k++) {                    /* Cramer on the 3x3 */
+            double Mk[9];
+            for (int i = 0; i < 9; i++)
+                Mk[i] = i % 3 == k ? -f[i / 3] : J[i];
+            d[k] = mm_geom_m3_det(Mk) / det;
         }
         for (int k = 0; k < 3; k++)
             x[k] += d[k];
@@ -100,16 +93,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_MF, (Tr + W) * rf);
     mm_res_scalar(res, O_ETA, W / Tr);
     mm_res_scalar(res, O_RFA, mu * r);
-
-    double xr[3], xl[3];
+    double xr[3], xl[3];                                  /* the check: eq. (4), raising and lowering */
     int ir, il;
     if (contact(W, R, r, mu, 1, xr, &ir) != MM_OK || contact(W, R, r, mu, -1, xl, &il) != MM_OK)
         return mm_error_set(err, MM_ENOCONV, "mu", "the contact equations did not converge");
     /* Newton on well-scaled equations: a few eps of the forces */
     mm_res_check_rel(res, "T_raise by the contact equations (Newton) vs eq. (3)", xr[2], Tr, 32 * DBL_EPSILON);
     mm_res_check_rel(res, "T_lower by the contact equations (Newton) vs eq. (3)", xl[2], Tl, 32 * DBL_EPSILON);
-    mm_res_check_abs(res, "contact angle from straight below while raising vs phi [rad]", xr[1], phi,
-                     32 * DBL_EPSILON);
+    mm_res_check_abs(res, "contact angle from straight below while raising vs phi [rad]", xr[1], phi, 32 * DBL_EPSILON);
     mm_res_check_abs(res, "the reaction's line: its distance from the centre vs r_f [m]", r * sin(xr[1]), rf,
                      32 * DBL_EPSILON * r);
     mm_series *s1 = mm_res_series(res, O_TRMU, 101), *s2 = mm_res_series(res, O_TLMU, 101);
@@ -144,26 +135,15 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return MM_OK;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 8.7",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 6/7",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 8.7", MM_STA_MERIAM "article 6/7", NULL};
 
 const mm_exercise mm_ex_sta_journal_bearing = {
-    .id = "sta-journal-bearing",
-    .chapter = 3,
-    .section = "3.8.1",
+    .id = "sta-journal-bearing", .chapter = 3, .section = "3.8.1",
     .title = "Journal bearing: the friction circle",
     .summary = "A pulley on an axle with friction: the pull that raises a load, the friction circle, the "
                "efficiency; checked by solving the contact equations.",
     .tags = "statics, friction, journal bearing, friction circle, pulley, efficiency",
     .theory = "exercises/sta/journal_bearing.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

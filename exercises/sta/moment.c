@@ -14,14 +14,12 @@
  * from the parts of r - O and F perpendicular to the axis (eq. 4).
  * Reference: Hibbeler, Statics, 14th ed., sections 4.1-4.5.
  */
-#include <float.h>
 #include <math.h>
 
 #include "mm_exhelp.h"
 #include "mm_sta.h"
 
 enum { P_F, P_R, P_O, P_U };
-
 static const mm_param params[] = {
     [P_F] = {"F", "force (Fx, Fy, Fz)", "N", MM_VECTOR, 0, -1e9, 1e9, "10,-20,30", NULL, 0, 3,
              .help = "the force's three components"},
@@ -34,7 +32,6 @@ static const mm_param params[] = {
 };
 
 enum { O_MX, O_MY, O_MZ, O_M, O_D, O_MAXIS, O_SLIDE, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_MX] = MM_SCALAR("Mx", "moment about O, x component", "N m", .flags = MM_ANSWER | MM_EXACT),
     [O_MY] = MM_SCALAR("My", "moment about O, y component", "N m", .flags = MM_ANSWER | MM_EXACT),
@@ -114,15 +111,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* the drawing: axes at O, r - O, F at r, M at O, the axis */
     mm_sta_fbd(res);
     double size = fmax(wn, 1e-3), fs = Fn > 0 ? 0.6 * size / Fn : 0, ms = Mn > 0 ? 0.6 * size / Mn : 0;
-    static const char *const axis_names[3] = {"x", "y", "z"};
-    for (int k = 0; k < 3; k++) {
-        double tip[3] = {O[0], O[1], O[2]};
-        tip[k] += 0.5 * size;
-        mm_sta_line3(res, axis_names[k], O, tip, "ground");
-        double uu, vv;
-        mm_sta_project(tip[0], tip[1], tip[2], &uu, &vv);
-        mm_sta_label(res, uu, vv, "%s", axis_names[k]);
-    }
+    mm_sta_axes3(res, O, 0.5 * size);
     double a0[3], a1[3];
     for (int k = 0; k < 3; k++)
         a0[k] = O[k] - 0.7 * size * e[k], a1[k] = O[k] + 0.7 * size * e[k];
@@ -130,32 +119,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_sta_line3(res, "r - O", O, r, NULL);
     mm_sta_arrow3(res, "F", r, F, fs, 0, "N", NULL);
     mm_sta_arrow3(res, "M_O", O, M, ms, 0, "N m", "highlight");
-    double uu, vv;
-    mm_sta_project(O[0], O[1], O[2], &uu, &vv);
-    mm_sta_label(res, uu, vv, "O");
-    mm_sta_project(r[0], r[1], r[2], &uu, &vv);
-    mm_sta_label(res, uu, vv, "F = %.4g N", Fn);
+    mm_sta_label3(res, O, "O");
+    mm_sta_label3(res, r, "F = %.4g N", Fn);
     return MM_OK;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 4.1-4.5",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 4.1-4.5", NULL};
 
 const mm_exercise mm_ex_sta_moment = {
-    .id = "sta-moment",
-    .chapter = 3,
-    .section = "3.1.2",
+    .id = "sta-moment", .chapter = 3, .section = "3.1.2",
     .title = "Moment of a force about a point and an axis",
     .summary = "M = r x F in space, its lever arm, and the moment about an axis through the point.",
-    .tags = "statics, moment, cross product, lever arm, axis",
-    .theory = "exercises/sta/moment.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, moment, cross product, lever arm, axis", .theory = "exercises/sta/moment.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -3,9 +3,8 @@
  *
  *     sum_i T_i u_i + P = 0,   u_i the unit vector from the ring to anchor i  (1)
  *
- * Goal: equilibrium of a particle as a linear system; why three cables hold
- * a ring in space and two only in their own plane; cables that would have
- * to push.
+ * Goal: a particle's equilibrium as a linear system; why three cables hold
+ * a ring in space, two only in their own plane; cables that would push.
  * Method: (1) as a 3x3 system (or 2x2 in the plane of two cables), solved by
  * mm_equil with its rank test.  Checks: the ring's sum of forces put back;
  * the tensions again by Cramer's rule as triple products (eq. 3; Lami's
@@ -14,14 +13,13 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
 
 #include "mm_equil.h"
 #include "mm_exhelp.h"
+#include "mm_geom.h"
 #include "mm_sta.h"
 
 enum { P_ANCHORS, P_RING, P_LOAD };
-
 static const mm_param params[] = {
     [P_ANCHORS] = {"anchors", "cable anchors (x, y, z per row)", "m", MM_MATRIX, 0, -1e4, 1e4,
                    "-2,-1,3;2,-1.5,3;0,2,3", NULL, 3, 3,
@@ -33,7 +31,6 @@ static const mm_param params[] = {
 };
 
 enum { O_T, O_TMAX, O_TPLOT, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_T] = MM_SCALAR("T%d", "tension in cable %d", "N", .flags = MM_ANSWER, .first = 1, .last = 3),
     [O_TMAX] = MM_SCALAR("T_max", "largest tension", "N"),
@@ -57,40 +54,28 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* the angle between a and b, by atan2 (accurate near 0 and pi) */
-static double angle(const double *a, const double *b)
-{
-    double c[3];
-    mm_sta_cross(a, b, c);
-    return atan2(mm_sta_norm(c), mm_sta_dot(a, b));
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     int n = in[P_ANCHORS].rows;
     const double *ring = in[P_RING].data, *P = in[P_LOAD].data;
-    double u[3][3], L[3], T[3] = {0, 0, 0}, Pn = mm_sta_norm(P);
+    double u[3][3], L, T[3] = {0, 0, 0}, Tc[3], Pn = mm_sta_norm(P);   /* Tc: the second route */
     for (int i = 0; i < n; i++) {
         for (int k = 0; k < 3; k++)
             u[i][k] = in[P_ANCHORS].data[3 * i + k] - ring[k];
-        L[i] = mm_sta_norm(u[i]);
+        L = mm_sta_norm(u[i]);
         for (int k = 0; k < 3; k++)
-            u[i][k] /= L[i];
+            u[i][k] /= L;
     }
     mm_equil_result er;
-    int rc;
-    double Tc[3];                                       /* the second route */
     if (n == 3) {
-        /* eq. (2): the columns are the cables' unit vectors */
-        double A[9], b[3] = {-P[0], -P[1], -P[2]};
+        double A[9], b[3] = {-P[0], -P[1], -P[2]};     /* eq. (2): the columns are the cables' unit vectors */
         for (int k = 0; k < 3; k++)
             for (int i = 0; i < 3; i++)
                 A[3 * k + i] = u[i][k];
-        rc = mm_equil_solve(3, 3, A, b, T, NULL, NULL, &er, err);
+        int rc = mm_equil_solve(3, 3, A, b, T, NULL, NULL, &er, err);
         if (rc == MM_ESINGULAR)
-            return mm_error_set(err, MM_ESINGULAR, "anchors",
-                                "the three cables lie in one plane: the ring can move across it; move an anchor "
-                                "out of that plane");
+            return mm_error_set(err, MM_ESINGULAR, "anchors", "the three cables lie in one plane: the ring can "
+                                "move across it; move an anchor out of that plane");
         if (rc != MM_OK)
             return rc;
         for (int i = 0; i < 3; i++) {                   /* eq. (3), Cramer */
@@ -108,31 +93,29 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         for (int k = 0; k < 3; k++)
             nrm[k] /= nn;
         if (fabs(mm_sta_dot(P, nrm)) > 1e-9 * Pn)
-            return mm_error_set(err, MM_ESINGULAR, "load",
-                                "the load has %.4g N across the plane of the two cables: the ring would swing "
-                                "out of it; add a third cable", mm_sta_dot(P, nrm));
+            return mm_error_set(err, MM_ESINGULAR, "load", "the load has %.4g N across the plane of the two "
+                                "cables: the ring would swing out of it; add a third cable", mm_sta_dot(P, nrm));
         mm_sta_cross(nrm, u[0], e2);
         double A[4] = {1, mm_sta_dot(u[1], u[0]), 0, mm_sta_dot(u[1], e2)}, b[2] = {-mm_sta_dot(P, u[0]), -mm_sta_dot(P, e2)};
-        rc = mm_equil_solve(2, 2, A, b, T, NULL, NULL, &er, err);
+        int rc = mm_equil_solve(2, 2, A, b, T, NULL, NULL, &er, err);
         if (rc != MM_OK)
             return rc;
         /* eq. (4), Lami: each tension over the sine of the angle opposite */
-        double a12 = angle(u[0], u[1]), mP[3] = {-P[0], -P[1], -P[2]};
-        Tc[0] = Pn * sin(angle(u[1], mP)) / sin(a12);
-        Tc[1] = Pn * sin(angle(u[0], mP)) / sin(a12);
+        double a12 = mm_geom_angle3(u[0], u[1]), mP[3] = {-P[0], -P[1], -P[2]};   /* atan2: accurate near 0, pi */
+        Tc[0] = Pn * sin(mm_geom_angle3(u[1], mP)) / sin(a12);
+        Tc[1] = Pn * sin(mm_geom_angle3(u[0], mP)) / sin(a12);
     }
-    for (int i = 0; i < n; i++)
+    double rerr = 4 * DBL_EPSILON * Pn / er.rcond;      /* cond * eps of the load */
+    for (int i = 0; i < n; i++) {
         if (T[i] < -1e-9 * Pn)
             return mm_error_set(err, MM_ESINGULAR, "anchors",
                                 "cable %d would have to push (T = %.4g N): a cable can only pull; the load must "
                                 "point away from the anchors, inside the cone of the cables", i + 1, T[i]);
-    double rerr = 4 * DBL_EPSILON * Pn / er.rcond;      /* cond * eps of the load */
-    for (int i = 0; i < n; i++)
         if (fabs(T[i]) <= rerr)
             T[i] = 0;                                   /* a slack cable: 0, not rounding */
+    }
     double Tmax = mm_sta_reactions(res, O_T, O_TPLOT, n, T, rerr);   /* no cable pushes: largest |T| = largest T */
     mm_res_scalar_err(res, O_TMAX, Tmax, rerr, MM_ERR_ESTIMATE);
-
     /* check 1: the ring in equilibrium, eq. (1) */
     double sum[3] = {P[0], P[1], P[2]}, scale = Pn;
     for (int i = 0; i < n; i++) {
@@ -142,68 +125,26 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     mm_check_residual(res, "ring: |sum of forces| [N]", mm_sta_norm(sum), scale, 16);
     /* check 2: the tensions by the closed form */
-    double worst = 0;
-    int wi = 0;
-    for (int i = 0; i < n; i++)
-        if (fabs(T[i] - Tc[i]) >= worst)
-            worst = fabs(T[i] - Tc[i]), wi = i;
-    char *name = mm_res_printf(res, "cable %d: %s vs the linear solve [N]", wi + 1,
-                               n == 3 ? "Cramer's rule (triple products, eq. 3)" : "Lami's theorem (eq. 4)");
-    if (!name)
-        return MM_ENOMEM;
-    mm_res_check_abs(res, name, Tc[wi], T[wi], 16 * DBL_EPSILON * Pn / er.rcond);
+    int wi = mm_sta_worst(n, Tc, T, 1);
+    mm_sta_check_absf(res, Tc[wi], T[wi], 16 * DBL_EPSILON * Pn / er.rcond, "cable %d: %s vs the linear solve [N]",
+                      wi + 1, n == 3 ? "Cramer's rule (triple products, eq. 3)" : "Lami's theorem (eq. 4)");
     mm_res_method(res, "equilibrium of the ring as a linear system (LU with the rank test)", 0);
     if (er.rcond < 1e-3)
         mm_res_warn(res, "the cables are nearly in one plane (condition %.2g): small changes of the load "
                          "change the tensions a lot", 1 / er.rcond);
-
     /* the drawing */
     mm_sta_fbd(res);
-    double size = 0;
-    for (int i = 0; i < n; i++)
-        size = fmax(size, L[i]);
-    double fs = mm_sta_scale(fmax(Pn, Tmax), size, 0.4), ru, rv;
-    mm_sta_project(ring[0], ring[1], ring[2], &ru, &rv);
-    for (int i = 0; i < n; i++) {
-        const double *a = in[P_ANCHORS].data + 3 * i;
-        double xy[4], au, av;
-        mm_sta_project(a[0], a[1], a[2], &au, &av);
-        xy[0] = ru, xy[1] = rv, xy[2] = au, xy[3] = av;
-        char nm[24];
-        snprintf(nm, sizeof nm, "cable %d", i + 1);
-        mm_sta_member(res, nm, ru, rv, au, av, T[i], 1e-9 * Pn);
-        double box[8] = {au - 0.04 * size, av, au + 0.04 * size, av, au + 0.04 * size, av + 0.04 * size,
-                         au - 0.04 * size, av + 0.04 * size};
-        mm_sta_polygon(res, "anchor", 4, box, "ground");
-        double t[3] = {T[i] * u[i][0], T[i] * u[i][1], T[i] * u[i][2]};
-        if (T[i] > 0)
-            mm_sta_arrow3(res, "tension", ring, t, fs, 0, "N", "tension");
-        mm_sta_label(res, 0.5 * (ru + au), 0.5 * (rv + av), "T%d = %.4g N", i + 1, T[i]);
-        (void)xy;
-    }
-    mm_sta_circle(res, "ring", ru, rv, 0.03 * size, NULL);
-    mm_sta_arrow3(res, "load", ring, P, fs, 0, "N", NULL);
-    return rc;
+    mm_sta_cables3(res, n, ring, in[P_ANCHORS].data, T, u, P, fmax(Pn, Tmax), 1e-9 * Pn);
+    return MM_OK;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, ch. 3",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "ch. 3", NULL};
 
 const mm_exercise mm_ex_sta_particle_cables = {
-    .id = "sta-particle-cables",
-    .chapter = 3,
-    .section = "3.3",
+    .id = "sta-particle-cables", .chapter = 3, .section = "3.3",
     .title = "A ring held by cables",
     .summary = "Equilibrium of a particle in space: the tensions in two or three cables holding a loaded ring.",
-    .tags = "statics, particle, equilibrium, cables, tension, space",
-    .theory = "exercises/sta/particle_cables.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, particle, equilibrium, cables, tension, space", .theory = "exercises/sta/particle_cables.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

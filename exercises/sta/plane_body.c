@@ -15,24 +15,21 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
 
 #include "mm_equil.h"
 #include "mm_exhelp.h"
 #include "mm_sta.h"
 
 #define MAXL 6
-#define MAXP 20
 
 enum { P_LINKS, P_LOADS, P_C, P_BODY };
-
 static const mm_param params[] = {
     [P_LINKS] = {"links", "support links (x, y, dx, dy per row)", "", MM_MATRIX, 0, -1e4, 1e4,
                  "0,0,1,0;0,0,0,1;4,0,-1,2", NULL, MAXL, 4,
                  .help = "one row per reaction component: its point (m) and line direction (any length); "
                          "a pin is two rows, a roller one row normal to its surface"},
     [P_LOADS] = {"loads", "loads (x, y, Fx, Fy per row)", "", MM_MATRIX, 0, -1e9, 1e9,
-                 "1.5,0,0,-2000;4,1,800,0", NULL, MAXP, 4,
+                 "1.5,0,0,-2000;4,1,800,0", NULL, 20, 4,
                  .help = "one row per force: its point (m) and components (N, y up)"},
     [P_C] = {"C", "applied couple", "N m", MM_REAL, 0, -1e9, 1e9,
              .help = "the sum of couples on the body, counter-clockwise positive"},
@@ -42,7 +39,6 @@ static const mm_param params[] = {
 };
 
 enum { O_R, O_RPLOT, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_R] = MM_SCALAR("R%d", "reaction of link %d (along its direction)", "N", .flags = MM_ANSWER, .first = 1,
                       .last = MAXL),
@@ -64,38 +60,16 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* the motion a mechanism allows: (vx, vy) of the origin and a turn w */
-static int describe(const double *u, int n_links, int mech, int redundant, mm_error *err)
-{
-    char what[120];
-    if (fabs(u[2]) > 1e-9 * hypot(u[0], u[1]))
-        snprintf(what, sizeof what, "the links let the body turn about (%.4g, %.4g) m", 0.0 - u[1] / u[2],
-                 0.0 + u[0] / u[2]);
-    else
-        snprintf(what, sizeof what, "the links let the body slide along a line at %.1f deg to x",
-                 atan2(u[1], u[0]) * 180 / M_PI);
-    if (mech)
-        return mm_error_set(err, MM_ESINGULAR, "links", "improperly supported (%d link%s): %s%s; add or move a link",
-                            n_links, n_links > 1 ? "s" : "", what,
-                            redundant >= 0 ? ", while another link is redundant" : "");
-    return mm_error_set(err, MM_ESINGULAR, "links",
-                        "statically indeterminate: %d links for 3 equations; link %d is redundant", n_links,
-                        redundant + 1);
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const mm_value *Lk = &in[P_LINKS], *Ld = &in[P_LOADS];
     int n = Lk->rows;
     double A[3 * MAXL], b[3] = {0, 0, -in[P_C].x}, e[MAXL][2], R[MAXL], mech[3], self[MAXL];
     double Fs = fabs(in[P_C].x), size = 1e-3;
-    for (int k = 0; k < n; k++) {
+    for (int k = 0; k < n; k++) {                      /* eq. (1), row-major 3 x n */
         const double *l = Lk->data + 4 * k;
         double len = hypot(l[2], l[3]);
         e[k][0] = l[2] / len, e[k][1] = l[3] / len;
-    }
-    for (int k = 0; k < n; k++) {                      /* eq. (1), row-major 3 x n */
-        const double *l = Lk->data + 4 * k;
         A[0 * n + k] = e[k][0];
         A[1 * n + k] = e[k][1];
         A[2 * n + k] = l[0] * e[k][1] - l[1] * e[k][0];
@@ -110,22 +84,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_equil_result er;
     mm_error e2;
     int rc = mm_equil_solve(3, n, A, b, R, mech, self, &er, &e2);
-    if (rc == MM_ESINGULAR) {
-        int red = -1;
-        if (er.n_self > 0) {
-            red = 0;
-            for (int k = 1; k < n; k++)
-                if (fabs(self[k]) > fabs(self[red]))
-                    red = k;
-        }
-        return describe(mech, n, er.n_mech > 0, red, err);
-    }
+    if (rc == MM_ESINGULAR)
+        return mm_sta_improper2(&er, n, mech, self, err);     /* the motion the links allow, or a redundant one */
     if (rc != MM_OK) {
         *err = e2;
         return rc;
     }
     double Rmax = mm_sta_reactions(res, O_R, O_RPLOT, n, R, 4 * DBL_EPSILON * Fs / er.rcond);
-
     /* check 1: eq. (1) put back, forces and moment about the origin */
     double fx = -b[0], fy = -b[1], mz = -b[2], sf = Fs, sm = Fs * size;
     for (int k = 0; k < n; k++) {
@@ -136,8 +101,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_check_residual(res, "sum M about the origin [N m]", mz, sm + sf * size, 16);
     /* check 2: Ritter, eq. (3): moments about the meeting point of the
      * other two lines (forces across them when they are parallel) */
-    double worst = 0;
-    int wk = 0;
     double Rr[3];
     for (int k = 0; k < 3; k++) {
         int a = (k + 1) % 3, c = (k + 2) % 3;
@@ -147,10 +110,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             double s = ((pc[0] - pa[0]) * e[c][1] - (pc[1] - pa[1]) * e[c][0]) / den;
             double X = pa[0] + s * e[a][0], Y = pa[1] + s * e[a][1];
             num = -in[P_C].x;
-            for (int i = 0; i < Ld->rows; i++) {
-                const double *p = Ld->data + 4 * i;
-                num -= (p[0] - X) * p[3] - (p[1] - Y) * p[2];
-            }
+            for (int i = 0; i < Ld->rows; i++)
+                num -= (Ld->data[4 * i] - X) * Ld->data[4 * i + 3] - (Ld->data[4 * i + 1] - Y) * Ld->data[4 * i + 2];
             arm = (pk[0] - X) * e[k][1] - (pk[1] - Y) * e[k][0];
         } else {
             double nx = -e[a][1], ny = e[a][0];
@@ -160,57 +121,30 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             arm = e[k][0] * nx + e[k][1] * ny;
         }
         Rr[k] = num / arm;
-        if (fabs(Rr[k] - R[k]) >= worst)
-            worst = fabs(Rr[k] - R[k]), wk = k;
     }
-    char *name = mm_res_printf(res, "link %d by moments about where the other two meet (Ritter) vs the "
-                                    "linear solve [N]", wk + 1);
-    if (!name)
-        return MM_ENOMEM;
-    mm_res_check_abs(res, name, Rr[wk], R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond);
+    int wk = mm_sta_worst(3, Rr, R, 1);
+    mm_sta_check_absf(res, Rr[wk], R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond,
+                      "link %d by moments about where the other two meet (Ritter) vs the linear solve [N]", wk + 1);
     mm_res_method(res, "three equilibrium equations, LU with the rank test", 0);
-
     /* the drawing */
     mm_sta_fbd(res);
     double sc = mm_sta_scale(fmax(Rmax, Fs), size, 0.25);
     mm_sta_polygon(res, "body", in[P_BODY].rows, in[P_BODY].data, NULL);
-    for (int k = 0; k < n; k++) {
-        const double *l = Lk->data + 4 * k;
-        /* the link itself, on the side the reaction pushes from */
-        mm_sta_line(res, "link", l[0], l[1], l[0] - 0.12 * size * e[k][0], l[1] - 0.12 * size * e[k][1],
-                         "ground", 0, 0);
-        if (R[k] != 0)
-            mm_sta_force(res, "reaction", l[0], l[1], R[k] * e[k][0], R[k] * e[k][1], sc, 1);
-        mm_sta_label(res, l[0] - 0.15 * size * e[k][0], l[1] - 0.15 * size * e[k][1], "R%d", k + 1);
-    }
-    for (int i = 0; i < Ld->rows; i++) {
-        const double *p = Ld->data + 4 * i;
-        mm_sta_force(res, "load", p[0], p[1], p[2], p[3], sc, 1);
-    }
+    mm_sta_links2(res, n, Lk->data, R, size, sc);
+    mm_sta_loads2(res, Ld->rows, Ld->data, sc);
     if (in[P_C].x != 0)
         mm_sta_couple(res, "couple", 0.5 * size, 0, 0.08 * size, in[P_C].x);
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 5.1-5.7",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 5.1-5.7", NULL};
 
 const mm_exercise mm_ex_sta_plane_body = {
-    .id = "sta-plane-body",
-    .chapter = 3,
-    .section = "3.4",
+    .id = "sta-plane-body", .chapter = 3, .section = "3.4",
     .title = "A rigid body in a plane on its supports",
     .summary = "Reactions of a plane body held by pins and rollers (links), from three equilibrium equations; "
                "improper and redundant supports named.",
-    .tags = "statics, rigid body, plane, reactions, supports, equilibrium",
-    .theory = "exercises/sta/plane_body.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, rigid body, plane, reactions, supports, equilibrium", .theory = "exercises/sta/plane_body.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

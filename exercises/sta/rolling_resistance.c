@@ -22,7 +22,6 @@
 #include "mm_sta.h"
 
 enum { P_W, P_R, P_A, P_MU, P_THETA, P_POINTS };
-
 static const mm_param params[] = {
     [P_W] = {"W", "load on the wheel", "N", MM_REAL, 1000, 1e-3, 1e7, .help = "weight plus what it carries"},
     [P_R] = {"r", "wheel radius", "m", MM_REAL, 0.3, 1e-3, 10, .help = "of the wheel"},
@@ -36,7 +35,6 @@ static const mm_param params[] = {
 };
 
 enum { O_PROLL, O_PSLIDE, O_MODE, O_PAPPROX, O_MUB, O_ROLL, O_SLIDE, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_PROLL] = MM_SCALAR("P_roll", "pull that starts the wheel rolling", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_PSLIDE] = MM_SCALAR("P_slide", "pull that would make it slide", "N", .flags = MM_ANSWER | MM_EXACT),
@@ -124,26 +122,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 8.8",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 6/10",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 8.8", MM_STA_MERIAM "article 6/10", NULL};
 
 const mm_exercise mm_ex_sta_rolling_resistance = {
-    .id = "sta-rolling-resistance",
-    .chapter = 3,
-    .section = "3.8.3",
+    .id = "sta-rolling-resistance", .chapter = 3, .section = "3.8.3",
     .title = "Rolling resistance: roll or slide?",
     .summary = "The pull that starts a wheel rolling on a soft surface against the one that would make it "
                "slide; the boundary between them.",
-    .tags = "statics, friction, rolling resistance, wheel, sliding",
-    .theory = "exercises/sta/rolling_resistance.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, friction, rolling resistance, wheel, sliding", .theory = "exercises/sta/rolling_resistance.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -14,32 +14,27 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
-#include <string.h>
 
 #include "mm_equil.h"
 #include "mm_exhelp.h"
 #include "mm_sta.h"
 
 #define MAXL 8
-#define MAXP 20
 
 enum { P_LINKS, P_LOADS, P_BODY };
-
 static const mm_param params[] = {
     [P_LINKS] = {"links", "support links (x, y, z, dx, dy, dz per row)", "", MM_MATRIX, 0, -1e4, 1e4,
                  "0,0,0,1,0,0;0,0,0,0,1,0;0,0,0,0,0,1;2,0,0,0,1,0;2,0,0,0,0,1;0,1,0,0,0,1", NULL, MAXL, 6,
                  .help = "one row per reaction component: its point (m) and direction; a ball joint is three "
                          "rows at one point, a journal bearing two across the shaft"},
     [P_LOADS] = {"loads", "loads (x, y, z, Fx, Fy, Fz per row)", "", MM_MATRIX, 0, -1e9, 1e9,
-                 "1,0.5,0,0,0,-500;2,1,0,100,0,-300", NULL, MAXP, 6,
+                 "1,0.5,0,0,0,-500;2,1,0,100,0,-300", NULL, 20, 6,
                  .help = "one row per force: its point (m) and components (N, z up)"},
     [P_BODY] = {"body", "outline of the body (x, y, z per row)", "m", MM_MATRIX, 0, -1e4, 1e4,
                 "0,0,0;2,0,0;2,1,0;0,1,0", NULL, 50, 3, .help = "for the drawing only: a polygon in space"},
 };
 
 enum { O_R, O_RPLOT, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_R] = MM_SCALAR("R%d", "reaction of link %d (along its direction)", "N", .flags = MM_ANSWER, .first = 1,
                       .last = MAXL),
@@ -92,32 +87,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_equil_result er;
     mm_error e2;
     int rc = mm_equil_solve(6, n, A, b, R, mech, self, &er, &e2);
-    if (rc == MM_ESINGULAR) {
-        if (er.n_mech > 0) {
-            /* the free motion: origin velocity v, angular velocity w */
-            double *v = mech, *w = mech + 3, wn = mm_sta_norm(w);
-            if (wn > 1e-9 * mm_sta_norm(v)) {
-                double p[3];
-                mm_sta_cross(w, v, p);
-                return mm_error_set(err, MM_ESINGULAR, "links",
-                                    "improperly supported (%d links, rank %d): the body can turn about the axis "
-                                    "through (%.3g, %.3g, %.3g) along (%.3g, %.3g, %.3g); add or move a link",
-                                    n, er.rank, p[0] / (wn * wn) + 0.0, p[1] / (wn * wn) + 0.0,
-                                    p[2] / (wn * wn) + 0.0, w[0] / wn + 0.0, w[1] / wn + 0.0, w[2] / wn + 0.0);
-            }
-            double vn = mm_sta_norm(v);
-            return mm_error_set(err, MM_ESINGULAR, "links",
-                                "improperly supported (%d links, rank %d): the body can slide along (%.3g, %.3g, "
-                                "%.3g); add or move a link", n, er.rank, v[0] / vn + 0.0, v[1] / vn + 0.0,
-                                v[2] / vn + 0.0);
-        }
-        int red = 0;
-        for (int k = 1; k < n; k++)
-            if (fabs(self[k]) > fabs(self[red]))
-                red = k;
-        return mm_error_set(err, MM_ESINGULAR, "links",
-                            "statically indeterminate: %d links for 6 equations; link %d is redundant", n, red + 1);
-    }
+    if (rc == MM_ESINGULAR)
+        return mm_sta_improper3(&er, n, mech, self, err);     /* the motion the links allow, or a redundant one */
     if (rc != MM_OK) {
         *err = e2;
         return rc;
@@ -135,8 +106,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_check_residual(res, "sum F and sum M / size, largest component [N]", worst, scale, 32);
     /* check 2: virtual work, eqs. (3)-(4): the motion xi_k with A^T xi_k =
      * e_k stretches link k alone; R_k = -(power of the loads on it) */
-    double At[36], xi[6], worst_vw = 0, Rv = 0;
-    int wk = 0;
+    double At[36], xi[6], Rv[6];
     for (int r = 0; r < 6; r++)
         for (int c = 0; c < 6; c++)
             At[r * 6 + c] = A[c * 6 + r];
@@ -151,59 +121,30 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double pw = 0;
         for (int c = 0; c < 6; c++)
             pw += W[c] * xi[c];
-        if (fabs(-pw - R[k]) >= worst_vw)
-            worst_vw = fabs(-pw - R[k]), wk = k, Rv = -pw;
+        Rv[k] = -pw;
     }
-    char *name = mm_res_printf(res, "link %d by virtual work (the motion that stretches it alone) vs the "
-                                    "linear solve [N]", wk + 1);
-    if (!name)
-        return MM_ENOMEM;
-    mm_res_check_abs(res, name, Rv, R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond);
+    int wk = mm_sta_worst(6, Rv, R, 1);
+    mm_sta_check_absf(res, Rv[wk], R[wk], 64 * DBL_EPSILON * (Fs + Rmax) / er.rcond,
+                      "link %d by virtual work (the motion that stretches it alone) vs the linear solve [N]", wk + 1);
     mm_res_method(res, "six equilibrium equations, LU with the rank test", 0);
-
     /* the drawing */
     mm_sta_fbd(res);
-    double sc = mm_sta_scale(fmax(Rmax, Fs), size, 0.3), xy[2 * 50];
-    for (int i = 0; i < in[P_BODY].rows; i++)
-        mm_sta_project(in[P_BODY].data[3 * i], in[P_BODY].data[3 * i + 1], in[P_BODY].data[3 * i + 2], &xy[2 * i],
-                       &xy[2 * i + 1]);
-    mm_sta_polygon(res, "body", in[P_BODY].rows, xy, NULL);
-    for (int k = 0; k < n; k++) {
-        const double *l = Lk->data + 6 * k;
-        double len = mm_sta_norm(l + 3), e[3] = {l[3] / len, l[4] / len, l[5] / len}, t[4], f[3];
-        mm_sta_project(l[0], l[1], l[2], &t[0], &t[1]);
-        mm_sta_project(l[0] - 0.15 * size * e[0], l[1] - 0.15 * size * e[1], l[2] - 0.15 * size * e[2], &t[2], &t[3]);
-        mm_sta_path(res, "link", 2, t, "ground");
-        for (int c = 0; c < 3; c++)
-            f[c] = R[k] * e[c];
-        if (R[k] != 0)
-            mm_sta_arrow3(res, "reaction", l, f, sc, 1, "N", NULL);
-        mm_sta_label(res, t[2], t[3], "R%d", k + 1);
-    }
+    double sc = mm_sta_scale(fmax(Rmax, Fs), size, 0.3);
+    mm_sta_polygon3(res, "body", in[P_BODY].rows, in[P_BODY].data, NULL);
+    mm_sta_links3(res, n, Lk->data, R, size, sc);
     for (int i = 0; i < Ld->rows; i++)
         mm_sta_arrow3(res, "load", Ld->data + 6 * i, Ld->data + 6 * i + 3, sc, 1, "N", NULL);
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 5.5-5.7",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 5.5-5.7", NULL};
 
 const mm_exercise mm_ex_sta_space_body = {
-    .id = "sta-space-body",
-    .chapter = 3,
-    .section = "3.5",
+    .id = "sta-space-body", .chapter = 3, .section = "3.5",
     .title = "A rigid body in space on six links",
     .summary = "A plate or a shaft held by ball joints, bearings and rods: six reactions from six equations, "
                "checked by virtual work; improper supports named by the motion they allow.",
-    .tags = "statics, rigid body, space, reactions, six links, virtual work",
-    .theory = "exercises/sta/space_body.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, rigid body, space, reactions, six links, virtual work", .theory = "exercises/sta/space_body.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -22,14 +22,12 @@
  */
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
 #include "mm_exhelp.h"
 #include "mm_roots.h"
 #include "mm_sta.h"
 
 enum { P_L, P_W, P_K, P_A, P_POINTS };
-
 static const mm_param params[] = {
     [P_L] = {"L", "rod length", "m", MM_REAL, 1, 1e-3, 100, .help = "from the hinge to the weight"},
     [P_W] = {"W", "weight at the top", "N", MM_REAL, 100, 0, 1e7, .help = "the load that tends to topple the rod"},
@@ -39,10 +37,8 @@ static const mm_param params[] = {
 };
 
 enum { O_WCR, O_RATIO, O_THEQ, O_NEQ, O_UP, O_EQ, O_V, O_STABLE, O_UNSTABLE, O_NEUTRAL, O_BRANCH, O_ANIM };
-
 static const char *const eqcols[] = {"theta", "V", "d2V", "kind", NULL};
 static const char *const equnits[] = {"rad", "J", "J", "", NULL};
-
 static const mm_output outputs[] = {
     [O_WCR] = MM_SCALAR("W_cr", "critical load k a^2 / L", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_RATIO] = MM_SCALAR("W_ratio", "W / W_cr", "", .flags = MM_EXACT),
@@ -60,30 +56,13 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the rod at a tilted equilibrium (or upright), spring, weight and hinge"),
 };
 
-typedef struct sys {
-    double L, W, k, a;
-} sys;
+typedef struct sys { double L, W, k, a; } sys;
 
-static double V(const sys *s, double t)
-{
-    double sn = sin(t);
-    return 0.5 * s->k * s->a * s->a * sn * sn + s->W * s->L * cos(t);   /* eq. (1) */
-}
-
-static double dV(const sys *s, double t)
-{
-    return sin(t) * (s->k * s->a * s->a * cos(t) - s->W * s->L);        /* eq. (2) */
-}
-
-static double d2V(const sys *s, double t)
-{
-    return s->k * s->a * s->a * cos(2 * t) - s->W * s->L * cos(t);      /* eq. (3) */
-}
-
-static double d4V(const sys *s, double t)
-{
-    return -4 * s->k * s->a * s->a * cos(2 * t) + s->W * s->L * cos(t);
-}
+/* V (eq. 1), V' (eq. 2), V'' (eq. 3) and V'''' */
+static double V(const sys *s, double t) { return 0.5 * s->k * s->a * s->a * sin(t) * sin(t) + s->W * s->L * cos(t); }
+static double dV(const sys *s, double t) { return sin(t) * (s->k * s->a * s->a * cos(t) - s->W * s->L); }
+static double d2V(const sys *s, double t) { return s->k * s->a * s->a * cos(2 * t) - s->W * s->L * cos(t); }
+static double d4V(const sys *s, double t) { return -4 * s->k * s->a * s->a * cos(2 * t) + s->W * s->L * cos(t); }
 
 static int dV_fn(double t, double *f, void *p)
 {
@@ -109,37 +88,30 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_scalar(res, O_RATIO, s.W / Wcr);
     if (c < 1)
         mm_res_scalar(res, O_THEQ, acos(c));
-
     /* the equilibria: roots of V' over one turn, from -pi + 0.1 so that
      * theta = pi is inside (then folded into (-pi, pi]) */
     enum { NSUB = 720 };
     mm_roots_root roots[NSUB + 1];
-    mm_roots_result rr = {.roots = roots, .cap = NSUB + 1};
-    mm_roots_options opt;
-    mm_roots_options_init(&opt);
-    opt.n = NSUB;
-    opt.tol = 1e-15;
-    opt.max_iter = 200;
-    mm_roots_problem pb = {.f = dV_fn, .params = &s, .a = -M_PI + 0.1, .b = M_PI + 0.1};
-    int rc = mm_roots_solve(&pb, &opt, &rr, err);
+    mm_roots_result rr;
+    int rc = mm_roots_scan(dV_fn, &s, -M_PI + 0.1, M_PI + 0.1, NSUB, 1e-15, 200, roots, &rr, err);
     if (rc != MM_OK)
         return rc;
     int n = rr.nroots;
-    double th[NSUB + 1], w[NSUB + 1], d2[NSUB + 1];
+    double th[NSUB + 1], w[NSUB + 1], d2[NSUB + 1], v[NSUB + 1];
     int kind[NSUB + 1];
     static const char *const kinds[] = {"unstable", "neutral", "stable"};
     for (int i = 0; i < n; i++) {
         th[i] = roots[i].x > M_PI ? roots[i].x - 2 * M_PI : roots[i].x;
         /* the root lies within its final bracket; when Brent stopped on an
          * exact zero of the computed V', within the rounding of V' over V'' */
-        w[i] = roots[i].fx != 0 ? roots[i].width
-                                : 4 * DBL_EPSILON * (s.k * s.a * s.a + s.W * s.L) / fmax(fabs(d2V(&s, roots[i].x)), 1e-300);
+        w[i] = roots[i].fx != 0 ? roots[i].width : 4 * DBL_EPSILON * big / fmax(fabs(d2V(&s, roots[i].x)), 1e-300);
         /* a neutral (triple) root: cos(theta) - 1 rounds to 0 below sqrt(2 eps) */
         if (roots[i].fx == 0)
             w[i] = fmin(w[i], 4 * sqrt(DBL_EPSILON));
         d2[i] = d2V(&s, th[i]);
         /* neutral: V'' at rounding level of its terms; then V'''' decides */
         kind[i] = fabs(d2[i]) <= 1e-9 * big ? 1 : d2[i] > 0 ? 2 : 0;
+        v[i] = V(&s, th[i]);
     }
     mm_res_scalar(res, O_NEQ, n);
     mm_table *t = mm_res_table(res, O_EQ, n);
@@ -147,7 +119,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     int up = 0, ns[3] = {0, 0, 0};
     for (int i = 0; i < n; i++) {
-        t->cell[4 * i] = th[i], t->cell[4 * i + 1] = V(&s, th[i]), t->cell[4 * i + 2] = d2[i];
+        t->cell[4 * i] = th[i], t->cell[4 * i + 1] = v[i], t->cell[4 * i + 2] = d2[i];
         const char *txt = kinds[kind[i]];
         if (kind[i] == 1)
             txt = d4V(&s, th[i]) > 0 ? "neutral (V'' = 0); stable by V''''" : "neutral (V'' = 0); unstable by V''''";
@@ -157,22 +129,16 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         ns[kind[i]]++;
     }
     mm_res_scalar_text(res, O_UP, up, up > 0 ? "stable" : up < 0 ? "unstable" : "neutral");
-
     /* check 1: the roots against the closed forms 0, pi, +-acos(c) */
-    double cf[4];
-    int ncf = 0;
-    cf[ncf++] = 0, cf[ncf++] = M_PI;
-    if (c < 1 && acos(c) > 0)
-        cf[ncf++] = acos(c), cf[ncf++] = -acos(c);
+    double cf[4] = {0, M_PI, acos(c), -acos(c)};
+    int ncf = c < 1 && acos(c) > 0 ? 4 : 2;             /* the tilted pair only below W_cr */
     double worst = 0, wtol = 0;
     for (int j = 0; j < ncf; j++) {
-        int best = -1;
-        for (int i = 0; i < n; i++) {
-            double d = fabs(remainder(th[i] - cf[j], 2 * M_PI));
-            if (best < 0 || d < fabs(remainder(th[best] - cf[j], 2 * M_PI)))
-                best = i;
-        }
-        double d = best >= 0 ? fabs(remainder(th[best] - cf[j], 2 * M_PI)) : INFINITY;
+        int best = -1;                                   /* the root found nearest to cf[j] */
+        double d = INFINITY;
+        for (int i = 0; i < n; i++)
+            if (fabs(remainder(th[i] - cf[j], 2 * M_PI)) < d)
+                d = fabs(remainder(th[i] - cf[j], 2 * M_PI)), best = i;
         double tol = best >= 0 ? w[best] + 8 * DBL_EPSILON * M_PI : 0;   /* and the rounding of the closed form */
         if (d / (tol + 1e-300) >= worst / (wtol + 1e-300))
             worst = d, wtol = tol;
@@ -202,7 +168,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_check_residual(res, "force balance: moment about the hinge at every equilibrium [N m]", wm, big, 16);
     mm_res_method(res, "roots of dV/dtheta (subdivide, bracket, Brent), classified by d2V/dtheta2", 0);
     mm_res_method_stat(res, "evaluations", (double)rr.nevals);
-
     /* the curves */
     int np = (int)in[P_POINTS].x;
     mm_series *sv = mm_res_series(res, O_V, np);
@@ -211,16 +176,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_linspace(-M_PI, M_PI, np, sv->x);
     for (int i = 0; i < np; i++)
         sv->y[i] = V(&s, sv->x[i]);
-    for (int k = 0; k < 3; k++) {
-        if (!ns[k])
-            continue;
-        mm_series *d = mm_res_series(res, k == 2 ? O_STABLE : k == 0 ? O_UNSTABLE : O_NEUTRAL, ns[k]);
-        if (!d)
-            return MM_ENOMEM;
-        for (int i = 0, j = 0; i < n; i++)
-            if (kind[i] == k)
-                d->x[j] = th[i], d->y[j] = V(&s, th[i]), j++;
-    }
+    static const int outs[3] = {O_UNSTABLE, O_NEUTRAL, O_STABLE};
+    if (mm_sta_equilibria(res, n, th, v, kind, 3, outs) != MM_OK)
+        return MM_ENOMEM;
     if (Wcr > 0) {
         mm_series *b = mm_res_series(res, O_BRANCH, 101);
         if (!b)
@@ -234,50 +192,22 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                          "V'''' = -3 k a^2 < 0 makes it unstable");
 
     /* the drawing at the tilted equilibrium, or upright */
-    double q = c < 1 ? acos(c) : 0, L = s.L, xw = -0.6 * L;
-    double tip[2] = {L * sin(q), L * cos(q)}, sp[2] = {s.a * sin(q), s.a * cos(q)};
+    double q = c < 1 ? acos(c) : 0;
     mm_sta_fbd(res);
-    mm_sta_pin(res, "hinge", 0, 0, 0.1 * L, 0);
-    mm_sta_line(res, "rod", 0, 0, tip[0], tip[1], NULL, 0, 0);
-    double guide[4] = {xw, 0, xw, 1.2 * L};
-    mm_sta_path(res, "guide", 2, guide, "ground");
-    mm_shape *spring = mm_anim_shape(res, "spring", MM_SHAPE_LINE, 1, 16);
-    if (!spring)
-        return MM_ENOMEM;
-    for (int k = 0; k < 16; k++) {
-        double f = k / 15.0, zig = k > 1 && k < 14 ? (k % 2 ? 0.04 : -0.04) * L : 0;
-        spring->x[k] = xw + f * (sp[0] - xw), spring->y[k] = sp[1] + zig;
-    }
-    double sc = mm_sta_scale(fmax(s.W, s.k * s.a * fabs(sin(q))), L, 0.4);
-    mm_sta_force(res, "W", tip[0], tip[1], 0, -s.W, sc, 0);
-    if (q != 0)
-        mm_sta_force(res, "spring force", sp[0], sp[1], -s.k * sp[0], 0, sc, 0);
-    mm_sta_force(res, "hinge reaction", 0, 0, s.k * sp[0], s.W, sc, 1);
-    mm_sta_label(res, tip[0], tip[1] + 0.05 * L, "theta = %.4g rad (%s)", q,
-                          q != 0 ? "unstable" : up > 0 ? "stable" : up < 0 ? "unstable" : "neutral");
+    mm_sta_rod_spring(res, s.L, s.a, s.k, s.W, q,
+                      q != 0 ? "unstable" : up > 0 ? "stable" : up < 0 ? "unstable" : "neutral");
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 11.5-11.7",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, articles 7/3-7/4",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 11.5-11.7", MM_STA_MERIAM "articles 7/3-7/4", NULL};
 
 const mm_exercise mm_ex_sta_stability = {
-    .id = "sta-stability",
-    .chapter = 3,
-    .section = "3.11",
+    .id = "sta-stability", .chapter = 3, .section = "3.11",
     .title = "Stability of equilibrium from the potential energy",
     .summary = "An upright rod held by a spring: equilibria where dV/dtheta = 0, stable or unstable by the "
                "second derivative, and the critical load where the upright position buckles.",
     .tags = "statics, potential energy, stability, equilibrium, buckling, bifurcation",
     .theory = "exercises/sta/stability.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -18,10 +18,10 @@
 #include <math.h>
 
 #include "mm_exhelp.h"
+#include "mm_quad.h"
 #include "mm_sta.h"
 
 enum { P_P, P_R1, P_R2, P_MU, P_WEAR, P_POINTS };
-
 static const char *const wears[] = {"new", "worn", NULL};
 
 static const mm_param params[] = {
@@ -35,7 +35,6 @@ static const mm_param params[] = {
 };
 
 enum { O_M, O_MNEW, O_MWORN, O_PMAX, O_REFF, O_PNEW, O_PWORN, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_M] = MM_SCALAR("M", "friction torque in the chosen condition", "N m", .flags = MM_ANSWER | MM_EXACT),
     [O_MNEW] = MM_SCALAR("M_new", "friction torque, new (uniform pressure)", "N m", .flags = MM_EXACT),
@@ -78,17 +77,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* checks: 5-point Gauss-Legendre on 8 rings: exact for these
      * polynomials (r^2 and r), so rounding only */
-    static const double gx[5] = {0, 0.5384693101056831, -0.5384693101056831, 0.9061798459386640, -0.9061798459386640};
-    static const double gw[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665, 0.2369268850561891,
-                                 0.2369268850561891};
-    double F = 0, Mq = 0;
-    for (int k = 0; k < 8; k++) {
-        double a = R1 + (R2 - R1) * k / 8, b = R1 + (R2 - R1) * (k + 1) / 8;
-        for (int g = 0; g < 5; g++) {
-            double r = 0.5 * (a + b) + 0.5 * (b - a) * gx[g], p = worn ? C / r : pnew, w = 0.5 * (b - a) * gw[g];
-            F += w * p * 2 * M_PI * r;                  /* eq. (1): the ring 2 pi r dr */
-            Mq += w * mu * p * 2 * M_PI * r * r;        /* its friction moment */
-        }
+    double gr[40], gw[40], F = 0, Mq = 0;
+    mm_quad_gl5_nodes(R1, R2, 8, gr, gw);
+    for (int i = 0; i < 40; i++) {
+        double r = gr[i], p = worn ? C / r : pnew;
+        F += gw[i] * p * 2 * M_PI * r;                  /* eq. (1): the ring 2 pi r dr */
+        Mq += gw[i] * mu * p * 2 * M_PI * r * r;        /* its friction moment */
     }
     mm_res_check_rel(res, "integral of p over the contact vs P (quadrature)", F, P, 64 * DBL_EPSILON);
     mm_res_check_abs(res, "integral of mu p r over the contact vs the closed form [N m] (quadrature)", Mq, M,
@@ -122,39 +116,21 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         if (r <= 0)
             continue;
         double p = worn ? C / r : pnew;
-        for (int side = -1; side <= 1; side += 2) {
-            mm_shape *s = mm_anim_shape(res, "pressure", MM_SHAPE_ARROW, 1, 2);
-            double *v = s ? mm_shape_values(res, s) : NULL;
-            if (!v)
-                return MM_ENOMEM;
-            s->x[0] = s->x[1] = side * r, s->y[0] = -ps * p, s->y[1] = 0;
-            s->unit = "Pa", s->scale = ps, v[0] = p;
-        }
+        for (int side = -1; side <= 1; side += 2)
+            mm_sta_arrow(res, "pressure", side * r, -ps * p, side * r, 0, "Pa", ps, p);
     }
     mm_sta_label(res, R2, 0.3 * H, "M = %.4g N m (%s)", M, wears[worn]);
     return MM_OK;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, section 8.6",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, article 6/8",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "section 8.6", MM_STA_MERIAM "article 6/8", NULL};
 
 const mm_exercise mm_ex_sta_thrust_bearing = {
-    .id = "sta-thrust-bearing",
-    .chapter = 3,
-    .section = "3.8.2",
+    .id = "sta-thrust-bearing", .chapter = 3, .section = "3.8.2",
     .title = "Thrust bearing: friction on a collar",
     .summary = "The friction torque of a collar or disc pressed on its seat, new (uniform pressure) or worn "
                "(uniform wear), as integrals over the contact.",
-    .tags = "statics, friction, thrust bearing, collar, disc clutch, wear",
-    .theory = "exercises/sta/thrust_bearing.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, friction, thrust bearing, collar, disc clutch, wear", .theory = "exercises/sta/thrust_bearing.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

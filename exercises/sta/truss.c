@@ -18,15 +18,12 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
-#include <string.h>
 
 #include "mm_exhelp.h"
 #include "mm_sta.h"
 #include "mm_truss.h"
 
 enum { P_NODES, P_MEMBERS, P_SUPPORTS, P_LOADS };
-
 static const mm_param params[] = {
     [P_NODES] = {"nodes", "joints (x, y per row)", "m", MM_MATRIX, 0, -1e4, 1e4, "0,0;4,0;8,0;2,3;6,3", NULL,
                  MM_TRUSS_MAX_NODES, 2,
@@ -41,17 +38,14 @@ static const mm_param params[] = {
                             "level ground, 1,0 a roller on a wall"},
     [P_LOADS] = {"loads", "loads (joint, Fx, Fy per row)", "N", MM_MATRIX, 0, -1e9, 1e9, "2,0,-10000", NULL,
                  MM_TRUSS_MAX_LOADS, 3,
-                 .help = "one row per load: the joint it acts on and its components (+y up); at most "
-                         "100 rows"},
+                 .help = "one row per load: the joint it acts on and its components (+y up); at most 100 rows"},
 };
 
 enum { O_DET, O_NJ, O_NM, O_NR, O_TMAX, O_CMAX, O_MEMBERS, O_REACT, O_FPLOT, O_ANIM };
-
 static const char *const mcols[] = {"member", "force", "joint_i", "joint_j", "length", "state", NULL};
 static const char *const munits[] = {"", "N", "", "", "m", "", NULL};
 static const char *const rcols[] = {"node", "Rx", "Ry", NULL};
 static const char *const runits[] = {"", "N", "N", NULL};
-
 static const mm_output outputs[] = {
     [O_DET] = MM_SCALAR("determinacy", "determinacy m + r - 2j", "", .flags = MM_ANSWER | MM_EXACT),
     [O_NJ] = MM_SCALAR("n_joints", "joints j", "", .flags = MM_EXACT),
@@ -66,8 +60,8 @@ static const mm_output outputs[] = {
     [O_ANIM] = MM_ANIMATION("the truss: members in tension and compression, loads and reactions"),
 };
 
-/* ---- the truss from the parameters ---------------------------------------------- */
-
+/* The truss from the parameters: joints numbered from 1 turned into 0-based
+ * indices, with the storage the mm_truss points into. */
 typedef struct model {
     int ends[2 * MM_TRUSS_MAX_MEMBERS], sup[3 * MM_TRUSS_MAX_SUPPORTS], lnode[MM_TRUSS_MAX_LOADS];
     double lf[2 * MM_TRUSS_MAX_LOADS];
@@ -132,102 +126,6 @@ static int check(const mm_value *in, mm_error *err)
     return load_model(in, &m, err);
 }
 
-/* ---- the checks -------------------------------------------------------------------- */
-
-/* Every joint's sum of forces, recomputed from the geometry (eq. 1): the
- * largest |sum F| and the largest sum of |terms| at a joint. */
-static void joint_residual(const mm_truss *t, const double *F, const double *R, double *worst, double *scale,
-                           double *total)
-{
-    double sx[MM_TRUSS_MAX_NODES] = {0}, sy[MM_TRUSS_MAX_NODES] = {0}, ab[MM_TRUSS_MAX_NODES] = {0};
-    for (int e = 0; e < t->n_members; e++) {
-        int a = t->ends[2 * e], b = t->ends[2 * e + 1];
-        double dx = t->xy[2 * b] - t->xy[2 * a], dy = t->xy[2 * b + 1] - t->xy[2 * a + 1], L = hypot(dx, dy);
-        double fx = F[e] * dx / L, fy = F[e] * dy / L;
-        sx[a] += fx, sy[a] += fy, sx[b] -= fx, sy[b] -= fy;
-        ab[a] += fabs(F[e]), ab[b] += fabs(F[e]);
-    }
-    for (int l = 0; l < t->n_loads; l++) {
-        int j = t->load_node[l];
-        sx[j] += t->load_f[2 * l], sy[j] += t->load_f[2 * l + 1];
-        ab[j] += fabs(t->load_f[2 * l]) + fabs(t->load_f[2 * l + 1]);
-    }
-    *worst = *scale = *total = 0;
-    for (int j = 0; j < t->n_nodes; j++) {
-        sx[j] += R[2 * j], sy[j] += R[2 * j + 1];
-        ab[j] += fabs(R[2 * j]) + fabs(R[2 * j + 1]);
-        *worst = fmax(*worst, hypot(sx[j], sy[j]));
-        *scale = fmax(*scale, ab[j]);
-        *total += ab[j];
-    }
-}
-
-/* The whole truss as one body: sum Fx, sum Fy and sum M about the first
- * joint of loads and reactions; the largest of the three over its scale. */
-static void body_residual(const mm_truss *t, const double *R, double *worst, double *scale)
-{
-    double fx = 0, fy = 0, mz = 0, sf = 0, sm = 0, x0 = t->xy[0], y0 = t->xy[1];
-    for (int k = 0; k < t->n_loads + t->n_nodes; k++) {
-        int j = k < t->n_loads ? t->load_node[k] : k - t->n_loads;
-        double px = k < t->n_loads ? t->load_f[2 * k] : R[2 * j];
-        double py = k < t->n_loads ? t->load_f[2 * k + 1] : R[2 * j + 1];
-        double m = (t->xy[2 * j] - x0) * py - (t->xy[2 * j + 1] - y0) * px;
-        fx += px, fy += py, mz += m;
-        sf += fabs(px) + fabs(py), sm += fabs(m);
-    }
-    double arm = 1;
-    for (int j = 0; j < t->n_nodes; j++)
-        arm = fmax(arm, hypot(t->xy[2 * j] - x0, t->xy[2 * j + 1] - y0));
-    *worst = fmax(hypot(fx, fy), fabs(mz) / arm);
-    *scale = fmax(sf, sm / arm);
-}
-
-/* ---- the drawing ---------------------------------------------------------------------- */
-
-static int draw(const mm_truss *t, const double *F, const double *R, double fscale, double ftol, mm_result *res)
-{
-    mm_sta_fbd(res);
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int j = 0; j < t->n_nodes; j++)
-        for (int d = 0; d < 2; d++)
-            lo[d] = fmin(lo[d], t->xy[2 * j + d]), hi[d] = fmax(hi[d], t->xy[2 * j + d]);
-    double size = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]), 1e-6), sup = 0.06 * size;
-    for (int e = 0; e < t->n_members; e++) {
-        const double *a = t->xy + 2 * t->ends[2 * e], *b = t->xy + 2 * t->ends[2 * e + 1];
-        char name[24];
-        snprintf(name, sizeof name, "member %d", e + 1);
-        mm_sta_member(res, name, a[0], a[1], b[0], b[1], F[e], ftol);
-    }
-    for (int s = 0; s < t->n_supports; s++) {
-        const int *r = t->supports + 3 * s;
-        const double *p = t->xy + 2 * r[0];
-        if (r[1] && r[2])
-            mm_sta_pin(res, "pin", p[0], p[1], sup, 0);
-        else
-            mm_sta_roller(res, "roller", p[0], p[1], sup, r[2] ? 0 : -M_PI / 2);
-        for (int d = 0; d < 2; d++)
-            if (r[1 + d] && fabs(R[2 * r[0] + d]) > ftol)
-                mm_sta_force(res, "reaction", p[0], p[1], d == 0 ? R[2 * r[0]] : 0,
-                                  d == 1 ? R[2 * r[0] + 1] : 0, fscale, 1);
-    }
-    for (int l = 0; l < t->n_loads; l++) {
-        const double *p = t->xy + 2 * t->load_node[l];
-        mm_sta_force(res, "load", p[0], p[1], t->load_f[2 * l], t->load_f[2 * l + 1], fscale, 1);
-    }
-    for (int j = 0; j < t->n_nodes; j++)
-        mm_sta_label(res, t->xy[2 * j] + 0.02 * size, t->xy[2 * j + 1] + 0.02 * size, "%d", j + 1);
-    return MM_OK;
-}
-
-/* ---- solve ------------------------------------------------------------------------------ */
-
-/* A force below its rounding error is zero (a zero-force member, a reaction
- * the loads do not need): print 0, not the rounding noise. */
-static double shown(double v, double err)
-{
-    return fabs(v) <= err ? 0 : v;
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     model md;
@@ -243,7 +141,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     rc = mm_truss_solve(t, &tr, err);
     if (rc != MM_OK)
         return rc;                     /* a mechanism or indeterminate: 422 in mechanics words */
-
     double Fbig = 0, pmax = 0, tmax = 0, cmax = 0;
     for (int e = 0; e < m; e++) {
         Fbig = fmax(Fbig, fabs(F[e]));
@@ -254,7 +151,6 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         pmax = fmax(pmax, hypot(t->load_f[2 * l], t->load_f[2 * l + 1]));
     /* forward error of the forces: cond * eps * |F| (rcond estimated, eq. 4) */
     double ferr = 4 * DBL_EPSILON * Fbig / tr.eq.rcond, ftol = 1e-9 * fmax(pmax, Fbig);
-
     mm_scalar *d = mm_res_scalar(res, O_DET, tr.determinacy);
     d->text = "determinate";
     mm_res_scalar(res, O_NJ, nj);
@@ -262,41 +158,19 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_scalar(res, O_NR, tr.n_reactions);
     mm_res_scalar_err(res, O_TMAX, tmax, ferr, MM_ERR_ESTIMATE);
     mm_res_scalar_err(res, O_CMAX, cmax, ferr, MM_ERR_ESTIMATE);
-
-    mm_table *mt = mm_res_table(res, O_MEMBERS, m);
-    if (!mt)
+    if (mm_sta_truss_tables(res, t, F, R, ferr, ftol, O_MEMBERS, O_FPLOT, O_REACT) != MM_OK)
         return MM_ENOMEM;
-    for (int e = 0; e < m; e++) {
-        double *row = mt->cell + (size_t)e * 6;
-        int a = t->ends[2 * e], b = t->ends[2 * e + 1];
-        row[0] = e + 1, row[1] = shown(F[e], ferr), row[2] = a + 1, row[3] = b + 1;
-        row[4] = hypot(t->xy[2 * b] - t->xy[2 * a], t->xy[2 * b + 1] - t->xy[2 * a + 1]);
-        mt->text[e * 6 + 5] = F[e] > ftol ? "tension" : F[e] < -ftol ? "compression" : "zero-force";
-    }
-    mm_series *fp = mm_res_series(res, O_FPLOT, m);
-    if (!fp)
-        return MM_ENOMEM;
-    for (int e = 0; e < m; e++)
-        fp->x[e] = e + 1, fp->y[e] = shown(F[e], ferr);
-    mm_table *rt = mm_res_table(res, O_REACT, t->n_supports);
-    if (!rt)
-        return MM_ENOMEM;
-    for (int s = 0; s < t->n_supports; s++) {
-        int j = t->supports[3 * s];
-        rt->cell[3 * s] = j + 1, rt->cell[3 * s + 1] = shown(R[2 * j], ferr);
-        rt->cell[3 * s + 2] = shown(R[2 * j + 1], ferr);
-    }
     mm_res_method(res, "method of joints: sparse LU with partial pivoting, rank test by QR", 0);
     mm_res_method_stat(res, "rcond", tr.eq.rcond);
 
     /* check 1: every joint, the forces put back into eq. (1) */
     double worst, scale, total;
-    joint_residual(t, F, R, &worst, &scale, &total);
+    mm_truss_joint_residual(t, F, R, &worst, &scale, &total);
     mm_check_residual(res, "joints: largest |sum F| at a joint [N] (scale: its largest sum of |terms|)", worst,
                       scale, 16);
     /* check 2: the whole truss as one body; it is the sum of the joint
      * equations, so it inherits their rounding (scale: every joint's terms) */
-    body_residual(t, R, &worst, &scale);
+    mm_truss_body_residual(t, R, &worst, &scale);
     mm_check_residual(res, "whole truss: sum Fx, sum Fy, sum M / size of loads and reactions [N]", worst,
                       scale + total, 16);
     /* check 3: reactions by Ritter's moments on the whole truss, eq. (5) */
@@ -330,17 +204,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             if (r > ratio)
                 ratio = r, worst_e = e, tol_w = tol;
         }
-        char *name = mm_res_printf(res, "method of sections: %d cut%s, %d member%s; member %d by the section vs "
-                                        "the joints [N]",
-                                   cuts, cuts > 1 ? "s" : "", found, found > 1 ? "s" : "", worst_e + 1);
-        if (!name)
-            return MM_ENOMEM;
-        mm_res_check_abs(res, name, Fs[worst_e], F[worst_e], tol_w);
+        mm_sta_check_absf(res, Fs[worst_e], F[worst_e], tol_w, "method of sections: %d cut%s, %d member%s; member %d "
+                          "by the section vs the joints [N]", cuts, cuts > 1 ? "s" : "", found, found > 1 ? "s" : "",
+                          worst_e + 1);
     } else {
         mm_res_warn(res, "no straight cut crosses exactly three members here, so the method of sections "
                          "is not shown; the joint and whole-truss checks still apply");
     }
-
     /* nearly collinear joints: forces of about 1/sin(spread) times the load */
     double spread[MM_TRUSS_MAX_NODES];
     mm_truss_spread(t, spread);
@@ -355,38 +225,25 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_warn(res, "the joint equations are nearly singular (condition about %.1e): the forces have "
                          "about %.0f correct digits",
                     1 / tr.eq.rcond, fmax(0, 16 - log10(1 / tr.eq.rcond)));
-
-    double lo = INFINITY, hi = -INFINITY;
-    for (int k = 0; k < 2 * nj; k++)
-        lo = fmin(lo, t->xy[k]), hi = fmax(hi, t->xy[k]);
-    double rmax = 0;
-    for (int k = 0; k < 2 * nj; k++)
-        rmax = fmax(rmax, fabs(R[k]));
-    return draw(t, F, R, mm_sta_scale(fmax(pmax, rmax), fmax(hi - lo, 1e-6), 0.2), ftol, res);
+    mm_sta_fbd(res);
+    return mm_sta_truss(res, t, F, R, pmax, ftol);
 }
 
 static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, ch. 6 (trusses)",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, ch. 4",
+    MM_STA_HIBBELER "ch. 6 (trusses)",
+    MM_STA_MERIAM "ch. 4",
     "S. Pellegrino, C. R. Calladine, Matrix analysis of statically and kinematically indeterminate frameworks, "
     "Int. J. Solids Structures 22 (1986) 409-428",
     NULL,
 };
 
 const mm_exercise mm_ex_sta_truss = {
-    .id = "sta-truss",
-    .chapter = 3,
-    .section = "3.7",
+    .id = "sta-truss", .chapter = 3, .section = "3.7",
     .title = "Plane trusses by the method of joints",
     .summary = "Any planar truss: member forces in tension and compression, reactions, and whether it is a "
                "mechanism or has a redundant member.",
     .tags = "statics, truss, method of joints, method of sections, determinacy, mechanism",
     .theory = "exercises/sta/truss.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

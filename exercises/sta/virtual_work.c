@@ -24,7 +24,6 @@
 #include "mm_sta.h"
 
 enum { P_R, P_L, P_E, P_THETA, P_P, P_POINTS };
-
 static const mm_param params[] = {
     [P_R] = {"r", "crank length", "m", MM_REAL, 0.1, 1e-3, 10, .help = "from the pivot O to the crank pin A"},
     [P_L] = {"l", "rod length", "m", MM_REAL, 0.4, 1e-3, 100, .help = "from A to the slider pin B; l > r + |e|"},
@@ -36,7 +35,6 @@ static const mm_param params[] = {
 };
 
 enum { O_M, O_DX, O_XB, O_FROD, O_N, O_V, O_STABLE, O_UNSTABLE, O_MREQ, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_M] = MM_SCALAR("M", "torque on the crank that holds it (counter-clockwise +)", "N m",
                       .flags = MM_ANSWER | MM_EXACT),
@@ -47,14 +45,11 @@ static const mm_output outputs[] = {
     [O_V] = MM_SERIES("V", "potential energy with M held: -M theta + P x_B", "J", "theta", "rad", .figure = "V"),
     [O_STABLE] = MM_SERIES("stable", "stable equilibria", "J", "theta", "rad", .figure = "V", .mark = "dots"),
     [O_UNSTABLE] = MM_SERIES("unstable", "unstable equilibria", "J", "theta", "rad", .figure = "V", .mark = "dots"),
-    [O_MREQ] = MM_SERIES("M_hold", "torque that holds the crank at each angle", "N m", "theta", "rad",
-                         .figure = "M"),
+    [O_MREQ] = MM_SERIES("M_hold", "torque that holds the crank at each angle", "N m", "theta", "rad", .figure = "M"),
     [O_ANIM] = MM_ANIMATION("the mechanism with the load, the holding torque and the virtual displacement"),
 };
 
-typedef struct mech {
-    double r, l, e, P, M;
-} mech;
+typedef struct mech { double r, l, e, P, M; } mech;
 
 static double xB(const mech *m, double t, double *dx, double *d2x)
 {
@@ -86,12 +81,11 @@ static int check(const mm_value *in, mm_error *err)
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     mech m = {in[P_R].x, in[P_L].x, in[P_E].x, in[P_P].x, 0};
-    double th = in[P_THETA].x, dx, d2x, x = xB(&m, th, &dx, &d2x);
+    double th = in[P_THETA].x, dx, x = xB(&m, th, &dx, NULL);
     m.M = m.P * dx;                                                               /* eq. (2) */
     mm_res_scalar(res, O_M, m.M);
     mm_res_scalar(res, O_DX, dx);
     mm_res_scalar(res, O_XB, x);
-
     /* eq. (4): crank, rod, slider; unknowns Ox Oy Ax Ay Bx By N M (A: rod on
      * crank, B: slider on rod) */
     double xa = m.r * cos(th), ya = m.r * sin(th), xb = x, yb = m.e;
@@ -120,14 +114,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_equil_residual(8, 8, A, b, u, &res8, &sc8);
     mm_check_residual(res, "the eight equilibrium equations, largest residual", res8, sc8, 16);
     /* dx_B/dtheta against a central difference (truncation h^2 x'''/6, x''' by a difference of x'') */
-    double h = 1e-5, xp, xm, d2p, d2m, hh = 1e-3;
-    xp = xB(&m, th + h, NULL, NULL), xm = xB(&m, th - h, NULL, NULL);
+    double h = 1e-5, hh = 1e-3, xp = xB(&m, th + h, NULL, NULL), xm = xB(&m, th - h, NULL, NULL), d2p, d2m;
     xB(&m, th + hh, NULL, &d2p), xB(&m, th - hh, NULL, &d2m);
     double x3 = fabs(d2p - d2m) / (2 * hh);        /* |x'''|, itself by a difference: doubled below */
     mm_res_check_abs(res, "dx_B/dtheta vs a central difference of x_B [m] (truncation and rounding)",
                      (xp - xm) / (2 * h), dx, h * h * (2 * x3 + m.r) / 6 + 4 * DBL_EPSILON * (m.r + m.l) / h);
     mm_res_method(res, "virtual work (closed form); force balance as a linear system", 0);
-
     /* the potential with M held, its equilibria over a turn (eq. 5) */
     int np = (int)in[P_POINTS].x;
     mm_series *sv = mm_res_series(res, O_V, np), *sm = mm_res_series(res, O_MREQ, np);
@@ -143,12 +135,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (m.P != 0) {
         enum { NSUB = 360 };
         mm_roots_root roots[NSUB + 1];
-        mm_roots_result rr = {.roots = roots, .cap = NSUB + 1};
-        mm_roots_options opt;
-        mm_roots_options_init(&opt);
-        opt.n = NSUB, opt.tol = 1e-13;
-        mm_roots_problem pb = {.f = dV_fn, .params = &m, .a = 0, .b = 2 * M_PI};
-        if (mm_roots_solve(&pb, &opt, &rr, err) != MM_OK)
+        mm_roots_result rr;
+        if (mm_roots_scan(dV_fn, &m, 0, 2 * M_PI, NSUB, 1e-13, 0, roots, &rr, err) != MM_OK)
             rr.nroots = 0;                        /* the plot then marks theta only */
         /* the given angle is an equilibrium by construction (a double root
          * of V' where the torque curve peaks, so not always bracketed): put
@@ -159,68 +147,31 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         for (int i = 0; i < rr.nroots; i++)
             if (fabs(remainder(roots[i].x - th, 2 * M_PI)) > 1e-9)
                 eq[ne++] = roots[i].x;
-        int ns = 0, nu = 0, kind[NSUB + 2];
+        static const int outs[2] = {O_STABLE, O_UNSTABLE};
+        int kind[NSUB + 2];
+        double v[NSUB + 2];
         for (int i = 0; i < ne; i++) {
             double q;
-            xB(&m, eq[i], NULL, &q);
-            kind[i] = m.P * q > 0;                /* V'' = P x_B'' */
-            if (kind[i])
-                ns++;
-            else
-                nu++;
+            v[i] = -m.M * eq[i] + m.P * xB(&m, eq[i], NULL, &q);
+            kind[i] = m.P * q > 0 ? 0 : 1;        /* V'' = P x_B'': 0 stable, 1 unstable */
         }
-        mm_series *s1 = ns ? mm_res_series(res, O_STABLE, ns) : NULL, *s2 = nu ? mm_res_series(res, O_UNSTABLE, nu) : NULL;
-        if ((ns && !s1) || (nu && !s2))
-            return MM_ENOMEM;
-        for (int i = 0, a = 0, c = 0; i < ne; i++) {
-            double v = -m.M * eq[i] + m.P * xB(&m, eq[i], NULL, NULL);
-            if (kind[i])
-                s1->x[a] = eq[i], s1->y[a] = v, a++;
-            else
-                s2->x[c] = eq[i], s2->y[c] = v, c++;
-        }
+        mm_sta_equilibria(res, ne, eq, v, kind, 2, outs);
     }
-
     /* the drawing */
     mm_sta_fbd(res);
-    double L = m.r + m.l, sc = mm_sta_scale(fabs(m.P), L, 0.25), bw = 0.1 * L;
-    double box[8] = {xb - bw, yb - bw / 2, xb + bw, yb - bw / 2, xb + bw, yb + bw / 2, xb - bw, yb + bw / 2};
-    double guide[4] = {-0.2 * L, yb - bw / 2, 1.3 * L, yb - bw / 2};
-    mm_sta_path(res, "guide", 2, guide, "ground");
-    mm_sta_pin(res, "pivot O", 0, 0, 0.06 * L, 0);
-    mm_sta_line(res, "crank", 0, 0, xa, ya, NULL, 0, 0);
-    mm_sta_member(res, "rod", xa, ya, xb, yb, Frod, ferr);
-    mm_sta_polygon(res, "slider", 4, box, NULL);
-    if (m.P != 0)
-        mm_sta_force(res, "P", xb + bw, yb, -m.P, 0, sc, 1);
-    if (m.M != 0)
-        mm_sta_couple(res, "M", 0, 0, 0.25 * m.r, m.M);
-    mm_sta_line(res, "virtual displacement dx_B", xb, yb + bw, xb + 0.3 * L * (dx >= 0 ? 1 : -1), yb + bw,
-                         "highlight", 1, dx);
-    mm_sta_label(res, -0.2 * L, 0.5 * L, "M = P dx_B/dtheta = %.4g N m", m.M);
+    mm_sta_slider_crank(res, m.r, m.l, m.e, th, xb, Frod, ferr, m.P, m.M, dx);
     return rc;
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 11.1-11.3",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, articles 7/1-7/2",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 11.1-11.3", MM_STA_MERIAM "articles 7/1-7/2", NULL};
 
 const mm_exercise mm_ex_sta_virtual_work = {
-    .id = "sta-virtual-work",
-    .chapter = 3,
-    .section = "3.12",
+    .id = "sta-virtual-work", .chapter = 3, .section = "3.12",
     .title = "Virtual work: the torque that holds a slider-crank",
     .summary = "The holding torque of a slider-crank under a load, by virtual work in one line, against the "
                "force balance of its three bodies; the potential energy and its equilibria.",
     .tags = "statics, virtual work, mechanism, slider-crank, potential energy",
     .theory = "exercises/sta/virtual_work.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

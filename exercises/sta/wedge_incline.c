@@ -23,7 +23,6 @@
 #include "mm_sta.h"
 
 enum { P_SETUP, P_W, P_MU, P_ALPHA, P_WIDTH, P_H, P_HP, P_BETA };
-
 static const char *const setups[] = {"block", "wedge", NULL};
 
 static const mm_param params[] = {
@@ -42,7 +41,6 @@ static const mm_param params[] = {
 
 enum { O_PUP, O_PHOLD, O_PTIP, O_FIRST, O_ASLIP, O_ATIP, O_PIN, O_POUT, O_LOCK, O_N1, O_N2, O_N3, O_SUP, O_STIP,
        O_SIN, O_SOUT, O_ANIM };
-
 static const mm_output outputs[] = {
     [O_PUP] = MM_SCALAR("P_up", "push that starts the block sliding up", "N", .flags = MM_ANSWER | MM_EXACT),
     [O_PHOLD] = MM_SCALAR("P_hold", "least push that keeps it from sliding down", "N", .flags = MM_ANSWER | MM_EXACT),
@@ -82,51 +80,45 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* ---- the block -------------------------------------------------------------------- */
-
-/* The slope frame: s up the slope, n across it; the block's downhill
- * bottom corner at the origin, its base from s = 0 to w. */
+/* ---- the block, in the slope frame: s up the slope, n across it; the
+ * block's downhill bottom corner at the origin, its base from s = 0 to w */
 static int block(const mm_value *in, mm_result *res, mm_error *err)
 {
     double W = in[P_W].x, mu = in[P_MU].x, a = in[P_ALPHA].x, w = in[P_WIDTH].x, h = in[P_H].x, hP = in[P_HP].x;
     double sa = sin(a), ca = cos(a);
     double Pup = W * (sa + mu * ca);                                   /* eq. (2) */
-    double down = sa - mu * ca, Phold = down > 8 * DBL_EPSILON * (sa + mu * ca) ? W * down : 0;   /* eq. (3) */
+    double down = sa - mu * ca, lim = 8 * DBL_EPSILON * (sa + mu * ca), Phold = down > lim ? W * down : 0; /* (3) */
     double Ptip = W * (w * ca + h * sa) / (2 * hP);                    /* eq. (4) */
     int first = fabs(Pup - Ptip) <= 1e-12 * Pup ? 3 : Pup < Ptip ? 1 : 2;
     static const char *const firsts[] = {"", "slides up", "tips over its upper edge", "slides and tips at once"};
     mm_res_scalar(res, O_PUP, Pup);
-    mm_scalar *s = mm_res_scalar(res, O_PHOLD, Phold);
-    s->text = down > 8 * DBL_EPSILON * (sa + mu * ca) ? "it would slide down without it"
-              : fabs(down) <= 8 * DBL_EPSILON * (sa + mu * ca) ? "at the slip limit: mu = tan(alpha)"
-                                                                : "self-locking: it stays without a push";
+    mm_res_scalar_text(res, O_PHOLD, Phold, down > lim           ? "it would slide down without it"
+                                            : fabs(down) <= lim ? "at the slip limit: mu = tan(alpha)"
+                                                                : "self-locking: it stays without a push");
     mm_res_scalar(res, O_PTIP, Ptip);
     mm_res_scalar_text(res, O_FIRST, first, firsts[first]);
     mm_res_scalar(res, O_ASLIP, atan(mu));
     mm_res_scalar(res, O_ATIP, atan(w / h));
-
     /* route 2, eq. (5): sliding up, friction mu N down the slope; unknowns
      * P, N and m = N x_N (x_N where N acts on the base) */
     double A[9] = {1, -mu, 0, 0, 1, 0, -hP, 0, 1};
+    /* tipping: N at the upper edge x_N = w, friction F unknown (below its limit) */
+    double B[9] = {1, 0, -1, 0, 1, 0, -hP, w, 0};
     double b[3] = {W * sa, W * ca, W * w * ca / 2 - W * h * sa / 2}, x[3], t[3];
     mm_equil_result er;
     int rc = mm_equil_solve(3, 3, A, b, x, NULL, NULL, &er, err);
-    if (rc != MM_OK)
-        return rc;
-    /* tipping: N at the upper edge x_N = w, friction F unknown (below its limit) */
-    double B[9] = {1, 0, -1, 0, 1, 0, -hP, w, 0};
-    rc = mm_equil_solve(3, 3, B, b, t, NULL, NULL, &er, err);
+    if (rc == MM_OK)
+        rc = mm_equil_solve(3, 3, B, b, t, NULL, NULL, &er, err);
     if (rc != MM_OK)
         return rc;
     mm_res_check_rel(res, "P_up by the equilibrium equations with friction at its limit vs eq. (2)", x[0], Pup,
                      16 * DBL_EPSILON);
     mm_res_check_rel(res, "P_tip by the equilibrium equations with N at the upper edge vs eq. (4)", t[0], Ptip,
                      16 * DBL_EPSILON);
-    /* the slide-or-tip decision twice: N would act beyond the edge <=> P_tip < P_up */
+    /* the slide-or-tip decision twice: tips first <=> at P_up, N would act
+     * beyond the upper edge <=> at P_tip, friction is still below mu N */
     double xN = x[2] / x[1];
     if (first != 3) {
-        /* tips first <=> at P_up, N would act beyond the upper edge <=> at
-         * P_tip, friction is still below its limit mu N */
         mm_res_check_abs(res, "tips first (1/0): N beyond the upper edge at P_up, vs P_tip < P_up", xN > w,
                          first == 2, 0);
         mm_res_check_abs(res, "tips first (1/0): friction below mu N at P_tip, vs P_tip < P_up", t[2] < mu * t[1],
@@ -142,34 +134,16 @@ static int block(const mm_value *in, mm_result *res, mm_error *err)
         s1->y[i] = W * (sin(q) + mu * cos(q));
         s2->y[i] = W * (w * cos(q) + h * sin(q)) / (2 * hP);
     }
-
-    /* the drawing at the first limit, in the slope frame turned by alpha */
-    double P = first == 2 ? Ptip : Pup, N = W * ca, xn = first == 2 ? w : xN, F = P - W * sa;
+    /* the drawing at the first limit: friction F down the slope, N where it acts */
+    double P = first == 2 ? Ptip : Pup;
     mm_sta_fbd(res);
-    double L = 3 * fmax(w, h), ramp[6] = {-0.5 * L * ca, -0.5 * L * sa, 1.5 * L * ca, 1.5 * L * sa, 1.5 * L * ca,
-                                         -0.5 * L * sa};
-    mm_sta_polygon(res, "incline", 3, ramp, "ground");
-    double c[8], loc[8] = {0, 0, w, 0, w, h, 0, h};
-    for (int k = 0; k < 4; k++)
-        c[2 * k] = loc[2 * k] * ca - loc[2 * k + 1] * sa, c[2 * k + 1] = loc[2 * k] * sa + loc[2 * k + 1] * ca;
-    mm_sta_polygon(res, "block", 4, c, NULL);
-    double sc = mm_sta_scale(fmax(fmax(W, P), N), fmax(w, h), 0.6);
-#define AT(u, v) (u) * ca - (v) * sa, (u) * sa + (v) * ca
-    mm_sta_force(res, "W", AT(w / 2, h / 2), 0, -W, sc, 0);
-    mm_sta_force(res, "P", AT(0, hP), P * ca, P * sa, sc, 1);
-    mm_sta_force(res, "N", AT(xn, 0), -N * sa, N * ca, sc, 1);
-    if (F != 0)
-        mm_sta_force(res, "friction", AT(xn, 0), -F * ca, -F * sa, sc, 1);
-    mm_sta_label(res, AT(0, h * 1.3), "%s at P = %.4g N", firsts[first], P);
-#undef AT
+    mm_sta_block_incline(res, a, w, h, hP, W, P, W * ca, P - W * sa, first == 2 ? w : xN, firsts[first]);
     return rc;
 }
 
-/* ---- the wedge ------------------------------------------------------------------- */
-
-/* eq. (8): wedge moving +x under the load, which rises against a wall on
- * its right; s = +1 driving in, -1 starting out (every friction reversed).
- * Unknowns N1 (floor), N2 (incline), N3 (wall), P. */
+/* ---- the wedge.  Eq. (8): wedge moving +x under the load, which rises
+ * against a wall on its right; s = +1 driving in, -1 starting out (every
+ * friction reversed).  Unknowns N1 (floor), N2 (incline), N3 (wall), P. */
 static int wedge_solve(double W, double mu, double be, double s, double *x, mm_equil_result *er, mm_error *err)
 {
     double sb = sin(be), cb = cos(be), m = s * mu;
@@ -199,9 +173,8 @@ static int wedge(const mm_value *in, mm_result *res, mm_error *err)
     if (rc != MM_OK)
         return rc;
     double e = 4 * DBL_EPSILON * W / er.rcond;
-    mm_res_scalar_err(res, O_N1, x[0], e, MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_N2, x[1], e, MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_N3, x[2], e, MM_ERR_ESTIMATE);
+    for (int k = 0; k < 3; k++)
+        mm_res_scalar_err(res, O_N1 + k, x[k], e, MM_ERR_ESTIMATE);
     mm_res_check_rel(res, "P_in by the two bodies' equilibrium with friction at the limit vs W tan(beta + 2 phi)",
                      x[3], Pin, 64 * DBL_EPSILON / er.rcond);
     mm_res_check_abs(res, "P_out the same way vs W tan(beta - 2 phi) [N]", y[3], Pout,
@@ -216,26 +189,9 @@ static int wedge(const mm_value *in, mm_result *res, mm_error *err)
         s1->x[i] = s2->x[i] = q;
         s1->y[i] = W * tan(q + 2 * phi), s2->y[i] = W * tan(q - 2 * phi);
     }
-
     /* the drawing: floor, wall, wedge (thick end left), load box */
     mm_sta_fbd(res);
-    double Lw = 2, H = Lw * tan(be), xl = 1.2, bw = 0.6;         /* the load sits at x in [xl - bw, xl] */
-    double yl = (Lw - xl) * tan(be);                              /* incline height under the load's right edge */
-    double wedge_xy[6] = {0, 0, Lw, 0, 0, H}, load[8] = {xl - bw, yl + bw * tan(be), xl, yl, xl, yl + 0.8,
-                                                         xl - bw, yl + 0.8};
-    double floor[4] = {-0.5, 0, Lw + 0.3, 0}, wall[4] = {xl, yl, xl, yl + 1.2};
-    double sc = mm_sta_scale(fmax(fmax(Pin, W), x[1]), 1.5, 0.4);
-    mm_sta_path(res, "floor", 2, floor, "ground");
-    mm_sta_path(res, "wall", 2, wall, "ground");
-    mm_sta_polygon(res, "wedge", 3, wedge_xy, NULL);
-    mm_sta_polygon(res, "load", 4, load, NULL);
-    mm_sta_force(res, "P", 0, 0.3 * H, Pin, 0, sc, 1);
-    mm_sta_force(res, "W", xl - bw / 2, yl + 0.4, 0, -W, sc, 0);
-    mm_sta_force(res, "N2 on the load", xl - bw / 2, yl + 0.5 * bw * tan(be), x[1] * sin(be),
-                          x[1] * cos(be), sc, 1);
-    mm_sta_force(res, "N3 from the wall", xl, yl + 0.4, -x[2], 0, sc, 1);
-    mm_sta_force(res, "N1 from the floor", 0.5 * Lw, 0, 0, x[0], sc, 1);
-    mm_sta_label(res, 0, H + 0.1, "P_in = %.4g N, P_out = %.4g N", Pin, Pout);
+    mm_sta_wedge(res, be, W, Pin, Pout, x);
     return rc;
 }
 
@@ -244,26 +200,14 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     return (int)in[P_SETUP].x == 0 ? block(in, res, err) : wedge(in, res, err);
 }
 
-static const char *const references[] = {
-    "R. C. Hibbeler, Engineering Mechanics: Statics, 14th ed., Pearson 2016, sections 8.1-8.3",
-    "J. L. Meriam, L. G. Kraige, Engineering Mechanics: Statics, 8th ed., Wiley 2015, articles 6/3-6/5",
-    NULL,
-};
+static const char *const references[] = {MM_STA_HIBBELER "sections 8.1-8.3", MM_STA_MERIAM "articles 6/3-6/5", NULL};
 
 const mm_exercise mm_ex_sta_wedge_incline = {
-    .id = "sta-wedge-incline",
-    .chapter = 3,
-    .section = "3.8",
+    .id = "sta-wedge-incline", .chapter = 3, .section = "3.8",
     .title = "Dry friction: a block on an incline and a wedge",
     .summary = "Does the pushed block slide or tip first? What push drives a wedge, and is it self-locking? "
                "Dry friction at its limit, closed forms beside the numbers.",
-    .tags = "statics, friction, incline, wedge, tipping, self-locking",
-    .theory = "exercises/sta/wedge_incline.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "statics, friction, incline, wedge, tipping, self-locking", .theory = "exercises/sta/wedge_incline.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };
