@@ -463,6 +463,7 @@ double mm_geom_trochoid_arch(double R, double b, int split)
         }
     }
     return 2 * sum;
+}
 
 /* ---- statics (chapter 3) ------------------------------------------------------ */
 
