@@ -246,17 +246,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_absorber = {
-    .id = "vib-absorber",
-    .chapter = 5,
-    .section = "5.10.1",
-    .title = "The dynamic vibration absorber",
+    .id = "vib-absorber", .chapter = 5, .section = "5.10.1", .title = "The dynamic vibration absorber",
     .summary = "A small tuned mass stops the machine it hangs on: anti-resonance, two new peaks, Den Hartog's optimum.",
     .tags = "vibration, 2 DOF, forced, absorber, tuned mass damper, anti-resonance, Den Hartog",
-    .theory = "exercises/vib/absorber.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .solve = solve,
+    .theory = "exercises/vib/absorber.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .solve = solve,
 };

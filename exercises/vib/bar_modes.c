@@ -211,18 +211,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_bar_modes = {
-    .id = "vib-bar-modes",
-    .chapter = 5,
-    .section = "5.12.1",
-    .title = "Axial vibration of a bar by finite elements",
+    .id = "vib-bar-modes", .chapter = 5, .section = "5.12.1", .title = "Axial vibration of a bar by finite elements",
     .summary = "Natural frequencies of a bar from linear elements, consistent and lumped mass, against n pi c / L.",
     .tags = "vibration, continuous systems, bar, finite elements, consistent mass, lumped mass, convergence",
-    .theory = "exercises/vib/bar_modes.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/bar_modes.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

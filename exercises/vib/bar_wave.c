@@ -221,18 +221,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_bar_wave = {
-    .id = "vib-bar-wave",
-    .chapter = 5,
-    .section = "5.12.1",
+    .id = "vib-bar-wave", .chapter = 5, .section = "5.12.1",
     .title = "A stress wave in a bar: mesh dispersion and the Courant number",
     .summary = "A sudden end load on a bar: the exact travelling front against finite elements, lumped and consistent.",
     .tags = "vibration, waves, bar, finite elements, central difference, Courant number, dispersion",
-    .theory = "exercises/vib/bar_wave.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/bar_wave.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -226,18 +226,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_base_excitation = {
-    .id = "vib-base-excitation",
-    .chapter = 5,
-    .section = "5.9.5",
+    .id = "vib-base-excitation", .chapter = 5, .section = "5.9.5",
     .title = "Vibration of a moving support (base excitation)",
     .summary = "A mass on a spring and damper whose support moves as Y cos(omega t): transmissibility and isolation.",
     .tags = "vibration, 1 DOF, base excitation, transmissibility, isolation",
-    .theory = "exercises/vib/base_excitation.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/base_excitation.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -193,18 +193,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_beam_modes = {
-    .id = "vib-beam-modes",
-    .chapter = 5,
-    .section = "5.12.2",
+    .id = "vib-beam-modes", .chapter = 5, .section = "5.12.2",
     .title = "Bending vibration of a beam by finite elements",
     .summary = "Natural frequencies of a beam from Hermite elements against the roots beta L of its frequency equation.",
     .tags = "vibration, continuous systems, beam, finite elements, Euler-Bernoulli, convergence",
-    .theory = "exercises/vib/beam_modes.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/beam_modes.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -347,18 +347,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_beam_transient = {
-    .id = "vib-beam-transient",
-    .chapter = 5,
-    .section = "5.12.2",
+    .id = "vib-beam-transient", .chapter = 5, .section = "5.12.2",
     .title = "A beam under a moving or sudden load: modes kept against direct integration",
     .summary = "A force crossing a beam, or applied suddenly: modal superposition and Newmark on the FE model.",
     .tags = "vibration, beam, finite elements, moving load, impact, modal superposition, truncation, Newmark",
-    .theory = "exercises/vib/beam_transient.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/beam_transient.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

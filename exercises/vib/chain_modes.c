@@ -179,18 +179,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_chain_modes = {
-    .id = "vib-chain-modes",
-    .chapter = 5,
-    .section = "5.11.1",
+    .id = "vib-chain-modes", .chapter = 5, .section = "5.11.1",
     .title = "A chain of n masses: natural frequencies and modes",
     .summary = "n equal masses on equal springs: frequencies and sampled-sine modes against their closed form.",
     .tags = "vibration, n DOF, chain, natural frequencies, mode shapes, eigenvalues, rounding",
-    .theory = "exercises/vib/chain_modes.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/chain_modes.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

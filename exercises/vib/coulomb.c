@@ -366,18 +366,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_coulomb = {
-    .id = "vib-coulomb",
-    .chapter = 5,
-    .section = "5.9.7",
-    .title = "Vibration with Coulomb friction",
+    .id = "vib-coulomb", .chapter = 5, .section = "5.9.7", .title = "Vibration with Coulomb friction",
     .summary = "A mass on a spring sliding on a rough floor: straight-line decay and a stop away from zero.",
-    .tags = "vibration, 1 DOF, dry friction, Coulomb, events, nonsmooth",
-    .theory = "exercises/vib/coulomb.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "vibration, 1 DOF, dry friction, Coulomb, events, nonsmooth", .theory = "exercises/vib/coulomb.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -424,19 +424,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_dft = {
-    .id = "vib-dft",
-    .chapter = 5,
-    .section = "5.6",
-    .title = "Discrete Fourier transform: sampling, leakage, aliasing",
+    .id = "vib-dft", .chapter = 5, .section = "5.6", .title = "Discrete Fourier transform: sampling, leakage, aliasing",
     .summary = "The amplitude spectrum of a sampled signal by the FFT: bins, leakage between bins, "
                "the Hann window, and aliasing above fs/2.",
-    .tags = "DFT, FFT, spectrum, sampling, aliasing, leakage, window",
-    .theory = "exercises/vib/dft.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "DFT, FFT, spectrum, sampling, aliasing, leakage, window", .theory = "exercises/vib/dft.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -360,19 +360,11 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_dispersion = {
-    .id = "vib-dispersion",
-    .chapter = 5,
-    .section = "5.3",
+    .id = "vib-dispersion", .chapter = 5, .section = "5.3",
     .title = "Phase and group velocity: a wave packet in a beam and in a bar",
     .summary = "A wave packet travels at the group velocity while its crests move at the phase velocity; in a "
                "beam the packet spreads, in a bar it keeps its shape.",
     .tags = "waves, dispersion, phase velocity, group velocity, wave packet, beam, bar",
-    .theory = "exercises/vib/dispersion.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/dispersion.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -337,19 +337,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_fourier_series = {
-    .id = "vib-fourier-series",
-    .chapter = 5,
-    .section = "5.4",
-    .title = "Fourier series and the Gibbs overshoot",
+    .id = "vib-fourier-series", .chapter = 5, .section = "5.4", .title = "Fourier series and the Gibbs overshoot",
     .summary = "Square, sawtooth and triangle waves as sums of harmonics: coefficients by FFT, partial sums, "
                "the 9 % overshoot at a jump.",
     .tags = "Fourier series, harmonics, FFT, Gibbs phenomenon, periodic motion",
-    .theory = "exercises/vib/fourier_series.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = NULL,
-    .solve = solve,
+    .theory = "exercises/vib/fourier_series.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .solve = solve,
 };

@@ -423,19 +423,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_fourier_transform = {
-    .id = "vib-fourier-transform",
-    .chapter = 5,
-    .section = "5.5",
-    .title = "Fourier integral: the spectrum of a pulse",
+    .id = "vib-fourier-transform", .chapter = 5, .section = "5.5", .title = "Fourier integral: the spectrum of a pulse",
     .summary = "Rectangular, triangular, Gaussian and half-sine pulses: their spectra by FFT against the closed "
                "forms; shorter pulse, wider spectrum.",
     .tags = "Fourier transform, Fourier integral, pulse, spectrum, FFT, sampling",
-    .theory = "exercises/vib/fourier_transform.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/fourier_transform.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

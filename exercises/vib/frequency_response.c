@@ -329,18 +329,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_frequency_response = {
-    .id = "vib-frequency-response",
-    .chapter = 5,
-    .section = "5.9.2",
+    .id = "vib-frequency-response", .chapter = 5, .section = "5.9.2",
     .title = "Frequency response: amplitude and phase",
     .summary = "Magnification and phase lag against the forcing frequency for several damping ratios; peak and bandwidth.",
     .tags = "vibration, 1 DOF, frequency response, resonance peak, bandwidth, phase",
-    .theory = "exercises/vib/frequency_response.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = NULL,
-    .solve = solve,
+    .theory = "exercises/vib/frequency_response.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .solve = solve,
 };

@@ -370,19 +370,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_harmonics = {
-    .id = "vib-harmonics",
-    .chapter = 5,
-    .section = "5.2",
-    .title = "Two harmonics: beats and Lissajous figures",
+    .id = "vib-harmonics", .chapter = 5, .section = "5.2", .title = "Two harmonics: beats and Lissajous figures",
     .summary = "The sum of two harmonic motions: beats and their envelope, when the sum is periodic, and the "
                "Lissajous figure of one against the other.",
-    .tags = "harmonic motion, beats, envelope, periodic motion, Lissajous",
-    .theory = "exercises/vib/harmonics.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "harmonic motion, beats, envelope, periodic motion, Lissajous", .theory = "exercises/vib/harmonics.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -430,19 +430,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_integrators = {
-    .id = "vib-integrators",
-    .chapter = 5,
-    .section = "5.8",
-    .title = "Time integrators compared: error against cost",
+    .id = "vib-integrators", .chapter = 5, .section = "5.8", .title = "Time integrators compared: error against cost",
     .summary = "One oscillator by central difference, Newmark, Verlet, RK4, DOPRI5 and DOP853: errors, costs, "
                "orders, energy.",
     .tags = "vibration, numerical methods, time integration, Newmark, Runge-Kutta, work-precision, energy",
-    .theory = "exercises/vib/integrators.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/integrators.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

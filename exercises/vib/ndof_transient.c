@@ -182,18 +182,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_ndof_transient = {
-    .id = "vib-ndof-transient",
-    .chapter = 5,
-    .section = "5.11.1",
+    .id = "vib-ndof-transient", .chapter = 5, .section = "5.11.1",
     .title = "The transient of n degrees of freedom: modes retained and Rayleigh damping",
     .summary = "A chain pushed at one mass: modal superposition with m modes against direct integration of all.",
     .tags = "vibration, n DOF, transient, modal superposition, Rayleigh damping, truncation, Newmark",
-    .theory = "exercises/vib/ndof_transient.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/ndof_transient.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -303,18 +303,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_resonance = {
-    .id = "vib-resonance",
-    .chapter = 5,
-    .section = "5.9.6",
-    .title = "Resonance: growth, build-up and beats",
+    .id = "vib-resonance", .chapter = 5, .section = "5.9.6", .title = "Resonance: growth, build-up and beats",
     .summary = "Drive a mass-spring system at its natural frequency from rest: linear growth, damped build-up, beats.",
-    .tags = "vibration, 1 DOF, forced, resonance, beats, envelope",
-    .theory = "exercises/vib/resonance.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "vibration, 1 DOF, forced, resonance, beats, envelope", .theory = "exercises/vib/resonance.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

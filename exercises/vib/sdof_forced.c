@@ -181,18 +181,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_sdof_forced = {
-    .id = "vib-sdof-forced",
-    .chapter = 5,
-    .section = "5.9.2",
-    .title = "Forced vibration of a damped oscillator",
+    .id = "vib-sdof-forced", .chapter = 5, .section = "5.9.2", .title = "Forced vibration of a damped oscillator",
     .summary = "A mass on a spring and damper driven by F0 cos(omega t): transient, steady amplitude and phase lag.",
-    .tags = "vibration, 1 DOF, forced, damping, steady state",
-    .theory = "exercises/vib/sdof_forced.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "vibration, 1 DOF, forced, damping, steady state", .theory = "exercises/vib/sdof_forced.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

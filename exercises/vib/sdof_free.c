@@ -155,18 +155,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_sdof_free = {
-    .id = "vib-sdof-free",
-    .chapter = 5,
-    .section = "5.9.1",
-    .title = "Free vibration of a damped oscillator",
+    .id = "vib-sdof-free", .chapter = 5, .section = "5.9.1", .title = "Free vibration of a damped oscillator",
     .summary = "A released mass on a spring and damper: under-, critically and overdamped motion.",
-    .tags = "vibration, 1 DOF, free, damping",
-    .theory = "exercises/vib/sdof_free.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "vibration, 1 DOF, free, damping", .theory = "exercises/vib/sdof_free.md", .params = params,
+    .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs), .references = references,
+    .check = check, .solve = solve,
 };

@@ -150,18 +150,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_2dof_transient = {
-    .id = "vib-2dof-transient",
-    .chapter = 5,
-    .section = "5.10.2",
+    .id = "vib-2dof-transient", .chapter = 5, .section = "5.10.2",
     .title = "The transient of two degrees of freedom: modes against steps",
     .summary = "Two masses set moving: modal superposition (exact) beside Newmark's direct integration.",
     .tags = "vibration, 2 DOF, transient, modal superposition, Newmark, truncation",
-    .theory = "exercises/vib/two_dof_transient.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/two_dof_transient.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };
