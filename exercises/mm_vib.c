@@ -445,3 +445,52 @@ int mm_vib_transient_run(mm_result *res, int n, const double *M, const double *K
                           "difference [m] (rounding)", ds, 0, o->round + 1e-300);
     return MM_OK;
 }
+
+/* ---- the transient exercises (5.10.2, 5.11.1): what they show ---------------- */
+
+int mm_vib_transient_show(mm_result *res, const mm_vib_transient *tr, int n, double h, int out_err,
+                          int out_trunc, int nc, const int *coord, const int *out, int sets)
+{
+    mm_res_scalar_err(res, out_err, tr->err_max, tr->round_nm, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, out_trunc, tr->trunc_max, tr->round, MM_ERR_ESTIMATE);
+    const double *src[3] = {tr->q_nm, tr->q_ex, tr->q_m};
+    for (int s = 0; s < sets; s++)
+        for (int i = 0; i < nc; i++) {
+            mm_series *se = mm_res_series(res, out[s * nc + i], tr->ns);
+            if (!se)
+                return MM_ENOMEM;
+            for (int k = 0; k < tr->ns; k++)
+                se->x[k] = tr->t[k], se->y[k] = src[s][(size_t)k * n + coord[i]];
+        }
+    mm_res_method(res, mm_newmark_method_name(MM_NEWMARK_AVERAGE), h);
+    mm_res_method_stat(res, "steps", (double)tr->steps);
+    return MM_OK;
+}
+
+int mm_vib_modal_frames(mm_result *res, int n, const double *M, const double *omega, const double *c,
+                        const double *Phi, const double *q0, const double *v0, const double *F, double W,
+                        double t_end, double period, int max_frames, int *nf, double **q, mm_error *err)
+{
+    double t_show;
+    *nf = mm_vib_frames(t_end, period, max_frames, &t_show);
+    mm_anim *a = mm_res_animation(res, *nf, "t", "s");
+    double *t = mm_res_alloc(res, (size_t)*nf * sizeof *t);
+    *q = mm_res_alloc(res, (size_t)*nf * n * sizeof **q);
+    if (!a || !t || !*q)
+        return MM_ENOMEM;
+    for (int f = 0; f < *nf; f++)
+        t[f] = a->t[f] = t_show * f / (*nf - 1);
+    mm_mdof_pulse g = {1, W, INFINITY};
+    return mm_mdof_modal_response(n, n, omega, c, Phi, n, M, q0, v0, F, &g, *nf, t, *q, err);
+}
+
+void mm_vib_scale(double *q, size_t n, double largest)
+{
+    double big = 0;
+    for (size_t i = 0; i < n; i++)
+        big = fmax(big, fabs(q[i]));
+    if (!(big > 0))
+        return;
+    for (size_t i = 0; i < n; i++)
+        q[i] *= largest / big;
+}

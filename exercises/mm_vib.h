@@ -100,4 +100,33 @@ int mm_vib_transient_run(mm_result *res, int n, const double *M, const double *K
 /* The largest |u| over n values, or 1 when all are 0 (a scale's divisor). */
 double mm_vib_big(const double *u, size_t n);
 
+/* ---- the transient exercises (5.10.2, 5.11.1): what they show ---------------- */
+
+/* What a transient exercise shows of tr (mm_vib_transient_run) for a system
+ * of n coordinates integrated with step h: the largest Newmark error and
+ * truncation error as scalars out_err and out_trunc (each with the
+ * rounding of its values, an estimate), the method (average acceleration,
+ * step h) and its steps, and the histories of the nc coordinates
+ * coord[0..nc-1] over tr->t: for each set of Newmark, exact, retained
+ * modes (sets = 3; sets = 2 leaves the last out, when every mode is
+ * retained), series out[set * nc + i] of coordinate coord[i], in that
+ * order.  Returns MM_OK or MM_ENOMEM. */
+int mm_vib_transient_show(mm_result *res, const mm_vib_transient *tr, int n, double h, int out_err,
+                          int out_trunc, int nc, const int *coord, const int *out, int sets);
+
+/* The exact motion of M q'' + C q' + K q = F cos(W t) from q0, v0 (C =
+ * M Phi diag(c) Phi^T M, every mode: mm_mdof_modal_response) for an
+ * animation: mm_vib_frames(t_end, period, max_frames) frames equally spaced
+ * over the span shown; starts the animation (times in s) and sets *nf and
+ * *q (nf x n, from res's arena).  Returns MM_OK or an mm_status code with
+ * err filled. */
+int mm_vib_modal_frames(mm_result *res, int n, const double *M, const double *omega, const double *c,
+                        const double *Phi, const double *q0, const double *v0, const double *F, double W,
+                        double t_end, double period, int max_frames, int *nf, double **q, mm_error *err);
+
+/* Scale the n values of q so that the largest |q| becomes `largest` (a
+ * drawing's displacements: 0.3 moves the largest 0.3 of a gap).  All 0:
+ * left as they are.  Cannot fail. */
+void mm_vib_scale(double *q, size_t n, double largest);
+
 #endif
