@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mm_exhelp.h"
 #include "mm_mdof.h"
 #include "mm_scene.h"
 
@@ -493,4 +494,41 @@ void mm_vib_scale(double *q, size_t n, double largest)
         return;
     for (size_t i = 0; i < n; i++)
         q[i] *= largest / big;
+}
+
+/* ---- the 1-DOF exercises (5.9): the block moving, the steady state measured ---- */
+
+int mm_vib_sdof_animate(mm_result *res, const mm_sdof *s, const mm_sdof_props *p, double t_end, double period,
+                        int npts, int force, const double *Y, int damper)
+{
+    double t_show;
+    int nf = mm_ex_anim_frames(t_end, period, npts, &t_show);
+    double *t = mm_res_alloc(res, 4 * (size_t)nf * sizeof *t), *x = t + nf, *F = x + nf, *y = F + nf;
+    if (!t)
+        return MM_ENOMEM;
+    for (int f = 0; f < nf; f++) {
+        t[f] = t_show * f / (nf - 1);
+        x[f] = mm_sdof_x(s, p, t[f], NULL);
+        F[f] = s->F0 * cos(s->omega * t[f]);
+        y[f] = Y ? *Y * cos(s->omega * t[f]) : 0;
+    }
+    return mm_ex_animate_oscillator(res, nf, t, x, Y ? y : NULL, force && s->F0 != 0 ? F : NULL, "F", damper, 0);
+}
+
+int mm_vib_steady_check(mm_result *res, const mm_sdof *s, const mm_sdof_props *p, double G, double A,
+                        double phase, const char *x_ref, mm_error *err)
+{
+    if (!(4 * M_PI / s->omega * mm_sdof_fastest_rate(s, p) <= MM_SDOF_MAX_RADIANS))
+        return MM_OK;
+    double Xm, phm, Xe, phe, rnd = mm_ex_roundoff(4 * M_PI, 1);     /* two periods of round-off */
+    int rc = mm_ex_sdof_steady_measure(s, p, 2, phase, &Xm, &phm, &Xe, &phe, res, err);
+    if (rc != MM_OK)
+        return rc;
+    char name[160];
+    snprintf(name, sizeof name, "X: measured on the steady orbit vs %s, within 10 times DOP853's error estimated "
+             "at rtol/10", x_ref);
+    mm_res_check_abs(res, name, Xm, G * A, 10 * Xe + rnd * G * A);
+    mm_res_check_abs(res, "phase: measured on the steady orbit vs eq. (4), within 10 times DOP853's error "
+                          "estimated at rtol/10", phm, phase, 10 * phe + rnd);
+    return MM_OK;
 }

@@ -8,6 +8,7 @@
 
 #include "mm_exercise.h"
 #include "mm_fem.h"
+#include "mm_sdof.h"
 #include "mm_status.h"
 
 /* How many frames show a motion of the given shortest period over t_end
@@ -128,5 +129,28 @@ int mm_vib_modal_frames(mm_result *res, int n, const double *M, const double *om
  * drawing's displacements: 0.3 moves the largest 0.3 of a gap).  All 0:
  * left as they are.  Cannot fail. */
 void mm_vib_scale(double *q, size_t n, double largest);
+
+/* ---- the 1-DOF exercises (5.9): the block moving, the steady state measured ---- */
+
+/* The block of s moving from its initial state: frames over t_end as
+ * mm_ex_anim_frames(t_end, period, npts) gives them, x(t) by the closed
+ * form mm_sdof_x at each; with `force` (and F0 != 0) the force F0
+ * cos(omega t) drawn as an arrow "F"; with Y (not NULL) the support moving
+ * as *Y cos(omega t); a damper beside the spring when `damper`
+ * (mm_ex_animate_oscillator).  Returns MM_OK or MM_ENOMEM. */
+int mm_vib_sdof_animate(mm_result *res, const mm_sdof *s, const mm_sdof_props *p, double t_end, double period,
+                        int npts, int force, const double *Y, int damper);
+
+/* The steady state of s measured in the time domain on its orbit
+ * (mm_ex_sdof_steady_measure, two forcing periods) and checked against the
+ * formulas: the amplitude against X = G A (a gain times an amplitude: the
+ * transmissibility times the support's amplitude; a force's X times 1),
+ * named "X: measured on the steady orbit vs <x_ref>, ...", and the lag
+ * against `phase` (eq. (4)), each within 10 times DOP853's error estimated
+ * at rtol/10 plus the round-off of two periods.  Nothing is done when four
+ * forcing periods would pass the work bound (MM_SDOF_MAX_RADIANS).
+ * Returns MM_OK or the solver's code with err filled. */
+int mm_vib_steady_check(mm_result *res, const mm_sdof *s, const mm_sdof_props *p, double G, double A,
+                        double phase, const char *x_ref, mm_error *err);
 
 #endif

@@ -23,6 +23,7 @@
 
 #include "mm_exhelp.h"
 #include "mm_fourier.h"
+#include "mm_vib.h"
 
 enum { P_M, P_K, P_C, P_F0, P_DETUNING, P_TEND, P_POINTS };
 
@@ -283,17 +284,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_ex_warn_aliasing(res, n, t_end, fmax(p.omega_n, s.omega), "shorten t_end or raise points");
 
     /* the mass swinging wider and wider, frames from the closed form */
-    double t_show;
-    int nf = mm_ex_anim_frames(t_end, T, p.zeta > 0 ? 35 : 24, &t_show);
-    double *ta = mm_res_alloc(res, 3 * (size_t)nf * sizeof *ta), *xa = ta + nf, *Fa = xa + nf;
-    if (!ta)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++) {
-        ta[f] = t_show * f / (nf - 1);
-        xa[f] = mm_sdof_x(&s, &p, ta[f], NULL);
-        Fa[f] = s.F0 * cos(s.omega * ta[f]);
-    }
-    return mm_ex_animate_oscillator(res, nf, ta, xa, NULL, s.F0 != 0 ? Fa : NULL, "F", p.zeta > 0, 0);
+    return mm_vib_sdof_animate(res, &s, &p, t_end, T, p.zeta > 0 ? 35 : 24, 1, NULL, p.zeta > 0);
 }
 
 static const char *const references[] = {

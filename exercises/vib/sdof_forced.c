@@ -17,6 +17,7 @@
 #include <math.h>
 
 #include "mm_exhelp.h"
+#include "mm_vib.h"
 
 enum { P_M, P_K, P_C, P_F0, P_OMEGA, P_X0, P_V0, P_TEND, P_POINTS, P_INTEGRATOR };
 
@@ -82,23 +83,6 @@ static int check(const mm_value *in, mm_error *err)
     return mm_ex_sdof_work_check(&s, in[P_TEND].x, err);
 }
 
-/* The mass on its spring and damper, with the force as an arrow: x(t) by
- * the closed form at each frame. */
-static int animate(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_result *res)
-{
-    double t_show;
-    int nf = mm_ex_anim_frames(t_end, 2 * M_PI / fmax(p->omega_n, s->omega), 35, &t_show);
-    double *t = mm_res_alloc(res, 3 * (size_t)nf * sizeof *t), *x = t + nf, *F = x + nf;
-    if (!t)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++) {
-        t[f] = t_show * f / (nf - 1);
-        F[f] = s->F0 * cos(s->omega * t[f]);
-    }
-    mm_sdof_x_many(s, p, nf, t, x);
-    return mm_ex_animate_oscillator(res, nf, t, x, NULL, s->F0 != 0 ? F : NULL, "F", 1, 0);
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     mm_sdof s = model(in);
@@ -149,17 +133,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                                "terms' sizes)", worst_r, big, 16);
         /* the same measured: an integration started on the steady orbit, when
          * four forcing periods fit the work bound */
-        if (dop853 && 4 * M_PI / s.omega * mm_sdof_fastest_rate(&s, &p) <= MM_SDOF_MAX_RADIANS) {
-            double Xm, phm, Xe, phe;
-            rc = mm_ex_sdof_steady_measure(&s, &p, 2, p.phase, &Xm, &phm, &Xe, &phe, res, err);
-            if (rc != MM_OK)
-                return rc;
-            double rnd = mm_ex_roundoff(4 * M_PI, 1);         /* two periods of round-off */
-            mm_res_check_abs(res, "X: measured on the steady orbit vs eq. (4), within 10 times DOP853's error "
-                                  "estimated at rtol/10", Xm, p.X, 10 * Xe + rnd * p.X);
-            mm_res_check_abs(res, "phase: measured on the steady orbit vs eq. (4), within 10 times DOP853's "
-                                  "error estimated at rtol/10", phm, p.phase, 10 * phe + rnd);
-        }
+        if (dop853 && (rc = mm_vib_steady_check(res, &s, &p, p.X, 1, p.phase, "eq. (4)", err)) != MM_OK)
+            return rc;
     }
 
     mm_ex_warn_aliasing(res, n, t_end, fmax(p.omega_n, s.F0 != 0 ? s.omega : 0), "shorten t_end or raise points");
@@ -171,7 +146,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     else if (s.F0 != 0 && p.zeta < 0.2 && fabs(r - 1) < 0.05)
         mm_res_warn(res, "near resonance (omega/omega_n = %.3f) with little damping: "
                          "the transient lasts about 4/(zeta omega_n) = %.3g s", r, 4 / (p.zeta * p.omega_n));
-    return animate(&s, &p, t_end, res);
+    /* the mass on its spring and damper, with the force as an arrow */
+    return mm_vib_sdof_animate(res, &s, &p, t_end, 2 * M_PI / fmax(p.omega_n, s.omega), 35, 1, NULL, 1);
 }
 
 static const char *const references[] = {

@@ -15,7 +15,7 @@
 #include <math.h>
 
 #include "mm_exhelp.h"
-#include "mm_ode.h"
+#include "mm_vib.h"
 
 enum { P_M, P_K, P_C, P_X0, P_V0, P_TEND, P_POINTS };
 
@@ -66,32 +66,6 @@ static int check(const mm_value *in, mm_error *err)
     return mm_ex_sdof_work_check(&s, in[P_TEND].x, err);
 }
 
-/* y = (x, v, D): D' = c v^2 is the work the damper has taken (eq. 5). */
-static int rhs_energy(double t, const double *y, double *dy, void *ctx)
-{
-    const mm_sdof *s = ctx;
-    mm_sdof_rhs(t, y, dy, ctx);
-    dy[2] = s->c * y[1] * y[1];
-    return 0;
-}
-
-/* The damper's work over [0, t_end] integrated with the motion (DOP853;
- * the absolute tolerance at rtol of the smallest scale of x, v and D). */
-static int damper_work(const mm_sdof *s, const mm_sdof_props *p, double t_end, double rtol,
-                       double *D, mm_error *err)
-{
-    double E0 = mm_sdof_energy(s, s->x0, s->v0), size = sqrt(2 * E0 / s->k);
-    double y0[3] = {s->x0, s->v0, 0}, y[3];
-    mm_ode_problem prob = {.n = 3, .f = rhs_energy, .params = (void *)s, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol * fmin(fmin(size, size * p->omega_n), E0),
-                                                 1000000);
-    opt.h_max = 1 / mm_sdof_fastest_rate(s, p);
-    mm_ode_result r = {.y_end = y};
-    int rc = mm_ode_run(&prob, &opt, &r, err);
-    *D = y[2];
-    return rc;
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     mm_sdof s = model(in);
@@ -124,8 +98,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         D_exact = D_round = 0;                                /* no damper: nothing is lost */
     mm_res_scalar_err(res, O_EDISS, D_exact, D_round, MM_ERR_BOUND);
     double D = 0, Df = 0;                                      /* at rest: nothing to integrate */
-    if (E0 > 0 && ((rc = damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL, &D, err)) != MM_OK ||
-                   (rc = damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL / MM_EX_SDOF_REF, &Df, err)) != MM_OK))
+    if (E0 > 0 && ((rc = mm_sdof_damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL, &D, err)) != MM_OK ||
+                   (rc = mm_sdof_damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL / MM_EX_SDOF_REF, &Df, err)) != MM_OK))
         return rc;
     double radians = t_end * mm_sdof_fastest_rate(&s, &p);
     mm_res_check_abs(res, "energy balance (5): damper work by DOP853 vs E(0) - E(t_end) of the closed form, "
@@ -136,16 +110,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                         "shorten t_end or raise points");
 
     /* the block moving, frames from the closed form */
-    double t_show;
-    int nf = mm_ex_anim_frames(t_end, 2 * M_PI / p.omega_n, 33, &t_show);
-    double *ta = mm_res_alloc(res, 2 * (size_t)nf * sizeof *ta), *xa = ta + nf;
-    if (!ta)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++) {
-        ta[f] = t_show * f / (nf - 1);
-        xa[f] = mm_sdof_x(&s, &p, ta[f], NULL);
-    }
-    return mm_ex_animate_oscillator(res, nf, ta, xa, NULL, NULL, NULL, 1, 0);
+    return mm_vib_sdof_animate(res, &s, &p, t_end, 2 * M_PI / p.omega_n, 33, 0, NULL, 1);
 }
 
 static const char *const references[] = {
