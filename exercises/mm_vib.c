@@ -532,3 +532,25 @@ int mm_vib_steady_check(mm_result *res, const mm_sdof *s, const mm_sdof_props *p
                           "estimated at rtol/10", phm, phase, 10 * phe + rnd);
     return MM_OK;
 }
+
+/* ---- the finite-element exercises (5.12) ---------------------------------------- */
+
+const char *mm_vib_fem_method(mm_fem_method m)
+{
+    return m == MM_FEM_DENSE     ? "LAPACK dsygvd, dense: every mode of the mesh"
+           : m == MM_FEM_BANDED  ? "LAPACK dsbgvx, banded: only the modes shown"
+           : m == MM_FEM_LANCZOS ? "shift-invert Lanczos with K^-1 M, banded: only the modes shown"
+                                 : "subspace iteration with K^-1 M, banded: only the modes shown";
+}
+
+int mm_vib_member_mode(mm_result *res, const mm_fem_problem *p, const double *shape, double omega, int nf,
+                       double scale)
+{
+    size_t nd = mm_fem_ndof(p);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    double *u = mm_res_alloc(res, (size_t)nf * nd * sizeof *u);
+    if (!a || !u)
+        return MM_ENOMEM;
+    mm_vib_mode_frames((int)nd, shape, 1, 0, omega, 1, nf, a->t, u);
+    return mm_vib_member_draw(res, p, nf, u, scale);
+}

@@ -153,4 +153,17 @@ int mm_vib_sdof_animate(mm_result *res, const mm_sdof *s, const mm_sdof_props *p
 int mm_vib_steady_check(mm_result *res, const mm_sdof *s, const mm_sdof_props *p, double G, double A,
                         double phase, const char *x_ref, mm_error *err);
 
+/* ---- the finite-element exercises (5.12) ---------------------------------------- */
+
+/* The words for the eigen solver mm_fem_modes_solve used ("LAPACK dsygvd,
+ * dense: every mode of the mesh", ...), for mm_res_method. */
+const char *mm_vib_fem_method(mm_fem_method m);
+
+/* One mode of a bar or beam animated: one period 2 pi / omega in nf frames
+ * (mm_vib_mode_frames), u = shape sin(2 pi f / (nf - 1)) over every global
+ * DOF (shape: the mode, mm_fem_ndof(p) values), drawn by mm_vib_member_draw
+ * at `scale`.  Starts the animation.  Returns MM_OK or MM_ENOMEM. */
+int mm_vib_member_mode(mm_result *res, const mm_fem_problem *p, const double *shape, double omega, int nf,
+                       double scale);
+
 #endif

@@ -1572,3 +1572,29 @@ out:
     free(map);
     return rc;
 }
+
+/* ==== convergence studies and the bar's closed form (chapter 5) =============== */
+
+int mm_fem_omega1_errors(const mm_fem_problem *p, int nc, const int *mesh, double exact, double *h, double *e,
+                         mm_error *err)
+{
+    for (int i = 0; i < nc; i++) {
+        mm_fem_problem pc = *p;
+        pc.n_el = (size_t)mesh[i];
+        double w1;
+        mm_fem_modes r = {&w1, NULL, 0, 0, 0, MM_FEM_AUTO};
+        int rc = mm_fem_modes_solve(&pc, 1, NULL, &r, err);
+        if (rc)
+            return rc;
+        h[i] = p->uniform.L / mesh[i];
+        e[i] = fabs(w1 / exact - 1);
+    }
+    return MM_OK;
+}
+
+double mm_fem_bar_omega(const mm_fem_problem *p, int j)
+{
+    double n = (double)p->n_el, h = p->uniform.L / n, c = sqrt(p->uniform.E / p->uniform.rho);
+    double th = p->bc == MM_FEM_FIXED_FREE ? (2 * j - 1) * M_PI / (2 * n) : j * M_PI / n, s = sin(th / 2);
+    return 2 * c / h * s * (p->mass == MM_FEM_CONSISTENT ? sqrt(3 / (3 - 2 * s * s)) : 1);
+}

@@ -365,4 +365,24 @@ typedef struct mm_fem_transient {
 int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fem_transient *tr,
                            mm_error *err);
 
+/* ---- convergence studies and the bar's closed form (chapter 5, vib-bar-modes, vib-beam-modes) ---- */
+
+/* The relative error of the lowest elastic frequency on nc meshes of the
+ * same member: for each i, p with mesh[i] elements solved for one mode
+ * (mm_fem_modes_solve, MM_FEM_AUTO), h[i] = L / mesh[i] and e[i] =
+ * |omega1 / exact - 1|.  Returns MM_OK or the solver's error with err
+ * filled. */
+int mm_fem_omega1_errors(const mm_fem_problem *p, int nc, const int *mesh, double exact, double *h, double *e,
+                         mm_error *err);
+
+/* The natural frequency of mode j (1-based, elastic) of a uniform bar's
+ * mesh in closed form, its dispersion relation: the modes are sampled
+ * sines, theta = j pi / n (fixed-fixed, free-free) or (2j - 1) pi / (2n)
+ * (fixed-free), s = sin(theta / 2), h = L / n, c = sqrt(E / rho):
+ *   omega = (2c/h) s sqrt(3 / (3 - 2 s^2))  consistent mass,
+ *   omega = (2c/h) s                         lumped mass
+ * (T. J. R. Hughes, The Finite Element Method, sec. 9.2).  p: a bar
+ * (MM_FEM_BAR), uniform.  Cannot fail. */
+double mm_fem_bar_omega(const mm_fem_problem *p, int j);
+
 #endif
