@@ -554,3 +554,19 @@ int mm_vib_member_mode(mm_result *res, const mm_fem_problem *p, const double *sh
     mm_vib_mode_frames((int)nd, shape, 1, 0, omega, 1, nf, a->t, u);
     return mm_vib_member_draw(res, p, nf, u, scale);
 }
+
+int mm_vib_member_snaps(mm_result *res, const mm_fem_problem *p, int nf, const long *snap, double h, const double *u,
+                        double frac)
+{
+    size_t nd = mm_fem_ndof(p), step = p->kind == MM_FEM_BEAM ? 2 : 1;
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    double big = 0;
+    if (!a)
+        return MM_ENOMEM;
+    for (int f = 0; f < nf; f++) {
+        a->t[f] = h * (double)snap[f];
+        for (size_t g = 0; g < nd; g += step)
+            big = fmax(big, fabs(u[(size_t)f * nd + g]));
+    }
+    return mm_vib_member_draw(res, p, nf, u, big > 0 ? frac * p->uniform.L / big : 1);
+}

@@ -166,4 +166,12 @@ const char *mm_vib_fem_method(mm_fem_method m);
 int mm_vib_member_mode(mm_result *res, const mm_fem_problem *p, const double *shape, double omega, int nf,
                        double scale);
 
+/* A transient run's snapshots of a bar or beam animated: frame f at t =
+ * h snap[f] shows the field u + f * ndof (every global DOF), drawn by
+ * mm_vib_member_draw so that the largest deflection of all frames (every
+ * other DOF of a beam, every DOF of a bar) is frac of the length (scale 1
+ * when all are 0).  Starts the animation.  Returns MM_OK or MM_ENOMEM. */
+int mm_vib_member_snaps(mm_result *res, const mm_fem_problem *p, int nf, const long *snap, double h, const double *u,
+                        double frac);
+
 #endif
