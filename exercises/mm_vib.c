@@ -570,3 +570,25 @@ int mm_vib_member_snaps(mm_result *res, const mm_fem_problem *p, int nf, const l
     }
     return mm_vib_member_draw(res, p, nf, u, big > 0 ? frac * p->uniform.L / big : 1);
 }
+
+#include <complex.h>      /* after mm_vib.h: mm_fem.h has a field named I */
+
+#include "mm_complex.h"
+
+int mm_vib_masses_steady(mm_result *res, int n, const double *K, const _Complex double *X, double omega, int nf)
+{
+    mm_anim *an = mm_res_animation(res, nf, "t", omega > 0 ? "s" : "periods");
+    double *q = mm_res_alloc(res, (size_t)nf * n * sizeof *q), big = 0;
+    if (!an || !q)
+        return MM_ENOMEM;
+    for (int i = 0; i < n; i++)
+        big = fmax(big, cabs(X[i]));
+    double sc = isfinite(big) && big > 0 ? 0.25 / big : 0;
+    for (int fr = 0; fr < nf; fr++) {
+        double ph = 2 * M_PI * fr / (nf - 1);
+        an->t[fr] = omega > 0 ? ph / omega : ph / (2 * M_PI);
+        for (int i = 0; i < n; i++)
+            q[(size_t)fr * n + i] = sc * creal(X[i] * cexp(mm_cmplx(0, ph)));
+    }
+    return mm_vib_masses_draw(res, n, K, nf, q, 1.0);
+}

@@ -174,4 +174,13 @@ int mm_vib_member_mode(mm_result *res, const mm_fem_problem *p, const double *sh
 int mm_vib_member_snaps(mm_result *res, const mm_fem_problem *p, int nf, const long *snap, double h, const double *u,
                         double frac);
 
+/* The steady harmonic motion q_i(t) = Re(X_i e^{i omega t}) of n masses on
+ * the springs of K (mm_vib_masses_draw, gap 1), one period in nf frames
+ * (t in s; in periods when omega = 0), the largest |X_i| moving a quarter
+ * gap (nothing moves when an amplitude is infinite or all are 0).  X: n
+ * complex amplitudes (a C99 _Complex double array; this header leaves
+ * complex.h out, see mm_fem.h's field I).  Starts the animation.  Returns
+ * MM_OK or MM_ENOMEM. */
+int mm_vib_masses_steady(mm_result *res, int n, const double *K, const _Complex double *X, double omega, int nf);
+
 #endif
