@@ -592,3 +592,20 @@ int mm_vib_masses_steady(mm_result *res, int n, const double *K, const _Complex 
     }
     return mm_vib_masses_draw(res, n, K, nf, q, 1.0);
 }
+
+int mm_vib_coulomb_animate(mm_result *res, const mm_coulomb *s, const double *te, const double *xe,
+                           const double *sge, int ne, double t_plot)
+{
+    double t_show;
+    int nf = mm_ex_anim_frames(t_plot, 2 * M_PI / s->w, 26, &t_show);
+    double *t = mm_res_alloc(res, 3 * (size_t)nf * sizeof *t), *x = t + nf, *F = x + nf;
+    if (!t)
+        return MM_ENOMEM;
+    for (int f = 0; f < nf; f++) {
+        double v;
+        t[f] = t_show * f / (nf - 1);
+        x[f] = mm_coulomb_x(s, te, xe, sge, ne, t[f], &v);
+        F[f] = v != 0 ? (v > 0 ? -1 : 1) * s->mu * s->m * s->g : s->k * x[f];
+    }
+    return mm_ex_animate_oscillator(res, nf, t, x, NULL, F, "friction", 0, 1);
+}

@@ -6,6 +6,7 @@
 #ifndef MM_VIB_H
 #define MM_VIB_H
 
+#include "mm_coulomb.h"
 #include "mm_exercise.h"
 #include "mm_fem.h"
 #include "mm_sdof.h"
@@ -182,5 +183,13 @@ int mm_vib_member_snaps(mm_result *res, const mm_fem_problem *p, int nf, const l
  * complex.h out, see mm_fem.h's field I).  Starts the animation.  Returns
  * MM_OK or MM_ENOMEM. */
 int mm_vib_masses_steady(mm_result *res, int n, const double *K, const _Complex double *X, double omega, int nf);
+
+/* The block of vib-coulomb on its rough floor, frames from the exact
+ * solution (mm_coulomb_x over the ne rests te, xe, sge of mm_coulomb_arcs)
+ * over t_plot (mm_ex_anim_frames, 26 points a frame), the friction force
+ * drawn as an arrow: sliding, mu m g against the motion; at rest, what
+ * holds the spring, k x.  Returns MM_OK or MM_ENOMEM. */
+int mm_vib_coulomb_animate(mm_result *res, const mm_coulomb *s, const double *te, const double *xe,
+                           const double *sge, int ne, double t_plot);
 
 #endif
