@@ -23,6 +23,7 @@
 
 #include "mm_exhelp.h"
 #include "mm_fourier.h"
+#include "mm_peaks.h"
 #include "mm_vib.h"
 
 enum { P_M, P_K, P_C, P_F0, P_DETUNING, P_TEND, P_POINTS };
@@ -128,33 +129,26 @@ static double shape(double a, double b, double t)
  * of |x| over [ta, tb] by least squares on peak = beta g(t) (eq. 7).  The
  * peaks are the velocity zeros of the motion sampled 32 times a period;
  * each is placed by linear interpolation of v and valued by the cubic
- * Hermite interpolant of (x, v).  Returns the number of peaks used (MM_ENOMEM
- * as -1). */
+ * Hermite interpolant of (x, v) (mm_peaks_hermite).  Returns the number of
+ * peaks used (MM_ENOMEM as -1). */
 static int measure_growth(const mm_sdof *s, const mm_sdof_props *p, double ta, double tb, double *rate,
                           mm_result *res)
 {
     double a = p->zeta * p->omega_n, b = p->omega_d - s->omega;
     double T = 2 * M_PI / s->omega;
     int n = (int)ceil(32 * tb / T) + 1;
-    double *t = mm_res_alloc(res, 3 * (size_t)n * sizeof *t), *x = t + n, *v = x + n;
+    double *t = mm_res_alloc(res, 5 * (size_t)n * sizeof *t), *x = t + n, *v = x + n, *tp = v + n, *xp = tp + n;
     if (!t)
         return -1;
     mm_linspace(0, tb, n, t);
     for (int i = 0; i < n; i++)
         x[i] = mm_sdof_x(s, p, t[i], &v[i]);
+    int np = mm_peaks_hermite(n, t, x, v, ta, n, tp, xp);
     double sgg = 0, sgp = 0;
-    int np = 0;
-    for (int i = 0; i + 1 < n; i++) {
-        if (t[i] < ta || !(v[i] * v[i + 1] < 0 || (v[i + 1] == 0 && v[i] != 0)))
-            continue;
-        double h = t[i + 1] - t[i], u = v[i] / (v[i] - v[i + 1]);    /* v = 0 at t[i] + u h */
-        double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
-        double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
-        double xp = h00 * x[i] + h10 * h * v[i] + h01 * x[i + 1] + h11 * h * v[i + 1];
-        double g = shape(a, b, t[i] + u * h);
+    for (int i = 0; i < np; i++) {
+        double g = shape(a, b, tp[i]);
         sgg += g * g;
-        sgp += g * fabs(xp);
-        np++;
+        sgp += g * fabs(xp[i]);
     }
     if (np >= 4)
         *rate = sgp / sgg;
