@@ -609,3 +609,13 @@ int mm_vib_coulomb_animate(mm_result *res, const mm_coulomb *s, const double *te
     }
     return mm_ex_animate_oscillator(res, nf, t, x, NULL, F, "friction", 0, 1);
 }
+
+int mm_vib_sdof_check(const mm_sdof *s, double t_end, int forced, const char *what, mm_error *err)
+{
+    mm_sdof_props p;
+    mm_sdof_props_get(s, &p);
+    if (p.resonant && forced)
+        return mm_error_set(err, MM_ERANGE, "omega", "omega = omega_n = %g rad/s with c = 0 has no steady state (the "
+                            "%s grows without bound); add damping or move omega (see vib-resonance)", p.omega_n, what);
+    return mm_ex_sdof_work_check(s, t_end, err);
+}

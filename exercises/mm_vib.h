@@ -142,6 +142,12 @@ void mm_vib_scale(double *q, size_t n, double largest);
 int mm_vib_sdof_animate(mm_result *res, const mm_sdof *s, const mm_sdof_props *p, double t_end, double period,
                         int npts, int force, const double *Y, int damper);
 
+/* The limits of a forced 1-DOF exercise: at undamped resonance under a
+ * force (forced != 0) there is no steady state, refused naming omega ("the
+ * <what> grows without bound"); then the work bound of the time response
+ * (mm_ex_sdof_work_check).  Returns MM_OK or MM_ERANGE with err filled. */
+int mm_vib_sdof_check(const mm_sdof *s, double t_end, int forced, const char *what, mm_error *err);
+
 /* The steady state of s measured in the time domain on its orbit
  * (mm_ex_sdof_steady_measure, two forcing periods) and checked against the
  * formulas: the amplitude against X = G A (a gain times an amplitude: the

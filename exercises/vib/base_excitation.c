@@ -88,13 +88,7 @@ static double transmissibility(double r, double z)
 static int check(const mm_value *in, mm_error *err)
 {
     mm_sdof s = model(in);
-    mm_sdof_props p;
-    mm_sdof_props_get(&s, &p);
-    if (p.resonant && in[P_Y].x != 0)
-        return mm_error_set(err, MM_ERANGE, "omega",
-                            "omega = omega_n = %g rad/s with c = 0 has no steady state (the motion grows "
-                            "without bound); add damping or move omega (see vib-resonance)", p.omega_n);
-    return mm_ex_sdof_work_check(&s, in[P_TEND].x, err);
+    return mm_vib_sdof_check(&s, in[P_TEND].x, in[P_Y].x != 0, "motion", err);   /* no steady state at resonance */
 }
 
 static int t_minus_one(double r, double *f, void *ctx)

@@ -73,14 +73,7 @@ static mm_sdof model(const mm_value *in)
 static int check(const mm_value *in, mm_error *err)
 {
     mm_sdof s = model(in);
-    mm_sdof_props p;
-    mm_sdof_props_get(&s, &p);
-    if (p.resonant && s.F0 != 0)
-        return mm_error_set(err, MM_ERANGE, "omega",
-                            "omega = omega_n = %g rad/s with c = 0 has no steady state (the amplitude "
-                            "grows without bound); add damping or move omega (see vib-resonance)",
-                            p.omega_n);
-    return mm_ex_sdof_work_check(&s, in[P_TEND].x, err);
+    return mm_vib_sdof_check(&s, in[P_TEND].x, s.F0 != 0, "amplitude", err);   /* no steady state at resonance */
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
