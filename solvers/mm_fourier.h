@@ -196,6 +196,33 @@ int mm_fourier_pulse_transform(const double *x, size_t n, double dt,
                                double t0, double *freq, double *re,
                                double *im, mm_error *err);
 
+/* ---- a spectrum's peaks, leakage and bins by the defining sum (chapter 5, vib-dft) ---- */
+
+/* The twiddle tables cs[m] = cos(2 pi m / n), sn[m] = sin(2 pi m / n),
+ * m < n.  Cannot fail. */
+void mm_fourier_twiddles(size_t n, double *cs, double *sn);
+
+/* The single-sided amplitude of bin k of the n (windowed) samples wx by
+ * the defining sum, without FFTW: O(n) per bin, each term's angle reduced
+ * exactly, (j k mod n), before it is looked up in the twiddle tables;
+ * divided by n gain (the window's coherent gain), doubled but at k = 0 and
+ * n/2: what mm_fourier_spectrum gives, by another route.  Cannot fail. */
+double mm_fourier_direct_amp(const double *wx, size_t n, size_t k, const double *cs, const double *sn, double gain);
+
+/* The largest peaks of the nb amplitudes amp: local maxima (strictly above
+ * the left neighbour, at least the right one, so that a flat top counts
+ * once) above floor, largest first, at most max of them into pk.  Returns
+ * how many. */
+int mm_fourier_peaks(const double *amp, size_t nb, double floor, int max, size_t *pk);
+
+/* The leakage of a spectrum of n samples (nb = mm_fourier_bins(n)
+ * amplitudes, the largest top > 0): the share of power farther than lobe
+ * bins from every peak above level top (mm_fourier_peaks' sense of a peak),
+ * powers relative to top so that nothing overflows.  mark: nb bytes of
+ * scratch, zero on entry.  Cannot fail. */
+double mm_fourier_leakage(const double *amp, size_t nb, size_t n, double top, double level, size_t lobe,
+                          unsigned char *mark);
+
 /* ---- process end ---------------------------------------------------------- */
 
 /* Destroy the cached plans and free FFTW's internal state (fftw_cleanup).
