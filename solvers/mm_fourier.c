@@ -549,3 +549,27 @@ double mm_fourier_leakage(const double *amp, size_t nb, size_t n, double top, do
     }
     return total > 0 ? fmax(0, 1 - near / total) : 0;
 }
+
+/* ==== the transform of an even pulse's samples, summed directly (chapter 5) ==== */
+
+int mm_fourier_even_transform(double f, double *out, void *ctx)
+{
+    const mm_fourier_even *d = ctx;
+    double th = 2 * M_PI * f * d->dt, c1 = cos(th), s1 = sin(th), c = 1, s = 0, sum = 0;
+    for (long i = 1; i <= d->half; i++) {
+        if (i % 64 == 0) {
+            c = cos((double)i * th);
+            s = sin((double)i * th);
+        } else {
+            double cn = c * c1 - s * s1;
+            s = s * c1 + c * s1;
+            c = cn;
+        }
+        sum += d->deriv ? -d->x[d->m + i] * (double)i * s : d->x[d->m + i] * c;
+    }
+    if (d->deriv)
+        *out = 2 * d->dt * 2 * M_PI * d->dt * sum;
+    else
+        *out = d->dt * (d->x[d->m] + 2 * sum) - d->level;
+    return 0;
+}

@@ -223,6 +223,27 @@ int mm_fourier_peaks(const double *amp, size_t nb, double floor, int max, size_t
 double mm_fourier_leakage(const double *amp, size_t nb, size_t n, double top, double level, size_t lobe,
                           unsigned char *mark);
 
+/* ---- the transform of an even pulse's samples, summed directly (chapter 5, vib-fourier-transform) ---- */
+
+/* Samples symmetric about x[m] (x[m - i] = x[m + i]), the ones from m -
+ * half to m + half used, step dt [s]; level is subtracted from the
+ * transform (0, or a height to find where it is crossed); deriv = 1 asks
+ * for the derivative in f instead. */
+typedef struct mm_fourier_even {
+    const double *x;
+    long m, half;
+    double dt, level;
+    int deriv;
+} mm_fourier_even;
+
+/* X_c(f) = dt (x_m + 2 sum_{i=1}^{half} x_{m+i} cos(2 pi f i dt)) - level,
+ * the transform of the samples with the centre's phase taken out (real for
+ * an even pulse), or its derivative in f, without an FFT: at any f, so
+ * that a root finder can place a zero between the bins.  cos and sin of
+ * i th by rotation, restarted exactly every 64 terms.  An mm_roots_fn:
+ * ctx is an mm_fourier_even; writes *out, returns 0. */
+int mm_fourier_even_transform(double f, double *out, void *ctx);
+
 /* ---- process end ---------------------------------------------------------- */
 
 /* Destroy the cached plans and free FFTW's internal state (fftw_cleanup).

@@ -293,3 +293,36 @@ double mm_roots_band(mm_roots_fn_err f, void *params, double x, double w, double
     }
     return worst;
 }
+
+/* ==== the first root on a grid (chapter 5, vib-fourier-transform) ============= */
+
+int mm_roots_first(mm_roots_fn f, void *params, double step, int i0, int i1, double tol, int max_iter, double *x,
+                   int *iter, long *nevals, mm_error *err)
+{
+    double fa = i0 * step, ga, gb;
+    long evals = 1;
+    int iters = 0, rc = MM_OK;
+    *x = NAN;
+    f(fa, &ga, params);
+    for (int i = i0 + 1; i <= i1; i++) {
+        double fb = i * step;
+        f(fb, &gb, params);
+        evals++;
+        if (gb == 0) {
+            *x = fb;
+            break;
+        }
+        if ((ga > 0) != (gb > 0)) {
+            double fx, width;
+            rc = mm_roots_brent(f, params, fa, fb, ga, gb, tol, max_iter, x, &fx, &width, &iters, &evals, err);
+            break;
+        }
+        fa = fb;
+        ga = gb;
+    }
+    if (iter)
+        *iter = iters;
+    if (nevals)
+        *nevals += evals;
+    return rc;
+}
