@@ -573,3 +573,24 @@ int mm_fourier_even_transform(double f, double *out, void *ctx)
         *out = d->dt * (d->x[d->m] + 2 * sum) - d->level;
     return 0;
 }
+
+/* ==== a complex Fourier series at any points (chapter 5) ====================== */
+
+#include <complex.h>   /* here, after fftw3.h: its fftw_complex stays double[2] */
+
+void mm_fourier_mode_sum(const _Complex double *C, int jlo, int jhi, double dk, _Complex double c0, const double *x,
+                         int n, double xl, int restart, _Complex double *psi)
+{
+    for (int i = 0; i < n; i++) {
+        double X = x[i] - xl;
+        double complex step = cexp(I * fmod(dk * X, 2 * M_PI)), e = 0, sum = 0;
+        for (int j = jlo; j <= jhi; j++) {
+            if ((j - jlo) % restart == 0)
+                e = cexp(I * fmod((double)j * dk * X, 2 * M_PI));
+            else
+                e *= step;
+            sum += C[j - jlo] * e;
+        }
+        psi[i] = c0 + 2 * sum;
+    }
+}

@@ -244,6 +244,16 @@ typedef struct mm_fourier_even {
  * ctx is an mm_fourier_even; writes *out, returns 0. */
 int mm_fourier_even_transform(double f, double *out, void *ctx);
 
+/* ---- a complex Fourier series at any points (chapter 5, vib-dispersion) ---- */
+
+/* psi(x_i) = c0 + 2 sum_{j = jlo}^{jhi} C[j - jlo] exp(i j dk (x_i - xl)),
+ * i < n: the modes' sum at any points (not only the FFT's grid).  exp(i j
+ * dk X) by rotation in j, restarted exactly every `restart` modes; the
+ * angles reduced mod 2 pi.  C and psi are C99 _Complex double arrays (this
+ * header leaves complex.h out).  Cannot fail. */
+void mm_fourier_mode_sum(const _Complex double *C, int jlo, int jhi, double dk, _Complex double c0, const double *x,
+                         int n, double xl, int restart, _Complex double *psi);
+
 /* ---- process end ---------------------------------------------------------- */
 
 /* Destroy the cached plans and free FFTW's internal state (fftw_cleanup).

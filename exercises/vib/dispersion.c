@@ -156,26 +156,6 @@ static double complex exact_psi(const wave *w, double x, double t)
     return w->A / csqrt(q) * cexp(I * ph) * cexp(-y * y / (2 * w->sigma * w->sigma * q));
 }
 
-/* psi(x, t) = c_0 + 2 sum_j c_j exp(i (k_j (x - xl) - omega_j t)), eq. (6):
- * C_j = c_j exp(-i omega_j t) once per mode, then exp(i j dk X) by rotation
- * in j, restarted exactly every SUM_RESTART modes. */
-static void mode_sum(const double complex *C, int jlo, int jhi, double dk, double complex c0, const double *x,
-                     int n, double xl, double complex *psi)
-{
-    for (int i = 0; i < n; i++) {
-        double X = x[i] - xl;
-        double complex step = cexp(I * fmod(dk * X, 2 * M_PI)), e = 0, sum = 0;
-        for (int j = jlo; j <= jhi; j++) {
-            if ((j - jlo) % SUM_RESTART == 0)
-                e = cexp(I * fmod((double)j * dk * X, 2 * M_PI));
-            else
-                e *= step;
-            sum += C[j - jlo] * e;
-        }
-        psi[i] = c0 + 2 * sum;
-    }
-}
-
 /* Centroid and r.m.s. width of |psi|^2 on an even grid (trapezoid; the
  * ends are negligible). */
 static void moments(const double *x, const double complex *psi, int n, double *centre, double *width)
@@ -252,8 +232,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     mm_linspace(xl, xr, np, s0->x);
     double complex c0 = cr[0];
-    mode_sum(C0, jlo, jhi, dk, c0, s0->x, np, xl, p0);
-    mode_sum(Ct, jlo, jhi, dk, c0, s0->x, np, xl, pt);
+    /* psi(x, t) = c_0 + 2 sum_j C_j exp(i k_j (x - xl)), eq. (6), C_j = c_j exp(-i omega_j t) */
+    mm_fourier_mode_sum(C0, jlo, jhi, dk, c0, s0->x, np, xl, SUM_RESTART, p0);
+    mm_fourier_mode_sum(Ct, jlo, jhi, dk, c0, s0->x, np, xl, SUM_RESTART, pt);
     double worst = 0, worst0 = 0;
     for (int i = 0; i < np; i++) {
         double x = s0->x[i];
