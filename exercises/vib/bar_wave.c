@@ -60,8 +60,7 @@ static const mm_output outputs[] = {
     [O_HSL] = MM_SCALAR("courant_limit_lumped", "largest stable Courant number of central difference, lumped "
                         "mass (2 / (omega_max h_e / c))", "", .flags = MM_EXACT),
     [O_HSC] = MM_SCALAR("courant_limit_consistent", "the same, consistent mass", "", .flags = MM_EXACT),
-    [O_UMAX] = MM_SCALAR("u_end_max", "largest free-end displacement at the stored steps, the model shown first",
-                         "m"),
+    [O_UMAX] = MM_SCALAR("u_end_max", "largest free-end displacement at the stored steps, the model shown first", "m"),
     [O_UMAXX] = MM_SCALAR("u_end_max_exact", "2 F L / (E A): twice the static stretch", "m", .flags = MM_ANSWER | MM_EXACT),
     [O_EBL] = MM_SCALAR("energy_identity_lumped", "the scheme's energy identity over the run, relative", ""),
     [O_EBC] = MM_SCALAR("energy_identity_consistent", "the same, consistent mass", ""),

@@ -58,8 +58,7 @@ enum { O_BEAT, O_BEAT_F, O_CARRIER, O_EMAX, O_EMIN, O_PERIODIC, O_PERIOD, O_PEAK
 static const mm_output outputs[] = {
     [O_BEAT] = MM_SCALAR("beat_period", "beat period 2 pi / |omega1 - omega2|", "s", .flags = MM_ANSWER | MM_EXACT),
     [O_BEAT_F] = MM_SCALAR("beat_frequency", "beat frequency |omega1 - omega2| / (2 pi)", "Hz", .flags = MM_EXACT),
-    [O_CARRIER] = MM_SCALAR("carrier_omega", "mean angular frequency (omega1 + omega2)/2", "rad/s",
-                            .flags = MM_EXACT),
+    [O_CARRIER] = MM_SCALAR("carrier_omega", "mean angular frequency (omega1 + omega2)/2", "rad/s", .flags = MM_EXACT),
     [O_EMAX] = MM_SCALAR("envelope_max", "largest envelope A1 + A2", "m", .flags = MM_ANSWER | MM_EXACT),
     [O_EMIN] = MM_SCALAR("envelope_min", "smallest envelope |A1 - A2|", "m", .flags = MM_ANSWER | MM_EXACT),
     [O_PERIODIC] = MM_SCALAR("periodic", "is the sum periodic?", "", .flags = MM_ANSWER | MM_EXACT),

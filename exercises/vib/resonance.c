@@ -35,8 +35,7 @@ static const mm_param params[] = {
              .help = "spring force per metre of stretch; with m it sets omega_n between 3e-3 and 3e4 rad/s"},
     [P_C] = {"c", "damping coefficient", "N s/m", MM_REAL, 0, 0, 1e4,
              .help = "viscous damper force per m/s; 0 lets the amplitude grow without bound"},
-    [P_F0] = {"F0", "force amplitude", "N", MM_REAL, 1, 0, 1e4,
-              .help = "amplitude of F0 cos(omega t), up to 10 kN"},
+    [P_F0] = {"F0", "force amplitude", "N", MM_REAL, 1, 0, 1e4, .help = "amplitude of F0 cos(omega t), up to 10 kN"},
     [P_DETUNING] = {"detuning", "detuning", "", MM_REAL, 0, -0.5, 0.5,
                     .help = "relative distance of the forcing frequency from omega_n: omega = omega_n (1 + detuning); "
                             "within +-0.5, beyond which it is no longer near resonance"},
