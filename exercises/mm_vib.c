@@ -1,12 +1,14 @@
-/* mm_vib.c — drawings of the multi-DOF vibration exercises (mm_vib.h). */
-#include "mm_vib.h"
+/* mm_vib.c — the vibration chapter's kit: drawings, animations and families of checks (mm_vib.h). */
+#include "mm_vib.h"   /* before complex.h: mm_fem.h has a field named I */
 
+#include <complex.h>
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "mm_complex.h"
 #include "mm_exhelp.h"
 #include "mm_mdof.h"
 #include "mm_scene.h"
@@ -533,6 +535,33 @@ int mm_vib_steady_check(mm_result *res, const mm_sdof *s, const mm_sdof_props *p
     return MM_OK;
 }
 
+int mm_vib_sdof_check(const mm_sdof *s, double t_end, int forced, const char *what, mm_error *err)
+{
+    mm_sdof_props p;
+    mm_sdof_props_get(s, &p);
+    if (p.resonant && forced)
+        return mm_error_set(err, MM_ERANGE, "omega", "omega = omega_n = %g rad/s with c = 0 has no steady state (the "
+                            "%s grows without bound); add damping or move omega (see vib-resonance)", p.omega_n, what);
+    return mm_ex_sdof_work_check(s, t_end, err);
+}
+
+int mm_vib_coulomb_animate(mm_result *res, const mm_coulomb *s, const double *te, const double *xe,
+                           const double *sge, int ne, double t_plot)
+{
+    double t_show;
+    int nf = mm_ex_anim_frames(t_plot, 2 * M_PI / s->w, 26, &t_show);
+    double *t = mm_res_alloc(res, 3 * (size_t)nf * sizeof *t), *x = t + nf, *F = x + nf;
+    if (!t)
+        return MM_ENOMEM;
+    for (int f = 0; f < nf; f++) {
+        double v;
+        t[f] = t_show * f / (nf - 1);
+        x[f] = mm_coulomb_x(s, te, xe, sge, ne, t[f], &v);
+        F[f] = v != 0 ? (v > 0 ? -1 : 1) * s->mu * s->m * s->g : s->k * x[f];
+    }
+    return mm_ex_animate_oscillator(res, nf, t, x, NULL, F, "friction", 0, 1);
+}
+
 /* ---- the finite-element exercises (5.12) ---------------------------------------- */
 
 const char *mm_vib_fem_method(mm_fem_method m)
@@ -571,9 +600,7 @@ int mm_vib_member_snaps(mm_result *res, const mm_fem_problem *p, int nf, const l
     return mm_vib_member_draw(res, p, nf, u, big > 0 ? frac * p->uniform.L / big : 1);
 }
 
-#include <complex.h>      /* after mm_vib.h: mm_fem.h has a field named I */
-
-#include "mm_complex.h"
+/* ---- the absorber (5.10.1): a steady motion of complex amplitudes ------------- */
 
 int mm_vib_masses_steady(mm_result *res, int n, const double *K, const _Complex double *X, double omega, int nf)
 {
@@ -591,31 +618,4 @@ int mm_vib_masses_steady(mm_result *res, int n, const double *K, const _Complex 
             q[(size_t)fr * n + i] = sc * creal(X[i] * cexp(mm_cmplx(0, ph)));
     }
     return mm_vib_masses_draw(res, n, K, nf, q, 1.0);
-}
-
-int mm_vib_coulomb_animate(mm_result *res, const mm_coulomb *s, const double *te, const double *xe,
-                           const double *sge, int ne, double t_plot)
-{
-    double t_show;
-    int nf = mm_ex_anim_frames(t_plot, 2 * M_PI / s->w, 26, &t_show);
-    double *t = mm_res_alloc(res, 3 * (size_t)nf * sizeof *t), *x = t + nf, *F = x + nf;
-    if (!t)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++) {
-        double v;
-        t[f] = t_show * f / (nf - 1);
-        x[f] = mm_coulomb_x(s, te, xe, sge, ne, t[f], &v);
-        F[f] = v != 0 ? (v > 0 ? -1 : 1) * s->mu * s->m * s->g : s->k * x[f];
-    }
-    return mm_ex_animate_oscillator(res, nf, t, x, NULL, F, "friction", 0, 1);
-}
-
-int mm_vib_sdof_check(const mm_sdof *s, double t_end, int forced, const char *what, mm_error *err)
-{
-    mm_sdof_props p;
-    mm_sdof_props_get(s, &p);
-    if (p.resonant && forced)
-        return mm_error_set(err, MM_ERANGE, "omega", "omega = omega_n = %g rad/s with c = 0 has no steady state (the "
-                            "%s grows without bound); add damping or move omega (see vib-resonance)", p.omega_n, what);
-    return mm_ex_sdof_work_check(s, t_end, err);
 }

@@ -1,7 +1,9 @@
-/* mm_vib.h — what the multi-DOF vibration exercises (5.10-5.12, and
- * num-newmark) share that is not numerics: drawing masses on springs,
- * bars and beams in an answer's animation, and a mode's motion in frames.
- * The numerics are in solvers/mm_mdof.h and solvers/mm_fem.h.
+/* mm_vib.h — what the vibration exercises (chapter 5, and num-newmark)
+ * share that is not numerics: drawing masses on springs, blocks, bars and
+ * beams in an answer's animation, a mode's motion in frames, what a
+ * transient exercise shows of its run, and the families of checks the
+ * 1-DOF exercises share.  The numerics are in solvers/ (mm_sdof, mm_mdof,
+ * mm_fem, mm_coulomb, mm_fourier, ...).
  */
 #ifndef MM_VIB_H
 #define MM_VIB_H
@@ -160,6 +162,14 @@ int mm_vib_sdof_check(const mm_sdof *s, double t_end, int forced, const char *wh
 int mm_vib_steady_check(mm_result *res, const mm_sdof *s, const mm_sdof_props *p, double G, double A,
                         double phase, const char *x_ref, mm_error *err);
 
+/* The block of vib-coulomb on its rough floor, frames from the exact
+ * solution (mm_coulomb_x over the ne rests te, xe, sge of mm_coulomb_arcs)
+ * over t_plot (mm_ex_anim_frames, 26 points a frame), the friction force
+ * drawn as an arrow: sliding, mu m g against the motion; at rest, what
+ * holds the spring, k x.  Returns MM_OK or MM_ENOMEM. */
+int mm_vib_coulomb_animate(mm_result *res, const mm_coulomb *s, const double *te, const double *xe,
+                           const double *sge, int ne, double t_plot);
+
 /* ---- the finite-element exercises (5.12) ---------------------------------------- */
 
 /* The words for the eigen solver mm_fem_modes_solve used ("LAPACK dsygvd,
@@ -181,6 +191,8 @@ int mm_vib_member_mode(mm_result *res, const mm_fem_problem *p, const double *sh
 int mm_vib_member_snaps(mm_result *res, const mm_fem_problem *p, int nf, const long *snap, double h, const double *u,
                         double frac);
 
+/* ---- the absorber (5.10.1): a steady motion of complex amplitudes ------------- */
+
 /* The steady harmonic motion q_i(t) = Re(X_i e^{i omega t}) of n masses on
  * the springs of K (mm_vib_masses_draw, gap 1), one period in nf frames
  * (t in s; in periods when omega = 0), the largest |X_i| moving a quarter
@@ -189,13 +201,5 @@ int mm_vib_member_snaps(mm_result *res, const mm_fem_problem *p, int nf, const l
  * complex.h out, see mm_fem.h's field I).  Starts the animation.  Returns
  * MM_OK or MM_ENOMEM. */
 int mm_vib_masses_steady(mm_result *res, int n, const double *K, const _Complex double *X, double omega, int nf);
-
-/* The block of vib-coulomb on its rough floor, frames from the exact
- * solution (mm_coulomb_x over the ne rests te, xe, sge of mm_coulomb_arcs)
- * over t_plot (mm_ex_anim_frames, 26 points a frame), the friction force
- * drawn as an arrow: sliding, mu m g against the motion; at rest, what
- * holds the spring, k x.  Returns MM_OK or MM_ENOMEM. */
-int mm_vib_coulomb_animate(mm_result *res, const mm_coulomb *s, const double *te, const double *xe,
-                           const double *sge, int ne, double t_plot);
 
 #endif
