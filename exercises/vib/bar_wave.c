@@ -21,7 +21,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
 #include "mm_exhelp.h"
 #include "mm_fem.h"

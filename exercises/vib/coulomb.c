@@ -9,8 +9,8 @@
  * to integrate a discontinuous right-hand side honestly: integrate each
  * smooth piece (friction sign frozen), stop at the velocity zero as an
  * event (mm_ode's event location), decide there whether the mass sticks or
- * turns, and restart.  No step ever straddles the switch, so nothing
- * chatters.  The answers (stop time, final place, the rests, the plotted
+ * turns, and restart (mm_coulomb_integrate).  No step ever straddles the
+ * switch, so nothing chatters.  The answers (stop time, final place, the rests, the plotted
  * motion) come from the exact piecewise solution, eqs. (3)-(6); the
  * event-driven integration is shown beside them with its error.
  * Reference: S. S. Rao, Mechanical Vibrations, 6th ed., section 2.9

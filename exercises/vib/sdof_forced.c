@@ -13,7 +13,6 @@
  * from an integration started on the steady orbit.
  * Reference: any vibrations text, e.g. S. S. Rao, Mechanical Vibrations, ch. 3.
  */
-#include <float.h>
 #include <math.h>
 
 #include "mm_exhelp.h"

@@ -7,8 +7,8 @@
  * regime (eq. 4 and its critical and overdamped forms, mm_sdof); DOP853
  * integrates eq. (1) beside it and its error is shown.  The energy balance
  * (5) is the second check: a third equation adds up the damper's work
- * during the integration, and it must equal what the closed form says the
- * block has lost.
+ * during the integration (mm_sdof_damper_work), and it must equal what the
+ * closed form says the block has lost.
  * Reference: S. S. Rao, Mechanical Vibrations, ch. 2.
  */
 #include <float.h>

@@ -15,7 +15,6 @@
  * the coupled system's transition matrix, both to rounding.
  * Reference: S. S. Rao, Mechanical Vibrations, 6th ed., secs. 6.13-6.14.
  */
-#include <float.h>
 #include <math.h>
 
 #include "mm_exhelp.h"
