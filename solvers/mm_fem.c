@@ -11,6 +11,7 @@
 
 #include "mm_linalg.h"
 #include "mm_mdof.h"
+#include "mm_newmark.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -1601,8 +1602,6 @@ double mm_fem_bar_omega(const mm_fem_problem *p, int j)
 
 /* ==== modal references of a transient run (chapter 5) ========================= */
 
-#include "mm_newmark.h"   /* here, with the block it serves */
-
 static int modal_newmark(const mm_fem_problem *p, const mm_fem_modes *md, const mm_fem_damping *d,
                          const mm_fem_load *ld, double h, long steps, long stride, size_t dof, double *out,
                          double *scale, double *f, double *y, double *A, double *B, double *pk, mm_error *err)
@@ -1631,7 +1630,8 @@ static int modal_newmark(const mm_fem_problem *p, const mm_fem_modes *md, const 
             double s = 0, sa = 0;         /* the sum, and the size of its terms: q + h v + h^2 a */
             for (size_t j = 0; j < nm; j++) {
                 s += md->shape[j * nd + dof] * y[3 * j];
-                sa += fabs(md->shape[j * nd + dof]) * (fabs(y[3 * j]) + h * fabs(y[3 * j + 1]) + h * h * fabs(y[3 * j + 2]));
+                sa += fabs(md->shape[j * nd + dof]) *
+                      (fabs(y[3 * j]) + h * fabs(y[3 * j + 1]) + h * h * fabs(y[3 * j + 2]));
             }
             out[row++] = s;
             *scale = fmax(*scale, sa);

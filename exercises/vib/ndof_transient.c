@@ -127,7 +127,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double r[MAXN];
     if ((rc = mm_mdof_static_residual(n, m, K, w, Phi, p, F[p], r, err)))
         return rc;
-    mm_res_scalar_err(res, O_STATIC, mm_maxabs(r, n), 16 * eps * n * mm_vib_big(tr.q_ex, (size_t)tr.ns * n), MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, O_STATIC, mm_maxabs(r, n), 16 * eps * n * mm_vib_big(tr.q_ex, (size_t)tr.ns * n),
+                      MM_ERR_ESTIMATE);
 
     if (w[n - 1] * h > 2)
         mm_res_warn(res, "omega_max h = %.3g: the fastest modes take fewer than 3 steps a period; average "

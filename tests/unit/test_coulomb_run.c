@@ -3,9 +3,11 @@
  * mm_coulomb_arcs: the same number of arcs, the same rests and the same
  * plotted motion to the integrator's tolerance, the energy balance (7)
  * closing, the per-arc error estimate of a finer run of the right size;
- * and a block released inside the band never moves. */
+ * a block released inside the band never moves; an exact arc's energy
+ * residual (7) vanishes, a short one's is what the spring keeps. */
 #include "mm_test.h"
 
+#include <float.h>
 #include <stdlib.h>
 
 #include "mm_coulomb.h"
@@ -71,11 +73,27 @@ static void a_block_inside_the_band_should_never_move(void **state)
     assert_true(mm_coulomb_energy_residual(&s, 0, o.x) == 0);
 }
 
+/* Eq. (7) over an exact arc: from rest at x0 the block stops at -(x0 - 2 d),
+ * losing k (x0^2 - x1^2) / 2 = mu m g |x1 - x0|: the arc's energy residual
+ * is 0 but for rounding; a wrong end leaves k (x1^2 - x1'^2)/2 + ... */
+static void arc_energy_should_vanish_on_an_exact_arc(void **state)
+{
+    (void)state;
+    mm_coulomb s = mm_coulomb_make(2, 800, 0.2, 10, 0.0525, 0);     /* d = 5 mm */
+    double x1 = -(0.0525 - 2 * 0.005), E0 = 0.5 * 800 * 0.0525 * 0.0525;
+    check_abs(mm_coulomb_arc_energy(&s, 0.0525, 0, x1), 0, 8 * DBL_EPSILON * E0, "exact arc: 0");
+    /* 1 mm short: the spring keeps 800 (0.0425^2 - 0.0415^2)/2 more, friction takes 2 m g mu 1 mm less */
+    double short_by = mm_coulomb_arc_energy(&s, 0.0525, 0, x1 + 0.001);
+    check_rel(short_by, 0.5 * 800 * (0.0425 * 0.0425 - 0.0415 * 0.0415) + 0.2 * 2 * 10 * 0.001, 1e-13,
+              "an arc that stops 1 mm short");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(integrated_rests_should_be_the_exact_ones),
         cmocka_unit_test(a_block_inside_the_band_should_never_move),
+        cmocka_unit_test(arc_energy_should_vanish_on_an_exact_arc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

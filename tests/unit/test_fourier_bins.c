@@ -41,7 +41,7 @@ static void direct_amp_should_be_the_fft(void **state)
              * 2 eps (n + 16) times that; measured here: 2.3 eps) */
             double tol = 8 * EPS * sum / ((double)n * gain);
             for (size_t k = 0; k < nb; k++)
-                check_abs(mm_fourier_direct_amp(wx, n, k, cs, sn, gain), amp[k], tol, "bin k: the defining sum vs FFTW");
+                check_abs(mm_fourier_direct_amp(wx, n, k, cs, sn, gain), amp[k], tol, "bin k: direct sum vs FFTW");
         }
 }
 
