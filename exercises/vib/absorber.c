@@ -202,15 +202,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * omega_n, refined by golden sections; it passes through the fixed
      * points, so it is at least Xfp; Den Hartog's damping puts it only a
      * little above them */
-    double best = -1, step = 3 * wn / 2000, fx;
-    int ib = 0;
-    for (int i = 0; i <= 2000; i++) {
-        x1_abs(i * step, &fx, &o);
-        if (fx > best)
-            best = fx, ib = i;
-    }
     mm_opt_result pk;
-    if ((rc = mm_opt_golden_max(x1_abs, &o, fmax(ib - 1, 0) * step, (ib + 1) * step, 1e-12 * wn, 200, &pk, err)))
+    if ((rc = mm_opt_scan_golden_max(x1_abs, &o, 3 * wn / 2000, 2000, 1e-12 * wn, 200, &pk, err)))
         return rc;
     mm_res_scalar_err(res, O_XPEAK, pk.fx, 1e-12 * pk.fx, MM_ERR_ESTIMATE);
     mm_res_check_abs(res, "optimum curve's peak >= the fixed points' height it passes through [m]",
