@@ -550,6 +550,22 @@ double mm_fourier_leakage(const double *amp, size_t nb, size_t n, double top, do
     return total > 0 ? fmax(0, 1 - near / total) : 0;
 }
 
+double mm_fourier_power_above(const double *amp, size_t nb, size_t n, double top, size_t k0, size_t *kmax)
+{
+    double hi = 0, p_all = 0, p_above = 0;
+    *kmax = 0;
+    for (size_t k = 0; k < nb && top > 0; k++) {
+        double a = amp[k] / top, p = (k == 0 || 2 * k == n) ? a * a : 0.5 * a * a;
+        p_all += p;
+        if (k > k0) {
+            p_above += p;
+            if (amp[k] > hi)
+                hi = amp[k], *kmax = k;
+        }
+    }
+    return p_all > 0 ? p_above / p_all : 0;
+}
+
 /* ==== the transform of an even pulse's samples, summed directly (chapter 5) ==== */
 
 int mm_fourier_even_transform(double f, double *out, void *ctx)

@@ -223,6 +223,13 @@ int mm_fourier_peaks(const double *amp, size_t nb, double floor, int max, size_t
 double mm_fourier_leakage(const double *amp, size_t nb, size_t n, double top, double level, size_t lobe,
                           unsigned char *mark);
 
+/* The share of a spectrum's power (n samples, nb = mm_fourier_bins(n)
+ * amplitudes, the largest top) in the bins k > k0 (the mean and Nyquist
+ * bins counted whole, the others half, powers relative to top), and the
+ * bin of the largest nonzero amplitude among them into *kmax (0 when all
+ * are 0; top 0: share 0 and *kmax 0).  Cannot fail. */
+double mm_fourier_power_above(const double *amp, size_t nb, size_t n, double top, size_t k0, size_t *kmax);
+
 /* ---- the transform of an even pulse's samples, summed directly (chapter 5, vib-fourier-transform) ---- */
 
 /* Samples symmetric about x[m] (x[m - i] = x[m + i]), the ones from m -

@@ -89,4 +89,13 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
 int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_panels, double tol,
                mm_quad_result *r, mm_error *err);
 
+/* ---- the moments of a sampled density (chapter 5, vib-dispersion) ---- */
+
+/* The centroid sum p x / sum p and the r.m.s. width sqrt(sum p (x - c)^2 /
+ * sum p) of the n samples p >= 0 (not all 0) at the equally spaced x: the
+ * trapezoidal rule's moments of a density whose ends are negligible (the
+ * end weights of 1/2 left out, and the spacing, which cancels).  Cannot
+ * fail. */
+void mm_quad_moments(const double *x, const double *p, int n, double *centre, double *width);
+
 #endif

@@ -136,18 +136,11 @@ static int aliasing(const mm_value *in, mm_expr *e, size_t n, double fs, double 
     int rc = mm_fourier_spectrum(xf, m, fs * R, &fo, NULL, af, NULL, err);
     if (rc != MM_OK)
         return rc;
-    double ftop = mm_maxabs(af, (int)mb), hi = 0, p_all = 0, p_above = 0;
-    size_t khi = 0;
-    for (size_t k = 0; k < mb && ftop > 0; k++) {
-        double a = af[k] / ftop, p = (k == 0 || 2 * k == m) ? a * a : 0.5 * a * a;
-        p_all += p;
-        if (2 * k > n + 2 * ALIAS_GUARD) {            /* above fs/2 + guard: f_k = k fs / N */
-            p_above += p;
-            if (af[k] > hi)
-                hi = af[k], khi = k;
-        }
-    }
-    double above = p_all > 0 ? p_above / p_all : 0;
+    /* the power above fs/2 + guard (f_k = k fs / N: 2 k > N + 2 guard), and its largest component */
+    double ftop = mm_maxabs(af, (int)mb);
+    size_t khi;
+    double above = mm_fourier_power_above(af, mb, m, ftop, (n + 2 * ALIAS_GUARD) / 2, &khi);
+    double hi = khi ? af[khi] : 0;
     mm_res_method_stat(res, "above_nyquist", above);
     if (hi > ALIAS_LEVEL * ftop) {
         double f = (double)khi * fs / (double)n, fa = fabs(f - fs * nearbyint(f / fs));

@@ -30,6 +30,7 @@
 
 #include "mm_exhelp.h"
 #include "mm_fourier.h"
+#include "mm_quad.h"
 
 enum { P_MEDIUM, P_E, P_RHO, P_H, P_LAMBDA, P_CYCLES, P_AMP, P_T };
 enum { M_BEAM, M_BAR };
@@ -156,24 +157,6 @@ static double complex exact_psi(const wave *w, double x, double t)
     return w->A / csqrt(q) * cexp(I * ph) * cexp(-y * y / (2 * w->sigma * w->sigma * q));
 }
 
-/* Centroid and r.m.s. width of |psi|^2 on an even grid (trapezoid; the
- * ends are negligible). */
-static void moments(const double *x, const double complex *psi, int n, double *centre, double *width)
-{
-    double s0 = 0, s1 = 0, s2 = 0;
-    for (int i = 0; i < n; i++) {
-        double p = creal(psi[i]) * creal(psi[i]) + cimag(psi[i]) * cimag(psi[i]);
-        s0 += p;
-        s1 += p * x[i];
-    }
-    *centre = s1 / s0;
-    for (int i = 0; i < n; i++) {
-        double p = creal(psi[i]) * creal(psi[i]) + cimag(psi[i]) * cimag(psi[i]), d = x[i] - *centre;
-        s2 += p * d * d;
-    }
-    *width = sqrt(s2 / s0);
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     wave w = model(in);
@@ -248,9 +231,16 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     /* the curves are for the eye: six digits, once the checks and the
      * moments have used them all */
-    double xc0, xct, wd0, wdt;
-    moments(s0->x, p0, np, &xc0, &wd0);
-    moments(s0->x, pt, np, &xct, &wdt);
+    /* the centroid and r.m.s. width of |psi|^2 (mm_quad_moments) */
+    double xc0, xct, wd0, wdt, *d0 = mm_res_alloc(res, 2 * sizeof *d0 * (size_t)np), *dt = d0 + np;
+    if (!d0)
+        return MM_ENOMEM;
+    for (int i = 0; i < np; i++) {
+        d0[i] = creal(p0[i]) * creal(p0[i]) + cimag(p0[i]) * cimag(p0[i]);
+        dt[i] = creal(pt[i]) * creal(pt[i]) + cimag(pt[i]) * cimag(pt[i]);
+    }
+    mm_quad_moments(s0->x, d0, np, &xc0, &wd0);
+    mm_quad_moments(s0->x, dt, np, &xct, &wdt);
     mm_series *sr[4] = {s0, st, e0, et};
     for (int k = 0; k < 4; k++) {
         mm_ex_round_sig(sr[k]->x, np, 8);

@@ -138,6 +138,24 @@ static void mode_sum_should_be_the_terms_summed_one_by_one(void **state)
     }
 }
 
+/* The power above a bin, by hand: n = 24 (13 bins), amplitudes 0.1 (mean,
+ * whole), 1 at 6, 0.2 at 9, 0.4 at 10, 0.3 at 12 (Nyquist, whole). */
+static void power_above_should_be_the_share_by_hand(void **state)
+{
+    (void)state;
+    double amp[13] = {0.1, 0, 0, 0, 0, 0, 1, 0, 0, 0.2, 0.4, 0, 0.3};
+    double all = 0.01 + 0.5 * (1 + 0.04 + 0.16) + 0.09;
+    size_t k;
+    check_rel(mm_fourier_power_above(amp, 13, 24, 1, 8, &k), (0.5 * (0.04 + 0.16) + 0.09) / all, 4 * DBL_EPSILON,
+              "share above bin 8");
+    assert_true(k == 10);
+    check_rel(mm_fourier_power_above(amp, 13, 24, 1, 10, &k), 0.09 / all, 4 * DBL_EPSILON, "share above bin 10");
+    assert_true(k == 12);
+    double zero[13] = {0.1, 0, 0, 0, 0, 0, 1};
+    assert_true(mm_fourier_power_above(zero, 13, 24, 1, 8, &k) == 0 && k == 0);   /* nothing above */
+    assert_true(mm_fourier_power_above(zero, 13, 24, 0, 0, &k) == 0 && k == 0);   /* top 0: nothing at all */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -146,6 +164,7 @@ int main(void)
         cmocka_unit_test(leakage_should_be_the_power_away_from_the_peaks),
         cmocka_unit_test(even_transform_should_be_the_dirichlet_kernel),
         cmocka_unit_test(mode_sum_should_be_the_terms_summed_one_by_one),
+        cmocka_unit_test(power_above_should_be_the_share_by_hand),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
