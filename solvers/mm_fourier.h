@@ -196,6 +196,14 @@ int mm_fourier_pulse_transform(const double *x, size_t n, double dt,
                                double t0, double *freq, double *re,
                                double *im, mm_error *err);
 
+/* ---- process end ---------------------------------------------------------- */
+
+/* Destroy the cached plans and free FFTW's internal state (fftw_cleanup).
+ * Call at process exit, or between tests, when no other thread is inside
+ * this module.  Calling it twice, or with nothing cached, is harmless; the
+ * module works again afterwards (plans are remade on demand). */
+void mm_fourier_cleanup(void);
+
 /* ---- a spectrum's peaks, leakage and bins by the defining sum (chapter 5, vib-dft) ---- */
 
 /* The twiddle tables cs[m] = cos(2 pi m / n), sn[m] = sin(2 pi m / n),
@@ -260,13 +268,5 @@ int mm_fourier_even_transform(double f, double *out, void *ctx);
  * header leaves complex.h out).  Cannot fail. */
 void mm_fourier_mode_sum(const _Complex double *C, int jlo, int jhi, double dk, _Complex double c0, const double *x,
                          int n, double xl, int restart, _Complex double *psi);
-
-/* ---- process end ---------------------------------------------------------- */
-
-/* Destroy the cached plans and free FFTW's internal state (fftw_cleanup).
- * Call at process exit, or between tests, when no other thread is inside
- * this module.  Calling it twice, or with nothing cached, is harmless; the
- * module works again afterwards (plans are remade on demand). */
-void mm_fourier_cleanup(void);
 
 #endif
