@@ -1,12 +1,15 @@
-/* mm_vib.c — drawings of the multi-DOF vibration exercises (mm_vib.h). */
-#include "mm_vib.h"
+/* mm_vib.c — the vibration chapter's kit: drawings, animations and families of checks (mm_vib.h). */
+#include "mm_vib.h"   /* before complex.h: mm_fem.h has a field named I */
 
+#include <complex.h>
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "mm_complex.h"
+#include "mm_exhelp.h"
 #include "mm_mdof.h"
 #include "mm_scene.h"
 
@@ -444,4 +447,175 @@ int mm_vib_transient_run(mm_result *res, int n, const double *M, const double *K
     mm_res_check_abs(res, "modal superposition (every mode exact) vs the coupled system's transition matrix: worst "
                           "difference [m] (rounding)", ds, 0, o->round + 1e-300);
     return MM_OK;
+}
+
+/* ---- the transient exercises (5.10.2, 5.11.1): what they show ---------------- */
+
+int mm_vib_transient_show(mm_result *res, const mm_vib_transient *tr, int n, double h, int out_err,
+                          int out_trunc, int nc, const int *coord, const int *out, int sets)
+{
+    mm_res_scalar_err(res, out_err, tr->err_max, tr->round_nm, MM_ERR_ESTIMATE);
+    mm_res_scalar_err(res, out_trunc, tr->trunc_max, tr->round, MM_ERR_ESTIMATE);
+    const double *src[3] = {tr->q_nm, tr->q_ex, tr->q_m};
+    for (int s = 0; s < sets; s++)
+        for (int i = 0; i < nc; i++) {
+            mm_series *se = mm_res_series(res, out[s * nc + i], tr->ns);
+            if (!se)
+                return MM_ENOMEM;
+            for (int k = 0; k < tr->ns; k++)
+                se->x[k] = tr->t[k], se->y[k] = src[s][(size_t)k * n + coord[i]];
+        }
+    mm_res_method(res, mm_newmark_method_name(MM_NEWMARK_AVERAGE), h);
+    mm_res_method_stat(res, "steps", (double)tr->steps);
+    return MM_OK;
+}
+
+int mm_vib_modal_frames(mm_result *res, int n, const double *M, const double *omega, const double *c,
+                        const double *Phi, const double *q0, const double *v0, const double *F, double W,
+                        double t_end, double period, int max_frames, int *nf, double **q, mm_error *err)
+{
+    double t_show;
+    *nf = mm_vib_frames(t_end, period, max_frames, &t_show);
+    mm_anim *a = mm_res_animation(res, *nf, "t", "s");
+    double *t = mm_res_alloc(res, (size_t)*nf * sizeof *t);
+    *q = mm_res_alloc(res, (size_t)*nf * n * sizeof **q);
+    if (!a || !t || !*q)
+        return MM_ENOMEM;
+    for (int f = 0; f < *nf; f++)
+        t[f] = a->t[f] = t_show * f / (*nf - 1);
+    mm_mdof_pulse g = {1, W, INFINITY};
+    return mm_mdof_modal_response(n, n, omega, c, Phi, n, M, q0, v0, F, &g, *nf, t, *q, err);
+}
+
+void mm_vib_scale(double *q, size_t n, double largest)
+{
+    double big = 0;
+    for (size_t i = 0; i < n; i++)
+        big = fmax(big, fabs(q[i]));
+    if (!(big > 0))
+        return;
+    for (size_t i = 0; i < n; i++)
+        q[i] *= largest / big;
+}
+
+/* ---- the 1-DOF exercises (5.9): the block moving, the steady state measured ---- */
+
+int mm_vib_sdof_animate(mm_result *res, const mm_sdof *s, const mm_sdof_props *p, double t_end, double period,
+                        int npts, int force, const double *Y, int damper)
+{
+    double t_show;
+    int nf = mm_ex_anim_frames(t_end, period, npts, &t_show);
+    double *t = mm_res_alloc(res, 4 * (size_t)nf * sizeof *t), *x = t + nf, *F = x + nf, *y = F + nf;
+    if (!t)
+        return MM_ENOMEM;
+    for (int f = 0; f < nf; f++) {
+        t[f] = t_show * f / (nf - 1);
+        x[f] = mm_sdof_x(s, p, t[f], NULL);
+        F[f] = s->F0 * cos(s->omega * t[f]);
+        y[f] = Y ? *Y * cos(s->omega * t[f]) : 0;
+    }
+    return mm_ex_animate_oscillator(res, nf, t, x, Y ? y : NULL, force && s->F0 != 0 ? F : NULL, "F", damper, 0);
+}
+
+int mm_vib_steady_check(mm_result *res, const mm_sdof *s, const mm_sdof_props *p, double G, double A,
+                        double phase, const char *x_ref, mm_error *err)
+{
+    if (!(4 * M_PI / s->omega * mm_sdof_fastest_rate(s, p) <= MM_SDOF_MAX_RADIANS))
+        return MM_OK;
+    double Xm, phm, Xe, phe, rnd = mm_ex_roundoff(4 * M_PI, 1);     /* two periods of round-off */
+    int rc = mm_ex_sdof_steady_measure(s, p, 2, phase, &Xm, &phm, &Xe, &phe, res, err);
+    if (rc != MM_OK)
+        return rc;
+    char name[160];
+    snprintf(name, sizeof name, "X: measured on the steady orbit vs %s, within 10 times DOP853's error estimated "
+             "at rtol/10", x_ref);
+    mm_res_check_abs(res, name, Xm, G * A, 10 * Xe + rnd * G * A);
+    mm_res_check_abs(res, "phase: measured on the steady orbit vs eq. (4), within 10 times DOP853's error "
+                          "estimated at rtol/10", phm, phase, 10 * phe + rnd);
+    return MM_OK;
+}
+
+int mm_vib_sdof_check(const mm_sdof *s, double t_end, int forced, const char *what, mm_error *err)
+{
+    mm_sdof_props p;
+    mm_sdof_props_get(s, &p);
+    if (p.resonant && forced)
+        return mm_error_set(err, MM_ERANGE, "omega", "omega = omega_n = %g rad/s with c = 0 has no steady state (the "
+                            "%s grows without bound); add damping or move omega (see vib-resonance)", p.omega_n, what);
+    return mm_ex_sdof_work_check(s, t_end, err);
+}
+
+int mm_vib_coulomb_animate(mm_result *res, const mm_coulomb *s, const double *te, const double *xe,
+                           const double *sge, int ne, double t_plot)
+{
+    double t_show;
+    int nf = mm_ex_anim_frames(t_plot, 2 * M_PI / s->w, 26, &t_show);
+    double *t = mm_res_alloc(res, 3 * (size_t)nf * sizeof *t), *x = t + nf, *F = x + nf;
+    if (!t)
+        return MM_ENOMEM;
+    for (int f = 0; f < nf; f++) {
+        double v;
+        t[f] = t_show * f / (nf - 1);
+        x[f] = mm_coulomb_x(s, te, xe, sge, ne, t[f], &v);
+        F[f] = v != 0 ? (v > 0 ? -1 : 1) * s->mu * s->m * s->g : s->k * x[f];
+    }
+    return mm_ex_animate_oscillator(res, nf, t, x, NULL, F, "friction", 0, 1);
+}
+
+/* ---- the finite-element exercises (5.12) ---------------------------------------- */
+
+const char *mm_vib_fem_method(mm_fem_method m)
+{
+    return m == MM_FEM_DENSE     ? "LAPACK dsygvd, dense: every mode of the mesh"
+           : m == MM_FEM_BANDED  ? "LAPACK dsbgvx, banded: only the modes shown"
+           : m == MM_FEM_LANCZOS ? "shift-invert Lanczos with K^-1 M, banded: only the modes shown"
+                                 : "subspace iteration with K^-1 M, banded: only the modes shown";
+}
+
+int mm_vib_member_mode(mm_result *res, const mm_fem_problem *p, const double *shape, double omega, int nf,
+                       double scale)
+{
+    size_t nd = mm_fem_ndof(p);
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    double *u = mm_res_alloc(res, (size_t)nf * nd * sizeof *u);
+    if (!a || !u)
+        return MM_ENOMEM;
+    mm_vib_mode_frames((int)nd, shape, 1, 0, omega, 1, nf, a->t, u);
+    return mm_vib_member_draw(res, p, nf, u, scale);
+}
+
+int mm_vib_member_snaps(mm_result *res, const mm_fem_problem *p, int nf, const long *snap, double h, const double *u,
+                        double frac)
+{
+    size_t nd = mm_fem_ndof(p), step = p->kind == MM_FEM_BEAM ? 2 : 1;
+    mm_anim *a = mm_res_animation(res, nf, "t", "s");
+    double big = 0;
+    if (!a)
+        return MM_ENOMEM;
+    for (int f = 0; f < nf; f++) {
+        a->t[f] = h * (double)snap[f];
+        for (size_t g = 0; g < nd; g += step)
+            big = fmax(big, fabs(u[(size_t)f * nd + g]));
+    }
+    return mm_vib_member_draw(res, p, nf, u, big > 0 ? frac * p->uniform.L / big : 1);
+}
+
+/* ---- the absorber (5.10.1): a steady motion of complex amplitudes ------------- */
+
+int mm_vib_masses_steady(mm_result *res, int n, const double *K, const _Complex double *X, double omega, int nf)
+{
+    mm_anim *an = mm_res_animation(res, nf, "t", omega > 0 ? "s" : "periods");
+    double *q = mm_res_alloc(res, (size_t)nf * n * sizeof *q), big = 0;
+    if (!an || !q)
+        return MM_ENOMEM;
+    for (int i = 0; i < n; i++)
+        big = fmax(big, cabs(X[i]));
+    double sc = isfinite(big) && big > 0 ? 0.25 / big : 0;
+    for (int fr = 0; fr < nf; fr++) {
+        double ph = 2 * M_PI * fr / (nf - 1);
+        an->t[fr] = omega > 0 ? ph / omega : ph / (2 * M_PI);
+        for (int i = 0; i < n; i++)
+            q[(size_t)fr * n + i] = sc * creal(X[i] * cexp(mm_cmplx(0, ph)));
+    }
+    return mm_vib_masses_draw(res, n, K, nf, q, 1.0);
 }

@@ -3,6 +3,9 @@
 #include "mm_coulomb.h"
 
 #include <math.h>
+#include <stdlib.h>
+
+#include "mm_ode.h"
 
 mm_coulomb mm_coulomb_make(double m, double k, double mu, double g, double x0, double v0)
 {
@@ -101,3 +104,113 @@ double mm_coulomb_x(const mm_coulomb *s, const double *t, const double *x, const
     return xs;                                     /* at rest for good */
 }
 
+
+/* ==== the same motion integrated (chapter 5, vib-coulomb) ===================== */
+
+/* Eq. (2) on one arc, friction direction frozen: y = (x, v); sg is the
+ * direction of the motion, f = sg mu g the friction acceleration. */
+typedef struct arc_ctx {
+    double w2, f, sg;
+} arc_ctx;
+
+static int arc_rhs(double t, const double *y, double *dy, void *ctx)
+{
+    (void)t;
+    dy[0] = y[1];
+    dy[1] = -((const arc_ctx *)ctx)->w2 * y[0] - ((const arc_ctx *)ctx)->f;
+    return 0;
+}
+
+static int arc_event(double t, const double *y, double *g, void *ctx)   /* sg v falls through 0: at rest */
+{
+    (void)t;
+    *g = ((const arc_ctx *)ctx)->sg * y[1];
+    return 0;
+}
+
+double mm_coulomb_arc_energy(const mm_coulomb *s, double xs, double vs, double xe)
+{
+    return 0.5 * s->k * (xs * xs - xe * xe) + 0.5 * s->m * vs * vs - s->mu * s->m * s->g * fabs(xe - xs);
+}
+
+int mm_coulomb_integrate(const mm_coulomb *s, double rtol, int cap, int np, const double *tg, mm_coulomb_run *o,
+                         mm_error *err)
+{
+    double *yg = malloc(2 * (size_t)np * sizeof *yg);
+    mm_ode_work *w = yg ? mm_ode_work_alloc(2) : NULL;
+    if (!w) {
+        free(yg);
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    }
+    double t = 0, y[2] = {s->x0, s->v0};
+    double sg = s->v0 != 0 ? (s->v0 > 0 ? 1 : -1) : (s->x0 > 0 ? -1 : 1);
+    int g = 0, rc = MM_OK, moving = s->v0 != 0 || !mm_coulomb_sticks(s, s->x0);   /* eq. (6) */
+    o->n = 0;
+    o->steps = o->evals = o->event_evals = 0;
+    o->sum_dt = o->sum_dx = o->sum_de = 0;
+    while (moving && rc == MM_OK && o->n <= cap) {
+        arc_ctx arc = {.w2 = s->w * s->w, .f = sg * s->mu * s->g, .sg = sg};
+        double R = hypot(fabs(y[0]) + s->d, y[1] / s->w);            /* the arc's size */
+        mm_ode_problem prob = {.n = 2, .f = arc_rhs, .params = &arc, .t0 = t,
+                               .t_end = t + 1.25 * M_PI / s->w, .y0 = y, .event = arc_event,
+                               .event_dir = -1};
+        mm_ode_options opt;
+        mm_ode_options_init(&opt);
+        opt.method = MM_ODE_DOP853;
+        opt.rtol = rtol;
+        opt.atol = rtol * R;
+        int gn = g;
+        while (gn < np && tg[gn] <= prob.t_end)
+            gn++;
+        double yend[2];
+        mm_ode_result r = {.t_out = tg + g, .nout = (size_t)(gn - g), .y_out = yg + 2 * g, .y_end = yend};
+        rc = mm_ode_solve(&prob, &opt, w, &r, err);
+        o->steps += r.n_accepted;
+        o->evals += r.n_eval;
+        o->event_evals += r.n_event_evals;
+        if (rc == MM_OK && !r.event)
+            rc = mm_error_set(err, MM_EINTERNAL, "", "no velocity zero within 1.25 half periods of a swing");
+        if (rc == MM_OK && o->rtol_ref > 0) {                        /* the same arc, finer */
+            double yref[2];
+            mm_ode_result rr = {.y_end = yref};
+            opt.rtol = o->rtol_ref;
+            opt.atol = o->rtol_ref * R;
+            rc = mm_ode_solve(&prob, &opt, w, &rr, err);
+            if (rc == MM_OK && !rr.event)
+                rc = mm_error_set(err, MM_EINTERNAL, "", "no velocity zero within 1.25 half periods of a swing");
+            if (rc == MM_OK) {
+                o->sum_dt += fabs(r.t_event - rr.t_event);
+                o->sum_dx += fabs(yend[0] - yref[0]);
+                o->sum_de += fabs(mm_coulomb_arc_energy(s, y[0], y[1], yend[0]) -
+                                  mm_coulomb_arc_energy(s, y[0], y[1], yref[0]));
+            }
+        }
+        if (rc != MM_OK)
+            break;
+        g += (int)r.nout_done;
+        t = r.t_event;
+        y[0] = yend[0];
+        y[1] = 0;                                                    /* the event: at rest */
+        o->t[o->n] = t, o->x[o->n++] = y[0];
+        moving = !mm_coulomb_sticks(s, y[0]);                        /* eq. (6): stick, or turn back */
+        sg = y[0] > 0 ? -1 : 1;
+    }
+    mm_ode_work_free(w);
+    if (rc == MM_OK && moving)
+        rc = mm_error_set(err, MM_EINTERNAL, "", "more sliding arcs than the work bound allows");
+    for (int i = 0; i < np; i++)
+        o->xg[i] = i < g ? yg[2 * i] : y[0];                         /* at rest for good */
+    free(yg);
+    return rc;
+}
+
+double mm_coulomb_energy_residual(const mm_coulomb *s, int n, const double *x)
+{
+    double path = 0, prev = s->x0, xf = n ? x[n - 1] : s->x0;
+    for (int j = 0; j < n; j++) {
+        path += fabs(x[j] - prev);
+        prev = x[j];
+    }
+    double E0 = 0.5 * s->k * s->x0 * s->x0 + 0.5 * s->m * s->v0 * s->v0, Ef = 0.5 * s->k * xf * xf;
+    return E0 - Ef - s->mu * s->m * s->g * path;
+}

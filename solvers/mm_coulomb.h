@@ -10,6 +10,8 @@
 #ifndef MM_COULOMB_H
 #define MM_COULOMB_H
 
+#include "mm_status.h"
+
 /* A rest with |k x| within this relative margin of mu m g counts as a stop
  * (eq. 6 with the knife edge given to sticking), in the closed form and in
  * a numerical solution alike: their positions differ by ~1e-10. */
@@ -37,5 +39,38 @@ int mm_coulomb_arcs(const mm_coulomb *s, double *t, double *x, double *sg, int c
 /* x(tt) and *v = x'(tt) from the arcs. */
 double mm_coulomb_x(const mm_coulomb *s, const double *t, const double *x, const double *sg, int n, double tt,
                     double *v);
+
+/* ---- the same motion integrated (chapter 5, vib-coulomb) ---- */
+
+/* A numerical run of eq. (1), arc by arc. */
+typedef struct mm_coulomb_run {
+    int n;              /* out: rests found (events) */
+    double *t, *x;      /* in: room for cap + 1 values each; out: the rests' times and places */
+    double *xg;         /* in: room for np values; out: x on the plot grid */
+    long steps, evals, event_evals;    /* out: the integrator's counters, all arcs */
+    /* in: > 0 to integrate each arc again from the same start at this
+     * tolerance; out: the sums over the arcs of what that moves its end
+     * time, end place and energy balance (7) — the error made on each arc,
+     * estimated arc by arc (0 when rtol_ref = 0) */
+    double rtol_ref, sum_dt, sum_dx, sum_de;
+} mm_coulomb_run;
+
+/* Eq. (1) from (x0, v0) arc by arc: DOP853 at rtol (atol rtol times the
+ * arc's size) with friction frozen until the event sg v = 0 (mm_ode event
+ * location), the stick test (6), the next arc, at most cap arcs.  The np
+ * plot times tg (ascending from 0) receive the dense output of the arc
+ * they fall on, and the place of the last rest after it.  Returns MM_OK,
+ * or MM_EINTERNAL (no rest within 1.25 half periods of a swing, more than
+ * cap arcs), MM_ENOMEM or mm_ode's error, with err filled. */
+int mm_coulomb_integrate(const mm_coulomb *s, double rtol, int cap, int np, const double *tg, mm_coulomb_run *o,
+                         mm_error *err);
+
+/* Eq. (7) over one arc from (xs, vs) to the rest xe: E lost less mu m g
+ * times the path, 0 for the exact arc. */
+double mm_coulomb_arc_energy(const mm_coulomb *s, double xs, double vs, double xe);
+
+/* E(0) - E(stop) - mu m g (path slid) over the n rests x of a run (eq. 7):
+ * 0 for the exact motion. */
+double mm_coulomb_energy_residual(const mm_coulomb *s, int n, const double *x);
 
 #endif

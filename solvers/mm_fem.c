@@ -11,6 +11,7 @@
 
 #include "mm_linalg.h"
 #include "mm_mdof.h"
+#include "mm_newmark.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -1570,5 +1571,126 @@ out:
     free(Mb);
     free(Kb);
     free(map);
+    return rc;
+}
+
+/* ==== convergence studies and the bar's closed form (chapter 5) =============== */
+
+int mm_fem_omega1_errors(const mm_fem_problem *p, int nc, const int *mesh, double exact, double *h, double *e,
+                         mm_error *err)
+{
+    for (int i = 0; i < nc; i++) {
+        mm_fem_problem pc = *p;
+        pc.n_el = (size_t)mesh[i];
+        double w1;
+        mm_fem_modes r = {&w1, NULL, 0, 0, 0, MM_FEM_AUTO};
+        int rc = mm_fem_modes_solve(&pc, 1, NULL, &r, err);
+        if (rc)
+            return rc;
+        h[i] = p->uniform.L / mesh[i];
+        e[i] = fabs(w1 / exact - 1);
+    }
+    return MM_OK;
+}
+
+double mm_fem_bar_omega(const mm_fem_problem *p, int j)
+{
+    double n = (double)p->n_el, h = p->uniform.L / n, c = sqrt(p->uniform.E / p->uniform.rho);
+    double th = p->bc == MM_FEM_FIXED_FREE ? (2 * j - 1) * M_PI / (2 * n) : j * M_PI / n, s = sin(th / 2);
+    return 2 * c / h * s * (p->mass == MM_FEM_CONSISTENT ? sqrt(3 / (3 - 2 * s * s)) : 1);
+}
+
+/* ==== modal references of a transient run (chapter 5) ========================= */
+
+static int modal_newmark(const mm_fem_problem *p, const mm_fem_modes *md, const mm_fem_damping *d,
+                         const mm_fem_load *ld, double h, long steps, long stride, size_t dof, double *out,
+                         double *scale, double *f, double *y, double *A, double *B, double *pk, mm_error *err)
+{
+    size_t nd = mm_fem_ndof(p), nm = md->n_modes;
+    mm_newmark_options o;
+    mm_newmark_options_init(&o);
+    o.h = h;
+    for (size_t j = 0; j < nm; j++) {
+        double one = 1, k2 = md->omega[j] * md->omega[j], c = d->a + d->b * k2;
+        int rc = mm_newmark_amplification(1, &one, &c, &k2, &o, A + 9 * j, B + 6 * j, B + 6 * j + 3, err);
+        if (rc)
+            return rc;
+    }
+    mm_fem_load_vector(p, ld, 0, f);
+    for (size_t j = 0; j < nm; j++) {           /* from rest: a_0 = p_0 */
+        pk[j] = 0;
+        for (size_t g = 0; g < nd; g++)
+            pk[j] += md->shape[j * nd + g] * f[g];
+        y[3 * j] = y[3 * j + 1] = 0, y[3 * j + 2] = pk[j];
+    }
+    int row = 0;
+    *scale = 0;
+    for (long k = 0;; k++) {
+        if (k % stride == 0) {
+            double s = 0, sa = 0;         /* the sum, and the size of its terms: q + h v + h^2 a */
+            for (size_t j = 0; j < nm; j++) {
+                s += md->shape[j * nd + dof] * y[3 * j];
+                sa += fabs(md->shape[j * nd + dof]) *
+                      (fabs(y[3 * j]) + h * fabs(y[3 * j + 1]) + h * h * fabs(y[3 * j + 2]));
+            }
+            out[row++] = s;
+            *scale = fmax(*scale, sa);
+        }
+        if (k == steps)
+            break;
+        mm_fem_load_vector(p, ld, h * (double)(k + 1), f);
+        for (size_t j = 0; j < nm; j++) {
+            const double *a = A + 9 * j, *b0 = B + 6 * j, *b1 = b0 + 3, *phi = md->shape + j * nd;
+            double p1 = 0, z[3];
+            for (size_t g = 0; g < nd; g++)
+                p1 += phi[g] * f[g];
+            for (int i = 0; i < 3; i++)
+                z[i] = a[3 * i] * y[3 * j] + a[3 * i + 1] * y[3 * j + 1] + a[3 * i + 2] * y[3 * j + 2] + b0[i] * pk[j] +
+                       b1[i] * p1;
+            memcpy(y + 3 * j, z, sizeof z);
+            pk[j] = p1;
+        }
+    }
+    return MM_OK;
+}
+
+int mm_fem_modal_newmark(const mm_fem_problem *p, const mm_fem_modes *md, const mm_fem_damping *d,
+                         const mm_fem_load *ld, double h, long steps, long stride, size_t dof, double *out,
+                         double *scale, mm_error *err)
+{
+    size_t nd = mm_fem_ndof(p), nm = md->n_modes;
+    double *f = calloc(nd + 19 * nm, sizeof *f);     /* f, then y 3 nm, A 9 nm, B 6 nm, pk nm */
+    if (!f)
+        return mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+    double *y = f + nd, *A = y + 3 * nm, *B = A + 9 * nm, *pk = B + 6 * nm;
+    int rc = modal_newmark(p, md, d, ld, h, steps, stride, dof, out, scale, f, y, A, B, pk, err);
+    free(f);
+    return rc;
+}
+
+int mm_fem_static_residual(const mm_fem_problem *p, const mm_fem_modes *md, size_t m, const mm_fem_load *ld,
+                           int nt, const double *t, size_t dof, double *r, double *umax, mm_error *err)
+{
+    size_t nd = mm_fem_ndof(p), step = p->kind == MM_FEM_BEAM ? 2 : 1;
+    double *f = calloc(2 * nd, sizeof *f), *u = f ? f + nd : NULL;
+    if (!f)
+        return mm_error_set(err, MM_ENOMEM, NULL, "out of memory");
+    int rc = MM_OK;
+    *umax = 0;
+    for (int i = 0; i < nt && !rc; i++) {
+        mm_fem_load_vector(p, ld, t[i], f);
+        if ((rc = mm_fem_static_solve(p, f, u, err)))
+            break;
+        r[i] = u[dof];
+        for (size_t j = 0; j < m; j++) {
+            double pj = 0;
+            for (size_t g = 0; g < nd; g++)
+                pj += md->shape[j * nd + g] * f[g];
+            r[i] -= md->shape[j * nd + dof] * pj / (md->omega[j] * md->omega[j]);
+        }
+        for (size_t g = 0; g < nd; g += step)
+            *umax = fmax(*umax, fabs(u[g]));
+    }
+    free(f);
     return rc;
 }

@@ -365,4 +365,52 @@ typedef struct mm_fem_transient {
 int mm_fem_transient_solve(const mm_fem_problem *p, const mm_fem_load *ld, mm_fem_transient *tr,
                            mm_error *err);
 
+/* ---- convergence studies and the bar's closed form (chapter 5, vib-bar-modes, vib-beam-modes) ---- */
+
+/* The relative error of the lowest elastic frequency on nc meshes of the
+ * same member: for each i, p with mesh[i] elements solved for one mode
+ * (mm_fem_modes_solve, MM_FEM_AUTO), h[i] = L / mesh[i] and e[i] =
+ * |omega1 / exact - 1|.  Returns MM_OK or the solver's error with err
+ * filled. */
+int mm_fem_omega1_errors(const mm_fem_problem *p, int nc, const int *mesh, double exact, double *h, double *e,
+                         mm_error *err);
+
+/* The natural frequency of mode j (1-based, elastic) of a uniform bar's
+ * mesh in closed form, its dispersion relation: the modes are sampled
+ * sines, theta = j pi / n (fixed-fixed, free-free) or (2j - 1) pi / (2n)
+ * (fixed-free), s = sin(theta / 2), h = L / n, c = sqrt(E / rho):
+ *   omega = (2c/h) s sqrt(3 / (3 - 2 s^2))  consistent mass,
+ *   omega = (2c/h) s                         lumped mass
+ * (T. J. R. Hughes, The Finite Element Method, sec. 9.2).  p: a bar
+ * (MM_FEM_BAR), uniform.  Cannot fail. */
+double mm_fem_bar_omega(const mm_fem_problem *p, int j);
+
+/* ---- modal references of a transient run (chapter 5, vib-beam-transient) ---- */
+
+/* Every mode's Newmark recursion (average acceleration at step h,
+ * mm_newmark_amplification on the 1-DOF modal equation eta'' + (a + b
+ * omega_j^2) eta' + omega_j^2 eta = phi_j^T f(t), from rest) under the
+ * load ld, superposed at the global DOF dof at every stride-th of the
+ * steps (and step 0): out[steps / stride + 1].  What mm_fem_transient_solve
+ * must give at that DOF, to rounding, when md holds every mode (the scheme
+ * commutes with the modal decomposition).  *scale receives the largest
+ * size of the terms summed, sum |phi_j(dof)| (|eta| + h |eta'| + h^2
+ * |eta''|): what that rounding is relative to.  md from mm_fem_modes_solve
+ * with shapes.  Returns MM_OK, or MM_ENOMEM or mm_newmark's error with err
+ * filled. */
+int mm_fem_modal_newmark(const mm_fem_problem *p, const mm_fem_modes *md, const mm_fem_damping *d,
+                         const mm_fem_load *ld, double h, long steps, long stride, size_t dof, double *out,
+                         double *scale, mm_error *err);
+
+/* The static deflection the first m modes of md miss at the global DOF dof
+ * under the load ld at each of the nt times t (modal truncation):
+ *   r(t) = (K^-1 f(t))_dof - sum_{j < m} phi_j(dof) phi_j^T f(t) / omega_j^2,
+ * into r[nt]; *umax receives the largest |K^-1 f| over those times and the
+ * deflection DOFs (every DOF of a bar, every other of a beam).  md from
+ * mm_fem_modes_solve with shapes; p must have supports (K regular).
+ * Returns MM_OK, or MM_ENOMEM or mm_fem_static_solve's error with err
+ * filled. */
+int mm_fem_static_residual(const mm_fem_problem *p, const mm_fem_modes *md, size_t m, const mm_fem_load *ld,
+                           int nt, const double *t, size_t dof, double *r, double *umax, mm_error *err);
+
 #endif

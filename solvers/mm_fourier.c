@@ -483,3 +483,130 @@ int mm_fourier_pulse_transform(const double *x, size_t n, double dt,
     fftw_free(X);
     return MM_OK;
 }
+
+/* ==== a spectrum's peaks, leakage and bins by the defining sum (chapter 5) ==== */
+
+void mm_fourier_twiddles(size_t n, double *cs, double *sn)
+{
+    for (size_t m = 0; m < n; m++) {
+        cs[m] = cos(2 * M_PI * (double)m / (double)n);
+        sn[m] = sin(2 * M_PI * (double)m / (double)n);
+    }
+}
+
+double mm_fourier_direct_amp(const double *wx, size_t n, size_t k, const double *cs, const double *sn, double gain)
+{
+    double re = 0, im = 0;
+    for (size_t j = 0, m = 0; j < n; j++, m = (m + k) % n) {
+        re += wx[j] * cs[m];
+        im -= wx[j] * sn[m];
+    }
+    double single = (k == 0 || 2 * k == n) ? 1 : 2;
+    return single * hypot(re, im) / ((double)n * gain);
+}
+
+/* A local maximum at bin k higher than floor. */
+static int is_peak(const double *amp, size_t nb, size_t k, double floor)
+{
+    double left = k > 0 ? amp[k - 1] : -1, right = k + 1 < nb ? amp[k + 1] : -1;
+    return amp[k] > left && amp[k] >= right && amp[k] > floor;
+}
+
+int mm_fourier_peaks(const double *amp, size_t nb, double floor, int max, size_t *pk)
+{
+    int np = 0;
+    for (size_t k = 0; k < nb; k++) {
+        if (!is_peak(amp, nb, k, floor))
+            continue;
+        int pos = np < max ? np : max;                /* insertion into the sorted short list */
+        while (pos > 0 && amp[pk[pos - 1]] < amp[k])
+            pos--;
+        if (pos >= max)
+            continue;
+        int last = np < max ? np : max - 1;
+        for (int i = last; i > pos; i--)
+            pk[i] = pk[i - 1];
+        pk[pos] = k;
+        if (np < max)
+            np++;
+    }
+    return np;
+}
+
+double mm_fourier_leakage(const double *amp, size_t nb, size_t n, double top, double level, size_t lobe,
+                          unsigned char *mark)
+{
+    for (size_t k = 0; k < nb; k++)
+        if (is_peak(amp, nb, k, level * top))
+            for (size_t i = k > lobe ? k - lobe : 0; i <= k + lobe && i < nb; i++)
+                mark[i] = 1;
+    double total = 0, near = 0;
+    for (size_t k = 0; k < nb; k++) {
+        double a = amp[k] / top, p = (k == 0 || 2 * k == n) ? a * a : 0.5 * a * a;
+        total += p;
+        if (mark[k])
+            near += p;
+    }
+    return total > 0 ? fmax(0, 1 - near / total) : 0;
+}
+
+double mm_fourier_power_above(const double *amp, size_t nb, size_t n, double top, size_t k0, size_t *kmax)
+{
+    double hi = 0, p_all = 0, p_above = 0;
+    *kmax = 0;
+    for (size_t k = 0; k < nb && top > 0; k++) {
+        double a = amp[k] / top, p = (k == 0 || 2 * k == n) ? a * a : 0.5 * a * a;
+        p_all += p;
+        if (k > k0) {
+            p_above += p;
+            if (amp[k] > hi)
+                hi = amp[k], *kmax = k;
+        }
+    }
+    return p_all > 0 ? p_above / p_all : 0;
+}
+
+/* ==== the transform of an even pulse's samples, summed directly (chapter 5) ==== */
+
+int mm_fourier_even_transform(double f, double *out, void *ctx)
+{
+    const mm_fourier_even *d = ctx;
+    double th = 2 * M_PI * f * d->dt, c1 = cos(th), s1 = sin(th), c = 1, s = 0, sum = 0;
+    for (long i = 1; i <= d->half; i++) {
+        if (i % 64 == 0) {
+            c = cos((double)i * th);
+            s = sin((double)i * th);
+        } else {
+            double cn = c * c1 - s * s1;
+            s = s * c1 + c * s1;
+            c = cn;
+        }
+        sum += d->deriv ? -d->x[d->m + i] * (double)i * s : d->x[d->m + i] * c;
+    }
+    if (d->deriv)
+        *out = 2 * d->dt * 2 * M_PI * d->dt * sum;
+    else
+        *out = d->dt * (d->x[d->m] + 2 * sum) - d->level;
+    return 0;
+}
+
+/* ==== a complex Fourier series at any points (chapter 5) ====================== */
+
+#include <complex.h>   /* here, after fftw3.h: its fftw_complex stays double[2] */
+
+void mm_fourier_mode_sum(const _Complex double *C, int jlo, int jhi, double dk, _Complex double c0, const double *x,
+                         int n, double xl, int restart, _Complex double *psi)
+{
+    for (int i = 0; i < n; i++) {
+        double X = x[i] - xl;
+        double complex step = cexp(I * fmod(dk * X, 2 * M_PI)), e = 0, sum = 0;
+        for (int j = jlo; j <= jhi; j++) {
+            if ((j - jlo) % restart == 0)
+                e = cexp(I * fmod((double)j * dk * X, 2 * M_PI));
+            else
+                e *= step;
+            sum += C[j - jlo] * e;
+        }
+        psi[i] = c0 + 2 * sum;
+    }
+}

@@ -204,4 +204,69 @@ int mm_fourier_pulse_transform(const double *x, size_t n, double dt,
  * module works again afterwards (plans are remade on demand). */
 void mm_fourier_cleanup(void);
 
+/* ---- a spectrum's peaks, leakage and bins by the defining sum (chapter 5, vib-dft) ---- */
+
+/* The twiddle tables cs[m] = cos(2 pi m / n), sn[m] = sin(2 pi m / n),
+ * m < n.  Cannot fail. */
+void mm_fourier_twiddles(size_t n, double *cs, double *sn);
+
+/* The single-sided amplitude of bin k of the n (windowed) samples wx by
+ * the defining sum, without FFTW: O(n) per bin, each term's angle reduced
+ * exactly, (j k mod n), before it is looked up in the twiddle tables;
+ * divided by n gain (the window's coherent gain), doubled but at k = 0 and
+ * n/2: what mm_fourier_spectrum gives, by another route.  Cannot fail. */
+double mm_fourier_direct_amp(const double *wx, size_t n, size_t k, const double *cs, const double *sn, double gain);
+
+/* The largest peaks of the nb amplitudes amp: local maxima (strictly above
+ * the left neighbour, at least the right one, so that a flat top counts
+ * once) above floor, largest first, at most max of them into pk.  Returns
+ * how many. */
+int mm_fourier_peaks(const double *amp, size_t nb, double floor, int max, size_t *pk);
+
+/* The leakage of a spectrum of n samples (nb = mm_fourier_bins(n)
+ * amplitudes, the largest top > 0): the share of power farther than lobe
+ * bins from every peak above level top (mm_fourier_peaks' sense of a peak),
+ * powers relative to top so that nothing overflows.  mark: nb bytes of
+ * scratch, zero on entry.  Cannot fail. */
+double mm_fourier_leakage(const double *amp, size_t nb, size_t n, double top, double level, size_t lobe,
+                          unsigned char *mark);
+
+/* The share of a spectrum's power (n samples, nb = mm_fourier_bins(n)
+ * amplitudes, the largest top) in the bins k > k0 (the mean and Nyquist
+ * bins counted whole, the others half, powers relative to top), and the
+ * bin of the largest nonzero amplitude among them into *kmax (0 when all
+ * are 0; top 0: share 0 and *kmax 0).  Cannot fail. */
+double mm_fourier_power_above(const double *amp, size_t nb, size_t n, double top, size_t k0, size_t *kmax);
+
+/* ---- the transform of an even pulse's samples, summed directly (chapter 5, vib-fourier-transform) ---- */
+
+/* Samples symmetric about x[m] (x[m - i] = x[m + i]), the ones from m -
+ * half to m + half used, step dt [s]; level is subtracted from the
+ * transform (0, or a height to find where it is crossed); deriv = 1 asks
+ * for the derivative in f instead. */
+typedef struct mm_fourier_even {
+    const double *x;
+    long m, half;
+    double dt, level;
+    int deriv;
+} mm_fourier_even;
+
+/* X_c(f) = dt (x_m + 2 sum_{i=1}^{half} x_{m+i} cos(2 pi f i dt)) - level,
+ * the transform of the samples with the centre's phase taken out (real for
+ * an even pulse), or its derivative in f, without an FFT: at any f, so
+ * that a root finder can place a zero between the bins.  cos and sin of
+ * i th by rotation, restarted exactly every 64 terms.  An mm_roots_fn:
+ * ctx is an mm_fourier_even; writes *out, returns 0. */
+int mm_fourier_even_transform(double f, double *out, void *ctx);
+
+/* ---- a complex Fourier series at any points (chapter 5, vib-dispersion) ---- */
+
+/* psi(x_i) = c0 + 2 sum_{j = jlo}^{jhi} C[j - jlo] exp(i j dk (x_i - xl)),
+ * i < n: the modes' sum at any points (not only the FFT's grid).  exp(i j
+ * dk X) by rotation in j, restarted exactly every `restart` modes; the
+ * angles reduced mod 2 pi.  C and psi are C99 _Complex double arrays (this
+ * header leaves complex.h out).  Cannot fail. */
+void mm_fourier_mode_sum(const _Complex double *C, int jlo, int jhi, double dk, _Complex double c0, const double *x,
+                         int n, double xl, int restart, _Complex double *psi);
+
 #endif

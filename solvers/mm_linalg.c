@@ -830,3 +830,29 @@ int mm_linalg_geev(int n, const double *A, double *wr, double *wi, double *VR,
     free(a);
     return rc;
 }
+
+/* ==== a complex linear system (chapter 5, vibrations) ========================= */
+
+int mm_linalg_solve_complex(int n, const double *Are, const double *Aim, const double *bre, const double *bim,
+                            double *xre, double *xim, mm_linalg_solve_info *info, mm_error *err)
+{
+    size_t N = 2 * (size_t)n;
+    double *Z = malloc((N * N + 2 * N) * sizeof *Z), *b = Z ? Z + N * N : NULL, *x = b ? b + N : NULL;
+    if (!Z)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory solving a complex system");
+    for (size_t r = 0; r < (size_t)n; r++) {
+        for (size_t k = 0; k < (size_t)n; k++) {
+            Z[N * r + k] = Z[N * (r + n) + k + n] = Are[n * r + k];
+            Z[N * r + k + n] = -Aim[n * r + k];
+            Z[N * (r + n) + k] = Aim[n * r + k];
+        }
+        b[r] = bre[r], b[r + n] = bim[r];
+    }
+    mm_linalg_solve_info own;
+    int rc = mm_linalg_solve((int)N, 1, Z, b, x, info ? info : &own, err);
+    if (rc == MM_OK)
+        for (size_t r = 0; r < (size_t)n; r++)
+            xre[r] = x[r], xim[r] = x[r + n];
+    free(Z);
+    return rc;
+}

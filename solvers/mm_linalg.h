@@ -297,4 +297,15 @@ double mm_linalg_norm2(int n, const double *v);
 void mm_linalg_sygv_rounding(int n, const double *K, const double *M, const double *lambda,
                              const double *lambda_err, const double *V, double *res, double *orth);
 
+/* ---- a complex linear system (chapter 5, vibrations: steady amplitudes) ---- */
+
+/* Solve the complex n x n system (Are + i Aim) x = bre + i bim as the real
+ * 2n x 2n system [Are -Aim; Aim Are] [xre; xim] = [bre; bim] by
+ * mm_linalg_solve (2n <= MM_LINALG_MAX_N).  Are, Aim row-major n x n; bre,
+ * bim, xre, xim n values; info (may be NULL) receives the real system's
+ * (its rcond bounds the complex one's condition).  Errors those of
+ * mm_linalg_solve, MM_ENOMEM. */
+int mm_linalg_solve_complex(int n, const double *Are, const double *Aim, const double *bre, const double *bim,
+                            double *xre, double *xim, mm_linalg_solve_info *info, mm_error *err);
+
 #endif

@@ -855,3 +855,70 @@ int mm_mdof_modal_response(int n, int m, const double *omega, const double *c,
     free(e);
     return MM_OK;
 }
+
+/* ==== a chain of n equal masses (chapter 5, vibrations) ======================= */
+
+double mm_mdof_chain_theta(int n, int j, int free_end)
+{
+    return free_end ? (2 * j + 1) * M_PI / (2 * (2 * n + 1.0)) : (j + 1) * M_PI / (2 * (n + 1.0));
+}
+
+void mm_mdof_chain_matrices(int n, double m, double k, int free_end, double *M, double *K)
+{
+    memset(M, 0, (size_t)n * n * sizeof *M);
+    memset(K, 0, (size_t)n * n * sizeof *K);
+    for (int i = 0; i < n; i++) {
+        M[(size_t)i * n + i] = m;
+        K[(size_t)i * n + i] = i == n - 1 && free_end ? k : 2 * k;
+        if (i + 1 < n)
+            K[(size_t)i * n + i + 1] = K[(size_t)(i + 1) * n + i] = -k;
+    }
+}
+
+void mm_mdof_chain_band(int n, double m, double k, int free_end, double *Mb, double *Kb)
+{
+    for (int i = 0; i < n; i++) {
+        Kb[2 * i] = i == n - 1 && free_end ? k : 2 * k;
+        Kb[2 * i + 1] = i < n - 1 ? -k : 0;
+        Mb[2 * i] = m;
+        Mb[2 * i + 1] = 0;
+    }
+}
+
+int mm_mdof_static_residual(int n, int m, const double *K, const double *omega, const double *Phi, int p,
+                            double Fp, double *r, mm_error *err)
+{
+    double *F = calloc((size_t)n, sizeof *F);
+    if (!F)
+        return mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    F[p] = Fp;
+    mm_linalg_solve_info info;
+    int rc = mm_linalg_solve(n, 1, K, F, r, &info, err);
+    free(F);
+    if (rc)
+        return rc;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < m; j++)
+            r[i] -= Phi[(size_t)i * n + j] * Phi[(size_t)p * n + j] * Fp / (omega[j] * omega[j]);
+    return MM_OK;
+}
+
+int mm_mdof_chain_modes(int n, double m, double k, int free_end, int nev, double *lambda, double *V,
+                        mm_error *err)
+{
+    int dense = nev == 0, rc;
+    size_t size = dense ? (size_t)n * n : 2 * (size_t)n;
+    double *Mx = malloc(size * sizeof *Mx), *Kx = malloc(size * sizeof *Kx);
+    if (!Mx || !Kx) {
+        rc = mm_error_set(err, MM_ENOMEM, "", "out of memory");
+    } else if (dense) {
+        mm_mdof_chain_matrices(n, m, k, free_end, Mx, Kx);
+        rc = mm_linalg_sygv(n, Kx, Mx, lambda, V, err);
+    } else {
+        mm_mdof_chain_band(n, m, k, free_end, Mx, Kx);
+        rc = mm_linalg_sbgv_first(n, 1, nev, Kx, Mx, lambda, V, err);
+    }
+    free(Mx);
+    free(Kx);
+    return rc;
+}

@@ -190,4 +190,45 @@ int mm_mdof_modal_response(int n, int m, const double *omega, const double *c,
                            const double *v0, const double *F, const mm_mdof_pulse *g,
                            int nt, const double *t, double *q, mm_error *err);
 
+/* ---- a chain of n equal masses m joined by equal springs k (chapter 5, vibrations) ----
+ * wall-k-m-k-m-...-m-k-wall (fixed-fixed), or without the last spring
+ * (fixed-free: the last mass free). */
+
+/* The angle theta_j of mode j (0-based) of the chain:
+ *   fixed-fixed: theta_j = (j + 1) pi / (2 (n + 1)),
+ *   fixed-free:  theta_j = (2 j + 1) pi / (2 (2 n + 1)),
+ * so that omega_j = 2 sqrt(k/m) sin(theta_j) and the mode is the sampled
+ * sine phi_i = sin(2 (i + 1) theta_j), i = 0 .. n-1 (L. Brillouin, Wave
+ * Propagation in Periodic Structures, 1946, ch. 1).  Cannot fail. */
+double mm_mdof_chain_theta(int n, int j, int free_end);
+
+/* The chain's mass and stiffness matrices, dense (n x n, row-major, every
+ * entry written): M = m I, K tridiagonal with 2k on the diagonal (k in the
+ * last place when free_end), -k beside it.  Cannot fail. */
+void mm_mdof_chain_matrices(int n, double m, double k, int free_end, double *M, double *K);
+
+/* The same in band storage with one off-diagonal (kd = 1,
+ * MM_LINALG_BAND_INDEX of mm_linalg.h, as mm_linalg_sbgv_first takes it):
+ * Kb[2 i] the diagonal entry of row i, Kb[2 i + 1] the one to its right
+ * (0 in the last row).  Cannot fail. */
+void mm_mdof_chain_band(int n, double m, double k, int free_end, double *Mb, double *Kb);
+
+/* The static deflection that the first m modes miss under a point load Fp
+ * on coordinate p (modal truncation, chapter 5):
+ *   r = K^-1 F - sum_{j < m} phi_j phi_j^T F / omega_j^2,   F = Fp e_p,
+ * with Phi (n x n, row-major, column j mode j) mass-normalised and omega
+ * its frequencies (all > 0: K regular).  r has n values.  Returns MM_OK or
+ * mm_linalg_solve's error with err filled. */
+int mm_mdof_static_residual(int n, int m, const double *K, const double *omega, const double *Phi, int p,
+                            double Fp, double *r, mm_error *err);
+
+/* The chain's modes: every one (nev = 0) by LAPACK's dsygvd on the dense
+ * matrices, lambda n values and V n x n; the lowest nev (1 <= nev <= n,
+ * n >= 2) by mm_linalg_sbgv_first on the band storage (dsbgvx and inverse
+ * iteration, no n x n matrix), lambda nev values and V n x nev.  lambda =
+ * omega^2 ascending, V row-major with the mass-normalised mode j in column
+ * j.  Returns MM_OK or the linalg error (MM_ENOMEM) with err filled. */
+int mm_mdof_chain_modes(int n, double m, double k, int free_end, int nev, double *lambda, double *V,
+                        mm_error *err);
+
 #endif

@@ -89,3 +89,18 @@ void mm_opt_refine_extreme(mm_opt_fn_err f, void *params, double s, double x0, d
     out->x_err = fmax(r.bracket, fmin(band, hi - lo)) + 2 * DBL_EPSILON * fabs(r.x);
     out->fx_err = ef + 0.5 * f2 * out->x_err * out->x_err;
 }
+
+/* ==== a scan, then golden sections (chapter 5, vib-absorber) ================== */
+
+int mm_opt_scan_golden_max(mm_opt_fn f, void *params, double step, int n, double tol, int max_evals,
+                           mm_opt_result *res, mm_error *err)
+{
+    double best = -INFINITY, fx;
+    int ib = 0;
+    for (int i = 0; i <= n; i++) {
+        f(i * step, &fx, params);
+        if (fx > best)
+            best = fx, ib = i;
+    }
+    return mm_opt_golden_max(f, params, fmax(ib - 1, 0) * step, (ib + 1) * step, tol, max_evals, res, err);
+}

@@ -64,4 +64,15 @@ typedef struct mm_opt_extreme {
 void mm_opt_refine_extreme(mm_opt_fn_err f, void *params, double s, double x0, double h, double a, double b,
                            mm_opt_extreme *out);
 
+/* ---- a scan, then golden sections (chapter 5, vib-absorber) ---- */
+
+/* The largest value of f over the grid x_i = i step, i = 0 .. n (step >
+ * 0), the first largest one at x_ib, refined by mm_opt_golden_max on
+ * [x_{max(ib-1, 0)}, x_{ib+1}] to tol within max_evals evaluations: the
+ * global maximum of a function whose peaks are wider than 2 step.  res as
+ * mm_opt_golden_max's (its evals those of the golden sections alone).
+ * Returns what mm_opt_golden_max returns. */
+int mm_opt_scan_golden_max(mm_opt_fn f, void *params, double step, int n, double tol, int max_evals,
+                           mm_opt_result *res, mm_error *err);
+
 #endif

@@ -314,3 +314,20 @@ void mm_quad_gl5_nodes(double a, double b, int m, double *x, double *w)
         }
     }
 }
+
+/* ==== the moments of a sampled density (chapter 5, vib-dispersion) ============ */
+
+void mm_quad_moments(const double *x, const double *p, int n, double *centre, double *width)
+{
+    double s0 = 0, s1 = 0, s2 = 0;
+    for (int i = 0; i < n; i++) {
+        s0 += p[i];
+        s1 += p[i] * x[i];
+    }
+    *centre = s1 / s0;
+    for (int i = 0; i < n; i++) {
+        double d = x[i] - *centre;
+        s2 += p[i] * d * d;
+    }
+    *width = sqrt(s2 / s0);
+}

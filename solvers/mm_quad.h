@@ -110,4 +110,13 @@ extern const double mm_quad_gl5_node[5], mm_quad_gl5_weight[5];
  * correctly rounded values, 2e-16 relative: far below any use here). */
 void mm_quad_gl5_nodes(double a, double b, int m, double *x, double *w);
 
+/* ---- the moments of a sampled density (chapter 5, vib-dispersion) ---- */
+
+/* The centroid sum p x / sum p and the r.m.s. width sqrt(sum p (x - c)^2 /
+ * sum p) of the n samples p >= 0 (not all 0) at the equally spaced x: the
+ * trapezoidal rule's moments of a density whose ends are negligible (the
+ * end weights of 1/2 left out, and the spacing, which cancels).  Cannot
+ * fail. */
+void mm_quad_moments(const double *x, const double *p, int n, double *centre, double *width);
+
 #endif

@@ -309,3 +309,36 @@ int mm_roots_scan(mm_roots_fn f, void *params, double a, double b, int n, double
     mm_roots_problem pb = {.f = f, .params = params, .a = a, .b = b};
     return mm_roots_solve(&pb, &opt, res, err);
 }
+
+/* ==== the first root on a grid (chapter 5, vib-fourier-transform) ============= */
+
+int mm_roots_first(mm_roots_fn f, void *params, double step, int i0, int i1, double tol, int max_iter, double *x,
+                   int *iter, long *nevals, mm_error *err)
+{
+    double fa = i0 * step, ga, gb;
+    long evals = 1;
+    int iters = 0, rc = MM_OK;
+    *x = NAN;
+    f(fa, &ga, params);
+    for (int i = i0 + 1; i <= i1; i++) {
+        double fb = i * step;
+        f(fb, &gb, params);
+        evals++;
+        if (gb == 0) {
+            *x = fb;
+            break;
+        }
+        if ((ga > 0) != (gb > 0)) {
+            double fx, width;
+            rc = mm_roots_brent(f, params, fa, fb, ga, gb, tol, max_iter, x, &fx, &width, &iters, &evals, err);
+            break;
+        }
+        fa = fb;
+        ga = gb;
+    }
+    if (iter)
+        *iter = iters;
+    if (nevals)
+        *nevals += evals;
+    return rc;
+}

@@ -153,4 +153,16 @@ double mm_roots_band(mm_roots_fn_err f, void *params, double x, double w, double
 int mm_roots_scan(mm_roots_fn f, void *params, double a, double b, int n, double tol, int max_iter,
                   mm_roots_root *roots, mm_roots_result *res, mm_error *err);
 
+/* ---- the first root on a grid (chapter 5, vib-fourier-transform) ---- */
+
+/* The first root of f met on the grid x_i = i step (step > 0), i = i0 ..
+ * i1: f is evaluated at x_i in turn until it is 0 there (that x_i is the
+ * root) or its sign ((f > 0) or not) changes from x_{i-1} to x_i (i > i0),
+ * which bracket mm_roots_brent then closes to tol in at most max_iter
+ * iterations.  *x receives the root, NAN when none is met; *iter (may be
+ * NULL) Brent's iterations (0 without); *nevals (may be NULL) is
+ * incremented by every evaluation.  Returns MM_OK or Brent's error. */
+int mm_roots_first(mm_roots_fn f, void *params, double step, int i0, int i1, double tol, int max_iter, double *x,
+                   int *iter, long *nevals, mm_error *err);
+
 #endif

@@ -278,3 +278,31 @@ double mm_sdof_verlet_gain(double wh, double zeta)
         gain = fmax(gain, cabs((T + sgn * csqrt(T * T - 4 * D)) / 2));
     return gain;
 }
+
+/* ==== the damper's work (chapter 5, vib-sdof-free) ============================ */
+
+#include "mm_ode.h"   /* here, with the block it serves: the rest of the file needs no integrator */
+
+/* y = (x, v, D): D' = c v^2 is the work the damper has taken. */
+static int rhs_energy(double t, const double *y, double *dy, void *ctx)
+{
+    const mm_sdof *s = ctx;
+    mm_sdof_rhs(t, y, dy, ctx);
+    dy[2] = s->c * y[1] * y[1];
+    return 0;
+}
+
+int mm_sdof_damper_work(const mm_sdof *s, const mm_sdof_props *p, double t_end, double rtol, double *D,
+                        mm_error *err)
+{
+    double E0 = mm_sdof_energy(s, s->x0, s->v0), size = sqrt(2 * E0 / s->k);
+    double y0[3] = {s->x0, s->v0, 0}, y[3];
+    mm_ode_problem prob = {.n = 3, .f = rhs_energy, .params = (void *)s, .t_end = t_end, .y0 = y0};
+    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol * fmin(fmin(size, size * p->omega_n), E0),
+                                                 1000000);
+    opt.h_max = 1 / mm_sdof_fastest_rate(s, p);
+    mm_ode_result r = {.y_end = y};
+    int rc = mm_ode_run(&prob, &opt, &r, err);
+    *D = y[2];
+    return rc;
+}

@@ -110,4 +110,16 @@ double mm_sdof_fastest_rate(const mm_sdof *s, const mm_sdof_props *p);
 double mm_sdof_rk4_gain(double wh, double zeta);
 double mm_sdof_verlet_gain(double wh, double zeta);
 
+/* ---- the damper's work (chapter 5, vib-sdof-free) ---- */
+
+/* The work the damper takes over [0, t_end], D = integral of c v^2 dt (the
+ * energy lost, E(0) - E(t_end), for a free motion), integrated with the
+ * motion as a third equation D' = c v^2 by DOP853 at rtol, the absolute
+ * tolerance rtol times the smallest scale of x, v and D (the amplitude
+ * sqrt(2 E0 / k), omega_n times it, and E0 = E(0)), steps at most one
+ * radian of the fastest motion (mm_sdof_fastest_rate).  Needs E0 > 0.
+ * Returns MM_OK or mm_ode_run's error with err filled; *D is written. */
+int mm_sdof_damper_work(const mm_sdof *s, const mm_sdof_props *p, double t_end, double rtol, double *D,
+                        mm_error *err);
+
 #endif

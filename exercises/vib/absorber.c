@@ -139,7 +139,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_linspace(0, wend, n, s1->x);
     double worst = 0, poles = 0;
     for (int i = 0; i < n; i++) {
-        double wi = s1->x[i], w2 = wi * wi, c = wi * a.c2, Z[16], b[4] = {a.F0, 0, 0, 0}, X[4];
+        double wi = s1->x[i], w2 = wi * wi, c = wi * a.c2, b[4] = {a.F0, 0, 0, 0}, xr[2], xi[2];
         s2->x[i] = so->x[i] = wi;
         amplitudes(&a, wi, &X1, &X2);
         s1->y[i] = cabs(X1);
@@ -153,16 +153,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             continue;
         }
         double re[4] = {a.k1 + a.k2 - a.m1 * w2, -a.k2, -a.k2, a.k2 - a.m2 * w2}, im[4] = {c, -c, -c, c};
-        for (int r = 0; r < 2; r++)
-            for (int k = 0; k < 2; k++) {
-                Z[4 * r + k] = Z[4 * (r + 2) + k + 2] = re[2 * r + k];
-                Z[4 * r + k + 2] = -im[2 * r + k];
-                Z[4 * (r + 2) + k] = im[2 * r + k];
-            }
         mm_linalg_solve_info info;
-        if ((rc = mm_linalg_solve(4, 1, Z, b, X, &info, err)) != MM_OK)
+        if ((rc = mm_linalg_solve_complex(2, re, im, b, b + 2, xr, xi, &info, err)) != MM_OK)
             return rc;
-        double d = fmax(cabs(mm_cmplx(X[0], X[2]) - X1), cabs(mm_cmplx(X[1], X[3]) - X2));
+        double d = fmax(cabs(mm_cmplx(xr[0], xi[0]) - X1), cabs(mm_cmplx(xr[1], xi[1]) - X2));
         double big = fmax(s1->y[i], s2->y[i]) + Xst;
         worst = fmax(worst, d / (big * fmax(1 / fmax(info.rcond, 1e-300), 1)));
     }
@@ -208,35 +202,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * omega_n, refined by golden sections; it passes through the fixed
      * points, so it is at least Xfp; Den Hartog's damping puts it only a
      * little above them */
-    double best = -1, step = 3 * wn / 2000, fx;
-    int ib = 0;
-    for (int i = 0; i <= 2000; i++) {
-        x1_abs(i * step, &fx, &o);
-        if (fx > best)
-            best = fx, ib = i;
-    }
     mm_opt_result pk;
-    if ((rc = mm_opt_golden_max(x1_abs, &o, fmax(ib - 1, 0) * step, (ib + 1) * step, 1e-12 * wn, 200, &pk, err)))
+    if ((rc = mm_opt_scan_golden_max(x1_abs, &o, 3 * wn / 2000, 2000, 1e-12 * wn, 200, &pk, err)))
         return rc;
     mm_res_scalar_err(res, O_XPEAK, pk.fx, 1e-12 * pk.fx, MM_ERR_ESTIMATE);
     mm_res_check_abs(res, "optimum curve's peak >= the fixed points' height it passes through [m]",
                      fmin(pk.fx - Xfp, 0), 0, 1e-12 * Xfp);
 
     /* the steady motion at omega, one period in 24 frames */
-    enum { NF = 24 };
     amplitudes(&a, w, &X1, &X2);
-    mm_anim *an = mm_res_animation(res, NF, "t", w > 0 ? "s" : "periods");
-    double q[2 * NF], K[4] = {a.k1 + a.k2, -a.k2, -a.k2, a.k2};
-    if (!an)
-        return MM_ENOMEM;
-    double big = fmax(cabs(X1), cabs(X2)), sc2 = isfinite(big) && big > 0 ? 0.25 / big : 0;
-    for (int fr = 0; fr < NF; fr++) {
-        double ph = 2 * M_PI * fr / (NF - 1);
-        an->t[fr] = w > 0 ? ph / w : ph / (2 * M_PI);
-        q[2 * fr] = sc2 * creal(X1 * cexp(mm_cmplx(0, ph)));
-        q[2 * fr + 1] = sc2 * creal(X2 * cexp(mm_cmplx(0, ph)));
-    }
-    return mm_vib_masses_draw(res, 2, K, NF, q, 1.0);
+    double K[4] = {a.k1 + a.k2, -a.k2, -a.k2, a.k2};
+    double complex X[2] = {X1, X2};
+    return mm_vib_masses_steady(res, 2, K, X, w, 24);
 }
 
 static const char *const references[] = {
@@ -246,17 +223,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_absorber = {
-    .id = "vib-absorber",
-    .chapter = 5,
-    .section = "5.10.1",
-    .title = "The dynamic vibration absorber",
+    .id = "vib-absorber", .chapter = 5, .section = "5.10.1", .title = "The dynamic vibration absorber",
     .summary = "A small tuned mass stops the machine it hangs on: anti-resonance, two new peaks, Den Hartog's optimum.",
     .tags = "vibration, 2 DOF, forced, absorber, tuned mass damper, anti-resonance, Den Hartog",
-    .theory = "exercises/vib/absorber.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .solve = solve,
+    .theory = "exercises/vib/absorber.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .solve = solve,
 };

@@ -55,8 +55,7 @@ static const mm_output outputs[] = {
     [O_SLOPE_C] = MM_SCALAR("slope_consistent", "fitted order of convergence, consistent mass (h^2)", ""),
     [O_SLOPE_L] = MM_SCALAR("slope_lumped", "fitted order of convergence, lumped mass (h^2)", ""),
     [O_MODES] = MM_TABLE("modes", "natural frequencies: finite elements and exact", mcols, munits),
-    [O_MASSES] = MM_TABLE("mass_models", "consistent against lumped mass, same mesh (up to 10 modes)", ccols,
-                          cunits),
+    [O_MASSES] = MM_TABLE("mass_models", "consistent against lumped mass, same mesh (up to 10 modes)", ccols, cunits),
     [O_CONV_C] = MM_SERIES("convergence_consistent", "|rel. error| of omega1, consistent mass", "", "elements", "",
                            .figure = "convergence", .mark = "dots", .x_scale = "log", .y_scale = "log"),
     [O_CONV_L] = MM_SERIES("convergence_lumped", "|rel. error| of omega1, lumped mass", "", "elements", "",
@@ -86,17 +85,6 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* Eq. (4): the FE frequency of mode j of a uniform mesh (its dispersion
- * relation): sampled sines, theta = j pi / n (fixed-fixed, free-free) or
- * (2j - 1) pi / (2n) (fixed-free), s = sin(theta / 2):
- * omega = (2c/h) s sqrt(3 / (3 - 2 s^2)) consistent, (2c/h) s lumped. */
-static double fe_closed(const mm_fem_problem *p, int j, double c)
-{
-    double n = (double)p->n_el, h = p->uniform.L / n;
-    double th = p->bc == MM_FEM_FIXED_FREE ? (2 * j - 1) * M_PI / (2 * n) : j * M_PI / n, s = sin(th / 2);
-    return 2 * c / h * s * (p->mass == MM_FEM_CONSISTENT ? sqrt(3 / (3 - 2 * s * s)) : 1);
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int nm = (int)in[P_MODES].x, mass = (int)in[P_MASS].x, no = nm < 10 ? nm : 10;
@@ -117,15 +105,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         (rc = mm_fem_modes_solve(&po, (size_t)no, NULL, &other, err)) ||
         (rc = mm_fem_exact_omegas(&p, (size_t)nm, ex, err)))
         return rc;
-    mm_res_method(res, md.method == MM_FEM_DENSE    ? "LAPACK dsygvd, dense: every mode of the mesh"
-                       : md.method == MM_FEM_BANDED ? "LAPACK dsbgvx, banded: only the modes shown"
-                       : md.method == MM_FEM_LANCZOS
-                           ? "shift-invert Lanczos with K^-1 M, banded: only the modes shown"
-                           : "subspace iteration with K^-1 M, banded: only the modes shown",
-                  0);
+    mm_res_method(res, mm_vib_fem_method(md.method), 0);
     mm_res_method_stat(res, "free_dofs", (double)md.n_free);
 
-    /* eq. (4) against the eigen solver: rounding, eps lambda_max / lambda_j */
+    /* eq. (4), the mesh's dispersion relation (mm_fem_bar_omega), against the
+     * eigen solver: rounding, eps lambda_max / lambda_j */
     mm_table *t = mm_res_table(res, O_MODES, nm), *tm = mm_res_table(res, O_MASSES, no);
     if (!t || !tm)
         return MM_ENOMEM;
@@ -140,7 +124,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             if (k != mass && j >= no)
                 continue;
             mm_fem_problem pk = problem(in, k ? MM_FEM_LUMPED : MM_FEM_CONSISTENT, n_el);
-            double f = fe_closed(&pk, j + 1, c);
+            double f = mm_fem_bar_omega(&pk, j + 1);
             /* each model's own omega_max: consistent mass sqrt(3) x lumped's; 64 eps
              * for dsygvd's rounding (measured to 1.5 x 16 eps over 200 draws) */
             mm_fem_method mk = (k == mass ? md : other).method;
@@ -168,17 +152,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     for (int k = 0; k < 2; k++) {
         double h[NC], e[NC];
-        for (int i = 0; i < NC; i++) {
-            mm_fem_problem pc = problem(in, k ? MM_FEM_LUMPED : MM_FEM_CONSISTENT, (size_t)mesh[i]);
-            double w1;
-            mm_fem_modes r = {&w1, NULL, 0, 0, 0, MM_FEM_AUTO};
-            if ((rc = mm_fem_modes_solve(&pc, 1, NULL, &r, err)))
-                return rc;
-            h[i] = p.uniform.L / mesh[i];
-            e[i] = fabs(w1 / ex[0] - 1);
-            sc[k]->x[i] = mesh[i];
-            sc[k]->y[i] = e[i];
-        }
+        mm_fem_problem pc = problem(in, k ? MM_FEM_LUMPED : MM_FEM_CONSISTENT, n_el);
+        if ((rc = mm_fem_omega1_errors(&pc, NC, mesh, ex[0], h, e, err)))
+            return rc;
+        for (int i = 0; i < NC; i++)
+            sc[k]->x[i] = mesh[i], sc[k]->y[i] = e[i];
         double sl = mm_check_order(res, k ? "lumped mass: fitted order of omega1's error vs 2 (h^2)"
                                           : "consistent mass: fitted order of omega1's error vs 2 (h^2)",
                                    NC, h, e, 2, 0.05);
@@ -189,18 +167,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* the chosen mode, one period in 16 frames; the largest axial
      * displacement drawn as a fifth of the length */
-    enum { NF = 16 };
     int j = (int)in[P_MODE].x - 1;
-    mm_anim *a = mm_res_animation(res, NF, "t", "s");
-    double *u = mm_res_alloc(res, NF * nd * sizeof *u);
-    if (!a || !u)
-        return MM_ENOMEM;
-    for (int f = 0; f < NF; f++) {
-        a->t[f] = 2 * M_PI / w[mass][j] * f / (NF - 1);
-        for (size_t g = 0; g < nd; g++)
-            u[f * nd + g] = shape[j * nd + g] * sin(2 * M_PI * f / (NF - 1));
-    }
-    return mm_vib_member_draw(res, &p, NF, u, 0.2 * p.uniform.L / mm_vib_big(shape + j * nd, nd));
+    double big = mm_vib_big(shape + j * nd, nd);
+    return mm_vib_member_mode(res, &p, shape + j * nd, w[mass][j], 16, 0.2 * p.uniform.L / big);
 }
 
 static const char *const references[] = {
@@ -211,18 +180,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_bar_modes = {
-    .id = "vib-bar-modes",
-    .chapter = 5,
-    .section = "5.12.1",
-    .title = "Axial vibration of a bar by finite elements",
+    .id = "vib-bar-modes", .chapter = 5, .section = "5.12.1", .title = "Axial vibration of a bar by finite elements",
     .summary = "Natural frequencies of a bar from linear elements, consistent and lumped mass, against n pi c / L.",
     .tags = "vibration, continuous systems, bar, finite elements, consistent mass, lumped mass, convergence",
-    .theory = "exercises/vib/bar_modes.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/bar_modes.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -21,7 +21,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
 #include "mm_exhelp.h"
 #include "mm_fem.h"
@@ -60,8 +59,7 @@ static const mm_output outputs[] = {
     [O_HSL] = MM_SCALAR("courant_limit_lumped", "largest stable Courant number of central difference, lumped "
                         "mass (2 / (omega_max h_e / c))", "", .flags = MM_EXACT),
     [O_HSC] = MM_SCALAR("courant_limit_consistent", "the same, consistent mass", "", .flags = MM_EXACT),
-    [O_UMAX] = MM_SCALAR("u_end_max", "largest free-end displacement at the stored steps, the model shown first",
-                         "m"),
+    [O_UMAX] = MM_SCALAR("u_end_max", "largest free-end displacement at the stored steps, the model shown first", "m"),
     [O_UMAXX] = MM_SCALAR("u_end_max_exact", "2 F L / (E A): twice the static stretch", "m", .flags = MM_ANSWER | MM_EXACT),
     [O_EBL] = MM_SCALAR("energy_identity_lumped", "the scheme's energy identity over the run, relative", ""),
     [O_EBC] = MM_SCALAR("energy_identity_consistent", "the same, consistent mass", ""),
@@ -221,18 +219,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_bar_wave = {
-    .id = "vib-bar-wave",
-    .chapter = 5,
-    .section = "5.12.1",
+    .id = "vib-bar-wave", .chapter = 5, .section = "5.12.1",
     .title = "A stress wave in a bar: mesh dispersion and the Courant number",
     .summary = "A sudden end load on a bar: the exact travelling front against finite elements, lumped and consistent.",
     .tags = "vibration, waves, bar, finite elements, central difference, Courant number, dispersion",
-    .theory = "exercises/vib/bar_wave.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/bar_wave.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

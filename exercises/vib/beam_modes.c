@@ -97,12 +97,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     int rc;
     if ((rc = mm_fem_modes_solve(&p, (size_t)nm, NULL, &md, err)) || (rc = mm_fem_exact_omegas(&p, (size_t)nm, ex, err)))
         return rc;
-    mm_res_method(res, md.method == MM_FEM_DENSE    ? "LAPACK dsygvd, dense: every mode of the mesh"
-                       : md.method == MM_FEM_BANDED ? "LAPACK dsbgvx, banded: only the modes shown"
-                       : md.method == MM_FEM_LANCZOS
-                           ? "shift-invert Lanczos with K^-1 M, banded: only the modes shown"
-                           : "subspace iteration with K^-1 M, banded: only the modes shown",
-                  0);
+    mm_res_method(res, mm_vib_fem_method(md.method), 0);
     mm_res_method_stat(res, "free_dofs", (double)md.n_free);
 
     /* the roots of eq. (2), Newton's method to rounding; each checked in
@@ -149,17 +144,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!sc)
         return MM_ENOMEM;
     double h[NC], e[NC];
-    for (int i = 0; i < NC; i++) {
-        mm_fem_problem pc = problem(in, (size_t)mesh[i]);
-        double w1;
-        mm_fem_modes r = {&w1, NULL, 0, 0, 0, MM_FEM_AUTO};
-        if ((rc = mm_fem_modes_solve(&pc, 1, NULL, &r, err)))
-            return rc;
-        h[i] = p.uniform.L / mesh[i];
-        e[i] = fabs(w1 / ex[0] - 1);
-        sc->x[i] = mesh[i];
-        sc->y[i] = e[i];
-    }
+    if ((rc = mm_fem_omega1_errors(&p, NC, mesh, ex[0], h, e, err)))
+        return rc;
+    for (int i = 0; i < NC; i++)
+        sc->x[i] = mesh[i], sc->y[i] = e[i];
     double sl = mm_check_order(res, "fitted order of omega1's error vs 4 (h^4)", NC, h, e, 4, 0.2);
     mm_res_scalar_err(res, O_SLOPE, sl, fabs(sl - log(e[NC - 2] / e[NC - 1]) / log(2)), MM_ERR_ESTIMATE);
     double disc = e[NC - 1] * pow(64.0 / n_el, 4);
@@ -170,20 +158,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* the chosen mode, one period in 16 frames; the largest deflection
      * drawn as a tenth of the span */
-    enum { NF = 16 };
     int j = (int)in[P_MODE].x - 1;
-    mm_anim *a = mm_res_animation(res, NF, "t", "s");
-    double *u = mm_res_alloc(res, NF * nd * sizeof *u), big = 0;
-    if (!a || !u)
-        return MM_ENOMEM;
+    double big = 0;
     for (size_t g = 0; g < nd; g += 2)
         big = fmax(big, fabs(shape[j * nd + g]));
-    for (int f = 0; f < NF; f++) {
-        a->t[f] = 2 * M_PI / w[j] * f / (NF - 1);
-        for (size_t g = 0; g < nd; g++)
-            u[f * nd + g] = shape[j * nd + g] * sin(2 * M_PI * f / (NF - 1));
-    }
-    return mm_vib_member_draw(res, &p, NF, u, 0.1 * p.uniform.L / big);
+    return mm_vib_member_mode(res, &p, shape + j * nd, w[j], 16, 0.1 * p.uniform.L / big);
 }
 
 static const char *const references[] = {
@@ -193,18 +172,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_beam_modes = {
-    .id = "vib-beam-modes",
-    .chapter = 5,
-    .section = "5.12.2",
+    .id = "vib-beam-modes", .chapter = 5, .section = "5.12.2",
     .title = "Bending vibration of a beam by finite elements",
     .summary = "Natural frequencies of a beam from Hermite elements against the roots beta L of its frequency equation.",
     .tags = "vibration, continuous systems, beam, finite elements, Euler-Bernoulli, convergence",
-    .theory = "exercises/vib/beam_modes.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/beam_modes.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -94,65 +94,6 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* Every mode's Newmark recursion (mm_newmark_amplification, 1 DOF) under
- * its modal load phi_j^T f(t_k), superposed at the probe DOF: what the
- * direct run must give, to rounding. */
-static int modal_newmark(const mm_fem_problem *p, const mm_fem_modes *md, const mm_fem_damping *d,
-                         const mm_fem_load *ld, double h, long steps, long stride, size_t dof, double *out,
-                         double *scale, mm_result *res, mm_error *err)
-{
-    size_t nd = mm_fem_ndof(p), nm = md->n_modes;
-    double *f = mm_res_alloc(res, nd * sizeof *f), *y = mm_res_alloc(res, 3 * nm * sizeof *y);
-    double *A = mm_res_alloc(res, 9 * nm * sizeof *A), *B = mm_res_alloc(res, 6 * nm * sizeof *B);
-    double *pk = mm_res_alloc(res, nm * sizeof *pk), *pk1 = mm_res_alloc(res, nm * sizeof *pk1);
-    if (!f || !y || !A || !B || !pk || !pk1)
-        return MM_ENOMEM;
-    mm_newmark_options o;
-    mm_newmark_options_init(&o);
-    o.h = h;
-    for (size_t j = 0; j < nm; j++) {
-        double one = 1, k2 = md->omega[j] * md->omega[j], c = d->a + d->b * k2;
-        int rc = mm_newmark_amplification(1, &one, &c, &k2, &o, A + 9 * j, B + 6 * j, B + 6 * j + 3, err);
-        if (rc)
-            return rc;
-    }
-    mm_fem_load_vector(p, ld, 0, f);
-    for (size_t j = 0; j < nm; j++) {           /* from rest: a_0 = p_0 */
-        pk[j] = 0;
-        for (size_t g = 0; g < nd; g++)
-            pk[j] += md->shape[j * nd + g] * f[g];
-        y[3 * j] = y[3 * j + 1] = 0, y[3 * j + 2] = pk[j];
-    }
-    int row = 0;
-    *scale = 0;
-    for (long k = 0;; k++) {
-        if (k % stride == 0) {
-            double s = 0, sa = 0;         /* the sum, and the size of its terms: q + h v + h^2 a */
-            for (size_t j = 0; j < nm; j++) {
-                s += md->shape[j * nd + dof] * y[3 * j];
-                sa += fabs(md->shape[j * nd + dof]) * (fabs(y[3 * j]) + h * fabs(y[3 * j + 1]) + h * h * fabs(y[3 * j + 2]));
-            }
-            out[row++] = s;
-            *scale = fmax(*scale, sa);
-        }
-        if (k == steps)
-            break;
-        mm_fem_load_vector(p, ld, h * (double)(k + 1), f);
-        for (size_t j = 0; j < nm; j++) {
-            const double *a = A + 9 * j, *b0 = B + 6 * j, *b1 = b0 + 3, *phi = md->shape + j * nd;
-            double p1 = 0, z[3];
-            for (size_t g = 0; g < nd; g++)
-                p1 += phi[g] * f[g];
-            for (int i = 0; i < 3; i++)
-                z[i] = a[3 * i] * y[3 * j] + a[3 * i + 1] * y[3 * j + 1] + a[3 * i + 2] * y[3 * j + 2] + b0[i] * pk[j] +
-                       b1[i] * p1;
-            memcpy(y + 3 * j, z, sizeof z);
-            pk[j] = p1;
-        }
-    }
-    return MM_OK;
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int nel = (int)in[P_EL].x, m = (int)in[P_MODES].x, kind = (int)in[P_LOAD].x, np = (int)in[P_POINTS].x;
@@ -237,7 +178,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         double tmax = 0, emax = 0, dd = 0, sc, *wn = mm_res_alloc(res, (size_t)rows * sizeof *wn);
         if (!wn)
             return MM_ENOMEM;
-        if ((rc = modal_newmark(&p, &md, &dmp, &ld, h, steps, stride, dof, wn, &sc, res, err)))
+        if ((rc = mm_fem_modal_newmark(&p, &md, &dmp, &ld, h, steps, stride, dof, wn, &sc, err)))
             return rc;
         for (int i = 0; i < rows; i++) {
             tmax = fmax(tmax, fabs(wm[i] - wa[i]));
@@ -270,33 +211,17 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
 
     /* eq. (3) at the probe, at the sampled times; the static deflection */
-    double *f = mm_res_alloc(res, nd * sizeof *f), *u = mm_res_alloc(res, nd * sizeof *u), rmax = 0, umax = 0, wst;
+    double *f = mm_res_alloc(res, nd * sizeof *f), *u = mm_res_alloc(res, nd * sizeof *u), umax, wst;
     mm_series *sr = mm_res_series(res, O_SR, rows);
     if (!f || !u || !sr)
         return MM_ENOMEM;
-    mm_fem_load still = ld;
-    still.t_off = INFINITY;
-    for (int i = 0; i < rows; i++) {
-        mm_fem_load_vector(&p, &still, kind ? 0 : t[i], f);
-        if (kind && (ld.t_off <= t[i]))
-            memset(f, 0, nd * sizeof *f);
-        if ((rc = mm_fem_static_solve(&p, f, u, err)))
-            return rc;
-        double r = u[dof];
-        for (int j = 0; j < m; j++) {
-            double pj = 0;
-            for (size_t g = 0; g < nd; g++)
-                pj += sh[j * nd + g] * f[g];
-            r -= sh[j * nd + dof] * pj / (w[j] * w[j]);
-        }
-        sr->x[i] = t[i], sr->y[i] = r;
-        rmax = fmax(rmax, fabs(r));
-        for (size_t g = 0; g < nd; g += 2)
-            umax = fmax(umax, fabs(u[g]));
-    }
+    if ((rc = mm_fem_static_residual(&p, &md, (size_t)m, &ld, rows, t, dof, sr->y, &umax, err)))
+        return rc;
+    memcpy(sr->x, t, (size_t)rows * sizeof *t);
+    double rmax = mm_maxabs(sr->y, rows);
     /* rounding: the static solve leaves up to about eps cond(K) ~ eps kappa of u */
     mm_res_scalar_err(res, O_TEST, rmax, 64 * eps * big + 2 * eps * kappa * umax, MM_ERR_ESTIMATE);
-    mm_fem_load_vector(&p, &still, kind ? 0 : 0.5 * L / ld.v, f);     /* moving: the load at midspan */
+    mm_fem_load_vector(&p, &ld, kind ? 0 : 0.5 * L / ld.v, f);     /* moving: the load at midspan */
     if ((rc = mm_fem_static_solve(&p, f, u, err)))
         return rc;
     wst = u[dof];
@@ -327,17 +252,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         mm_res_warn(res, "the highest modes have omega h up to %.3g: average acceleration keeps them bounded but "
                          "at the wrong frequency", w[md.n_modes - 1] * h);
 
-    /* the animation: the direct run's snapshots */
-    mm_anim *a = mm_res_animation(res, nf_anim, "t", "s");
-    double sbig = 0;
-    if (!a)
-        return MM_ENOMEM;
-    for (int f2 = 0; f2 < nf_anim; f2++) {
-        a->t[f2] = h * (double)snap[f2];
-        for (size_t g = 0; g < nd; g += 2)
-            sbig = fmax(sbig, fabs(snaps[(size_t)f2 * nd + g]));
-    }
-    return mm_vib_member_draw(res, &p, nf_anim, snaps, sbig > 0 ? 0.1 * L / sbig : 1);
+    /* the animation: the direct run's snapshots, the largest deflection a tenth of the span */
+    return mm_vib_member_snaps(res, &p, nf_anim, snap, h, snaps, 0.1);
 }
 
 static const char *const references[] = {
@@ -347,18 +263,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_beam_transient = {
-    .id = "vib-beam-transient",
-    .chapter = 5,
-    .section = "5.12.2",
+    .id = "vib-beam-transient", .chapter = 5, .section = "5.12.2",
     .title = "A beam under a moving or sudden load: modes kept against direct integration",
     .summary = "A force crossing a beam, or applied suddenly: modal superposition and Newmark on the FE model.",
     .tags = "vibration, beam, finite elements, moving load, impact, modal superposition, truncation, Newmark",
-    .theory = "exercises/vib/beam_transient.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/beam_transient.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

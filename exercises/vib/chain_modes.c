@@ -17,11 +17,10 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "mm_exhelp.h"
-#include "mm_linalg.h"
+#include "mm_mdof.h"
 #include "mm_vib.h"
 
 #define MAXN 1000
@@ -75,32 +74,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int n = (int)in[P_N].x, nm = (int)in[P_MODES].x, free_end = (int)in[P_ENDS].x, dense = n <= 40;
     const double m = in[P_M].x, k = in[P_K].x, eps = DBL_EPSILON, w0 = 2 * sqrt(k / m);
-    /* K and M in band storage (kd = 1): the last diagonal is k, not 2k, at a free end */
-    double *Kb = mm_res_alloc(res, 2 * (size_t)n * sizeof *Kb), *Mb = mm_res_alloc(res, 2 * (size_t)n * sizeof *Mb);
     int ld = dense ? n : nm;
     double *lam = mm_res_alloc(res, (size_t)n * sizeof *lam), *V = mm_res_alloc(res, (size_t)n * ld * sizeof *V);
     double *ex = mm_res_alloc(res, (size_t)nm * sizeof *ex);
-    if (!Kb || !Mb || !lam || !V || !ex)
+    if (!lam || !V || !ex)
         return MM_ENOMEM;
-    for (int i = 0; i < n; i++) {
-        Kb[2 * i] = i == n - 1 && free_end ? k : 2 * k;
-        Kb[2 * i + 1] = i < n - 1 ? -k : 0;
-        Mb[2 * i] = m;
-    }
-    int rc;
-    if (dense) {
-        double *K = mm_res_alloc(res, (size_t)n * n * sizeof *K), *M = mm_res_alloc(res, (size_t)n * n * sizeof *M);
-        if (!K || !M)
-            return MM_ENOMEM;
-        for (int i = 0; i < n; i++) {
-            K[i * n + i] = Kb[2 * i], M[i * n + i] = m;
-            if (i < n - 1)
-                K[i * n + i + 1] = K[(i + 1) * n + i] = -k;
-        }
-        rc = mm_linalg_sygv(n, K, M, lam, V, err);
-    } else {
-        rc = n == 1 ? mm_linalg_sygv(1, Kb, Mb, lam, V, err) : mm_linalg_sbgv_first(n, 1, nm, Kb, Mb, lam, V, err);
-    }
+    int rc = mm_mdof_chain_modes(n, m, k, free_end, dense ? 0 : nm, lam, V, err);   /* dense: all n modes */
     if (rc != MM_OK)
         return rc;
     mm_res_method(res, dense ? "LAPACK dsygvd, dense: all n modes" : "LAPACK dsbgvx, banded: only the modes shown",
@@ -115,7 +94,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!t || !se || !sb)
         return MM_ENOMEM;
     for (int j = 0; j < nm; j++) {
-        double th = free_end ? (2 * j + 1) * M_PI / (2 * (2 * n + 1.0)) : (j + 1) * M_PI / (2 * (n + 1.0));
+        double th = mm_mdof_chain_theta(n, j, free_end);
         ex[j] = w0 * sin(th);
         double w = sqrt(fmax(lam[j], 0)), e = fabs(w / ex[j] - 1), b = 8 * eps * lmax / (ex[j] * ex[j]);
         double row[4] = {j + 1, w, ex[j], e};
@@ -135,7 +114,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             int jj = j + d;
             if (jj < 0 || jj >= n)
                 continue;
-            double tj = free_end ? (2 * jj + 1) * M_PI / (2 * (2 * n + 1.0)) : (jj + 1) * M_PI / (2 * (n + 1.0));
+            double tj = mm_mdof_chain_theta(n, jj, free_end);
             gap = fmin(gap, fabs(lmax * sin(tj) * sin(tj) - ex[j] * ex[j]));
         }
         double dmax = 0;
@@ -165,9 +144,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!a || !q)
         return MM_ENOMEM;
     mm_vib_mode_frames(n, V, ld, j, sqrt(lam[j]), 1, NF, a->t, q);
-    double big = mm_vib_big(q, (size_t)NF * n);
-    for (int i = 0; i < NF * n; i++)
-        q[i] *= 0.3 / big;                            /* the largest moves 0.3 of a gap */
+    mm_vib_scale(q, (size_t)NF * n, 0.3);             /* the largest moves 0.3 of a gap */
     return mm_vib_chain_draw(res, n, !free_end, NF, q, 1.0);
 }
 
@@ -179,18 +156,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_chain_modes = {
-    .id = "vib-chain-modes",
-    .chapter = 5,
-    .section = "5.11.1",
+    .id = "vib-chain-modes", .chapter = 5, .section = "5.11.1",
     .title = "A chain of n masses: natural frequencies and modes",
     .summary = "n equal masses on equal springs: frequencies and sampled-sine modes against their closed form.",
     .tags = "vibration, n DOF, chain, natural frequencies, mode shapes, eigenvalues, rounding",
-    .theory = "exercises/vib/chain_modes.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/chain_modes.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

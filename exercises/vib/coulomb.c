@@ -9,8 +9,8 @@
  * to integrate a discontinuous right-hand side honestly: integrate each
  * smooth piece (friction sign frozen), stop at the velocity zero as an
  * event (mm_ode's event location), decide there whether the mass sticks or
- * turns, and restart.  No step ever straddles the switch, so nothing
- * chatters.  The answers (stop time, final place, the rests, the plotted
+ * turns, and restart (mm_coulomb_integrate).  No step ever straddles the
+ * switch, so nothing chatters.  The answers (stop time, final place, the rests, the plotted
  * motion) come from the exact piecewise solution, eqs. (3)-(6); the
  * event-driven integration is shown beside them with its error.
  * Reference: S. S. Rao, Mechanical Vibrations, 6th ed., section 2.9
@@ -22,7 +22,7 @@
 
 #include "mm_coulomb.h"
 #include "mm_exhelp.h"
-#include "mm_ode.h"
+#include "mm_vib.h"
 
 enum { P_M, P_K, P_MU, P_G, P_X0, P_V0, P_POINTS };
 
@@ -55,16 +55,14 @@ static const mm_output outputs[] = {
     [O_BAND] = MM_SCALAR("friction_band", "friction band mu m g / k", "m", .flags = MM_EXACT),
     [O_DECAY] = MM_SCALAR("decay_per_cycle", "amplitude lost per cycle 4 mu m g / k", "m",
                           .flags = MM_ANSWER | MM_EXACT),
-    [O_STOP] = MM_SCALAR("stop_time", "time the mass stops for good, eqs. (3)-(6)", "s",
-                         .flags = MM_ANSWER | MM_EXACT),
+    [O_STOP] = MM_SCALAR("stop_time", "time the mass stops for good, eqs. (3)-(6)", "s", .flags = MM_ANSWER | MM_EXACT),
     [O_XF] = MM_SCALAR("x_final", "final position, eqs. (4)-(6)", "m", .flags = MM_ANSWER | MM_EXACT),
     [O_HALF] = MM_SCALAR("half_cycles", "sliding arcs (half cycles) before the stop", "", .flags = MM_EXACT),
     [O_SPRING_F] = MM_SCALAR("spring_force_final", "spring force at the stop, |k x_final|", "N", .flags = MM_EXACT),
     [O_FRIC] = MM_SCALAR("friction_limit", "largest friction force mu m g", "N", .flags = MM_EXACT),
     [O_XT] = MM_SERIES("x", "displacement (exact)", "m", "t", "s", .figure = "response"),
     [O_VT] = MM_SERIES("v", "velocity (exact)", "m/s", "t", "s", .figure = "velocity"),
-    [O_ERR] = MM_SERIES("error_events", "x integrated with events minus the exact x", "m", "t", "s",
-                        .figure = "error"),
+    [O_ERR] = MM_SERIES("error_events", "x integrated with events minus the exact x", "m", "t", "s", .figure = "error"),
     [O_AMP] = MM_SERIES("amplitude", "distance from x = 0 at each rest", "m", "t", "s", .figure = "response",
                         .mark = "dots", .role = "reference"),
     [O_RESTS] = MM_TABLE("rests", "the rests: time, place, spring force over the friction limit", rest_cols,
@@ -94,126 +92,6 @@ static int check(const mm_value *in, mm_error *err)
     return MM_OK;
 }
 
-/* Eq. (2) on one arc, friction direction frozen: y = (x, v); sg is the
- * direction of the motion, f = sg mu g the friction acceleration. */
-typedef struct arc_ctx {
-    double w2, f, sg;
-} arc_ctx;
-
-static int arc_rhs(double t, const double *y, double *dy, void *ctx)
-{
-    (void)t;
-    dy[0] = y[1];
-    dy[1] = -((const arc_ctx *)ctx)->w2 * y[0] - ((const arc_ctx *)ctx)->f;
-    return 0;
-}
-
-static int arc_event(double t, const double *y, double *g, void *ctx)   /* sg v falls through 0: at rest */
-{
-    (void)t;
-    *g = ((const arc_ctx *)ctx)->sg * y[1];
-    return 0;
-}
-
-typedef struct sim {
-    int n;              /* rests (events) */
-    double *t, *x;      /* their times and places, MAX_ARCS + 1 each */
-    double *xg;         /* x on the plot grid */
-    long steps, evals, event_evals;
-    /* With a reference tolerance: each arc integrated again from the same
-     * start at rtol_ref, and the sums over the arcs of what that moves its
-     * end time, end place and energy balance (7): the error made on each
-     * arc, estimated arc by arc. */
-    double rtol_ref, sum_dt, sum_dx, sum_de;
-} sim;
-
-/* Eq. (7) over one arc from (xs, vs) to the rest xe: 0 for the exact arc. */
-static double arc_energy(const model *s, double xs, double vs, double xe)
-{
-    return 0.5 * s->k * (xs * xs - xe * xe) + 0.5 * s->m * vs * vs - s->mu * s->m * s->g * fabs(xe - xs);
-}
-
-/* Eq. (1) from (x0, v0) arc by arc: DOP853 at rtol until the event, the
- * stick test (6), the next arc.  The plot samples of an arc are the dense
- * output up to its event; after the last one the mass stays. */
-static int simulate(const model *s, double rtol, int np, const double *tg, sim *o, mm_result *res,
-                    mm_error *err)
-{
-    double *yg = mm_res_alloc(res, 2 * (size_t)np * sizeof *yg);
-    mm_ode_work *w = yg ? mm_ode_work_alloc(2) : NULL;
-    if (!w)
-        return MM_ENOMEM;
-    double t = 0, y[2] = {s->x0, s->v0};
-    double sg = s->v0 != 0 ? (s->v0 > 0 ? 1 : -1) : (s->x0 > 0 ? -1 : 1);
-    int g = 0, rc = MM_OK, moving = s->v0 != 0 || !mm_coulomb_sticks(s, s->x0);   /* eq. (6) */
-    o->n = 0;
-    while (moving && rc == MM_OK && o->n <= MAX_ARCS) {
-        arc_ctx arc = {.w2 = s->w * s->w, .f = sg * s->mu * s->g, .sg = sg};
-        double R = hypot(fabs(y[0]) + s->d, y[1] / s->w);            /* the arc's size */
-        mm_ode_problem prob = {.n = 2, .f = arc_rhs, .params = &arc, .t0 = t,
-                               .t_end = t + 1.25 * M_PI / s->w, .y0 = y, .event = arc_event,
-                               .event_dir = -1};
-        mm_ode_options opt;
-        mm_ode_options_init(&opt);
-        opt.method = MM_ODE_DOP853;
-        opt.rtol = rtol;
-        opt.atol = rtol * R;
-        int gn = g;
-        while (gn < np && tg[gn] <= prob.t_end)
-            gn++;
-        double yend[2];
-        mm_ode_result r = {.t_out = tg + g, .nout = (size_t)(gn - g), .y_out = yg + 2 * g, .y_end = yend};
-        rc = mm_ode_solve(&prob, &opt, w, &r, err);
-        o->steps += r.n_accepted;
-        o->evals += r.n_eval;
-        o->event_evals += r.n_event_evals;
-        if (rc == MM_OK && !r.event)
-            rc = mm_error_set(err, MM_EINTERNAL, "", "no velocity zero within 1.25 half periods of a swing");
-        if (rc == MM_OK && o->rtol_ref > 0) {                        /* the same arc, finer */
-            double yref[2];
-            mm_ode_result rr = {.y_end = yref};
-            opt.rtol = o->rtol_ref;
-            opt.atol = o->rtol_ref * R;
-            rc = mm_ode_solve(&prob, &opt, w, &rr, err);
-            if (rc == MM_OK && !rr.event)
-                rc = mm_error_set(err, MM_EINTERNAL, "", "no velocity zero within 1.25 half periods of a swing");
-            if (rc == MM_OK) {
-                o->sum_dt += fabs(r.t_event - rr.t_event);
-                o->sum_dx += fabs(yend[0] - yref[0]);
-                o->sum_de += fabs(arc_energy(s, y[0], y[1], yend[0]) - arc_energy(s, y[0], y[1], yref[0]));
-            }
-        }
-        if (rc != MM_OK)
-            break;
-        g += (int)r.nout_done;
-        t = r.t_event;
-        y[0] = yend[0];
-        y[1] = 0;                                                    /* the event: at rest */
-        o->t[o->n] = t, o->x[o->n++] = y[0];
-        moving = !mm_coulomb_sticks(s, y[0]);                                   /* eq. (6): stick, or turn back */
-        sg = y[0] > 0 ? -1 : 1;
-    }
-    mm_ode_work_free(w);
-    if (rc == MM_OK && moving)
-        rc = mm_error_set(err, MM_EINTERNAL, "", "more sliding arcs than the work bound allows");
-    for (int i = 0; i < np; i++)
-        o->xg[i] = i < g ? yg[2 * i] : y[0];                         /* at rest for good */
-    return rc;
-}
-
-/* E(0) - E(stop) - mu m g (path slid) of the rests of a run: 0 for the
- * exact motion, eq. (7). */
-static double energy_residual(const model *s, const sim *a)
-{
-    double path = 0, prev = s->x0, xf = a->n ? a->x[a->n - 1] : s->x0;
-    for (int j = 0; j < a->n; j++) {
-        path += fabs(a->x[j] - prev);
-        prev = a->x[j];
-    }
-    double E0 = 0.5 * s->k * s->x0 * s->x0 + 0.5 * s->m * s->v0 * s->v0, Ef = 0.5 * s->k * xf * xf;
-    return E0 - Ef - s->mu * s->m * s->g * path;
-}
-
 /* The numerical rests against the exact ones and against the energy
  * balance (7).  Each arc maps its start from rest x_s to its end 2 c - x_s
  * (eq. 4), an affine map of slope -1: the error of the n-th rest is the
@@ -226,7 +104,7 @@ static double energy_residual(const model *s, const sim *a)
  * difference said 2.5e-10.
  * The arc times add up, and so do the arcs' energy residuals.  Each check
  * allows ten times that sum, plus round-off. */
-static void checks(const model *s, const sim *a, const double *te, const double *xe, int ne, double size,
+static void checks(const model *s, const mm_coulomb_run *a, const double *te, const double *xe, int ne, double size,
                    mm_result *res)
 {
     double fric = s->mu * s->m * s->g, rt = mm_ex_roundoff(a->n * M_PI, 1);
@@ -244,28 +122,8 @@ static void checks(const model *s, const sim *a, const double *te, const double 
         double E0 = 0.5 * s->k * s->x0 * s->x0 + 0.5 * s->m * s->v0 * s->v0;
         mm_res_check_abs(res, "energy (7): E(0) - E(stop) - mu m g times the path slid, from the events, within "
                               "10 times the sum of the arcs' errors, each arc again at rtol 1e-14 [J]",
-                         energy_residual(s, a), 0, 10 * a->sum_de + rt * (E0 + fric * size * a->n));
+                         mm_coulomb_energy_residual(s, a->n, a->x), 0, 10 * a->sum_de + rt * (E0 + fric * size * a->n));
     }
-}
-
-/* The block on the floor, frames from the exact solution; the friction
- * force drawn as an arrow (sliding: mu m g against the motion; at rest:
- * what holds the spring, k x). */
-static int animate(const model *s, const double *te, const double *xe, const double *sge, int ne,
-                   double t_plot, mm_result *res)
-{
-    double t_show;
-    int nf = mm_ex_anim_frames(t_plot, 2 * M_PI / s->w, 26, &t_show);
-    double *t = mm_res_alloc(res, 3 * (size_t)nf * sizeof *t), *x = t + nf, *F = x + nf;
-    if (!t)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++) {
-        double v;
-        t[f] = t_show * f / (nf - 1);
-        x[f] = mm_coulomb_x(s, te, xe, sge, ne, t[f], &v);
-        F[f] = v != 0 ? (v > 0 ? -1 : 1) * s->mu * s->m * s->g : s->k * x[f];
-    }
-    return mm_ex_animate_oscillator(res, nf, t, x, NULL, F, "friction", 0, 1);
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -304,9 +162,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_series *sx = mm_res_series(res, O_XT, np), *sv = mm_res_series(res, O_VT, np);
     mm_series *se = mm_res_series(res, O_ERR, np), *amp = mm_res_series(res, O_AMP, ne + 1);
     mm_table *tab = mm_res_table(res, O_RESTS, ne);
-    sim a = {.t = mm_res_alloc(res, 2 * (MAX_ARCS + 1) * sizeof(double)), .xg = se ? se->y : NULL,
+    mm_coulomb_run a = {.t = mm_res_alloc(res, 2 * (MAX_ARCS + 1) * sizeof(double)), .xg = se ? se->y : NULL,
              .rtol_ref = 1e-14};
-    sim f = {.t = mm_res_alloc(res, 2 * (MAX_ARCS + 1) * sizeof(double)),
+    mm_coulomb_run f = {.t = mm_res_alloc(res, 2 * (MAX_ARCS + 1) * sizeof(double)),
              .xg = mm_res_alloc(res, (size_t)np * sizeof(double))};
     if (!sx || !sv || !se || !amp || !tab || !a.t || !f.t || !f.xg)
         return MM_ENOMEM;
@@ -327,9 +185,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* the same integrated arc by arc with events (each arc again at rtol
      * 1e-14 for the checks), and the whole again at rtol / 100 */
-    int rc = simulate(&s, 1e-10, np, sx->x, &a, res, err);
+    int rc = mm_coulomb_integrate(&s, 1e-10, MAX_ARCS, np, sx->x, &a, err);
     if (rc == MM_OK)
-        rc = simulate(&s, 1e-12, np, sx->x, &f, res, err);
+        rc = mm_coulomb_integrate(&s, 1e-12, MAX_ARCS, np, sx->x, &f, err);
     if (rc != MM_OK)
         return rc;
     double rnd = mm_ex_roundoff(ne * M_PI, 1);
@@ -354,7 +212,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                           "10 times the error estimated by a run at rtol/100 plus the arcs' errors", worst, 0,
                      10 * (est + a.sum_dx) + rnd * size);
     mm_ex_warn_aliasing(res, np, t_plot, ne ? s.w : 0, "raise points");
-    return animate(&s, te, xe, sge, ne, t_plot, res);
+    return mm_vib_coulomb_animate(res, &s, te, xe, sge, ne, t_plot);
 }
 
 static const char *const references[] = {
@@ -366,18 +224,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_coulomb = {
-    .id = "vib-coulomb",
-    .chapter = 5,
-    .section = "5.9.7",
-    .title = "Vibration with Coulomb friction",
+    .id = "vib-coulomb", .chapter = 5, .section = "5.9.7", .title = "Vibration with Coulomb friction",
     .summary = "A mass on a spring sliding on a rough floor: straight-line decay and a stop away from zero.",
-    .tags = "vibration, 1 DOF, dry friction, Coulomb, events, nonsmooth",
-    .theory = "exercises/vib/coulomb.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "vibration, 1 DOF, dry friction, Coulomb, events, nonsmooth", .theory = "exercises/vib/coulomb.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -81,28 +81,6 @@ static const mm_output outputs[] = {
     [O_SIGNAL] = MM_SERIES("signal", "x(t) between the samples", "", "t", "s", .figure = "signal", .role = "reference"),
 };
 
-/* Amplitude of bin k by the defining sum (1), without FFTW: O(N) per bin.
- * cs[m] = cos(2 pi m / N), sn[m] = sin(2 pi m / N), m < N, so the angle of
- * term j is reduced exactly, (j k mod N), before it is looked up. */
-static double direct_amp(const double *wx, size_t n, size_t k, const double *cs, const double *sn, double gain)
-{
-    double re = 0, im = 0;
-    for (size_t j = 0, m = 0; j < n; j++, m = (m + k) % n) {
-        re += wx[j] * cs[m];
-        im -= wx[j] * sn[m];
-    }
-    double single = (k == 0 || 2 * k == n) ? 1 : 2;
-    return single * hypot(re, im) / ((double)n * gain);
-}
-
-/* A local maximum at bin k (strictly above the left neighbour, at least the
- * right one, so a flat top counts once) higher than floor. */
-static int is_peak(const double *amp, size_t nb, size_t k, double floor)
-{
-    double left = k > 0 ? amp[k - 1] : -1, right = k + 1 < nb ? amp[k + 1] : -1;
-    return amp[k] > left && amp[k] >= right && amp[k] > floor;
-}
-
 /* Evaluate the expression at t_i = i h, i < m; MM_OK or the first
  * non-finite sample in *bad. */
 static int sample(mm_expr *e, size_t m, double h, double *t, double *x, size_t *bad)
@@ -116,48 +94,6 @@ static int sample(mm_expr *e, size_t m, double h, double *t, double *x, size_t *
             return MM_ENONFINITE;
         }
     return MM_OK;
-}
-
-/* The largest peaks, largest first, into pk (at most MAX_PEAKS); returns
- * how many. */
-static int find_peaks(const double *amp, size_t nb, double top, size_t *pk)
-{
-    int np = 0;
-    for (size_t k = 0; k < nb; k++) {
-        if (!is_peak(amp, nb, k, PEAK_FLOOR * top))
-            continue;
-        int pos = np < MAX_PEAKS ? np : MAX_PEAKS;  /* insertion into the sorted short list */
-        while (pos > 0 && amp[pk[pos - 1]] < amp[k])
-            pos--;
-        if (pos >= MAX_PEAKS)
-            continue;
-        int last = np < MAX_PEAKS ? np : MAX_PEAKS - 1;
-        for (int i = last; i > pos; i--)
-            pk[i] = pk[i - 1];
-        pk[pos] = k;
-        if (np < MAX_PEAKS)
-            np++;
-    }
-    return np;
-}
-
-/* Leakage, eq. (5): the share of power farther than LOBE bins from every
- * significant peak (a local maximum above LEAK_PEAK of the largest).  Powers
- * relative to the largest amplitude, so that nothing overflows. */
-static double leakage(const double *amp, size_t nb, size_t n, double top, unsigned char *lobe)
-{
-    for (size_t k = 0; k < nb; k++)
-        if (is_peak(amp, nb, k, LEAK_PEAK * top))
-            for (size_t i = k > LOBE ? k - LOBE : 0; i <= k + LOBE && i < nb; i++)
-                lobe[i] = 1;
-    double total = 0, near = 0;
-    for (size_t k = 0; k < nb; k++) {
-        double a = amp[k] / top, p = (k == 0 || 2 * k == n) ? a * a : 0.5 * a * a;
-        total += p;
-        if (lobe[k])
-            near += p;
-    }
-    return total > 0 ? fmax(0, 1 - near / total) : 0;
 }
 
 /* Aliasing: the same record sampled m >= 2N times (a power of 2, so its FFT
@@ -200,18 +136,11 @@ static int aliasing(const mm_value *in, mm_expr *e, size_t n, double fs, double 
     int rc = mm_fourier_spectrum(xf, m, fs * R, &fo, NULL, af, NULL, err);
     if (rc != MM_OK)
         return rc;
-    double ftop = mm_maxabs(af, (int)mb), hi = 0, p_all = 0, p_above = 0;
-    size_t khi = 0;
-    for (size_t k = 0; k < mb && ftop > 0; k++) {
-        double a = af[k] / ftop, p = (k == 0 || 2 * k == m) ? a * a : 0.5 * a * a;
-        p_all += p;
-        if (2 * k > n + 2 * ALIAS_GUARD) {            /* above fs/2 + guard: f_k = k fs / N */
-            p_above += p;
-            if (af[k] > hi)
-                hi = af[k], khi = k;
-        }
-    }
-    double above = p_all > 0 ? p_above / p_all : 0;
+    /* the power above fs/2 + guard (f_k = k fs / N: 2 k > N + 2 guard), and its largest component */
+    double ftop = mm_maxabs(af, (int)mb);
+    size_t khi;
+    double above = mm_fourier_power_above(af, mb, m, ftop, (n + 2 * ALIAS_GUARD) / 2, &khi);
+    double hi = khi ? af[khi] : 0;
     mm_res_method_stat(res, "above_nyquist", above);
     if (hi > ALIAS_LEVEL * ftop) {
         double f = (double)khi * fs / (double)n, fa = fabs(f - fs * nearbyint(f / fs));
@@ -317,7 +246,7 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
     /* rounding of an amplitude by the FFT or the direct sum (1): 2 eps N sum|w x| over N g */
     double tol = 2 * DBL_EPSILON * (double)(n + 16) * 2 * sum_abs / ((double)n * gain);
     size_t pk[MAX_PEAKS];
-    int np = noise ? 0 : find_peaks(amp, nb, top, pk);
+    int np = noise ? 0 : mm_fourier_peaks(amp, nb, PEAK_FLOOR * top, MAX_PEAKS, pk);   /* largest first */
     mm_table *tab = mm_res_table(res, O_PEAKS, np);
     if (!tab)
         return MM_ENOMEM;
@@ -325,7 +254,9 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
         tab->cell[2 * i] = freq[pk[i]];
         tab->cell[2 * i + 1] = amp[pk[i]];
     }
-    double leak = noise || top == 0 ? 0 : leakage(amp, nb, n, top, lobe);
+    /* leakage, eq. (5): the share of power farther than LOBE bins from every
+     * significant peak (a local maximum above LEAK_PEAK of the largest) */
+    double leak = noise || top == 0 ? 0 : mm_fourier_leakage(amp, nb, n, top, LEAK_PEAK, LOBE, lobe);
     if (noise) {
         mm_res_scalar_text(res, O_LEAK, 0, "none: the samples are rounding noise")->exact = 1;
         mm_res_warn(res, "the samples are all zero to rounding (largest %.3g, the signal reaches %.3g between "
@@ -361,13 +292,10 @@ static int run(const mm_value *in, mm_expr *e, mm_result *res, mm_error *err)
     bins[nbins++] = nb - 1;
     bins[nbins++] = nb / 3;
     bins[nbins++] = (2 * nb) / 3;
-    for (size_t m = 0; m < n; m++) {
-        cs[m] = cos(2 * M_PI * (double)m / (double)n);
-        sn[m] = sin(2 * M_PI * (double)m / (double)n);
-    }
+    mm_fourier_twiddles(n, cs, sn);
     double worst = 0;
     for (int i = 0; i < nbins; i++)
-        worst = fmax(worst, fabs(amp[bins[i]] - direct_amp(wx, n, bins[i], cs, sn, gain)));
+        worst = fmax(worst, fabs(amp[bins[i]] - mm_fourier_direct_amp(wx, n, bins[i], cs, sn, gain)));
     mm_res_check_abs(res, "FFT vs the direct sum (1) at the 5 largest peaks and 4 more bins: worst |amplitude error|",
                      worst, 0, fmax(tol, 1e-300));
 
@@ -424,19 +352,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_dft = {
-    .id = "vib-dft",
-    .chapter = 5,
-    .section = "5.6",
-    .title = "Discrete Fourier transform: sampling, leakage, aliasing",
+    .id = "vib-dft", .chapter = 5, .section = "5.6", .title = "Discrete Fourier transform: sampling, leakage, aliasing",
     .summary = "The amplitude spectrum of a sampled signal by the FFT: bins, leakage between bins, "
                "the Hann window, and aliasing above fs/2.",
-    .tags = "DFT, FFT, spectrum, sampling, aliasing, leakage, window",
-    .theory = "exercises/vib/dft.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "DFT, FFT, spectrum, sampling, aliasing, leakage, window", .theory = "exercises/vib/dft.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -30,6 +30,7 @@
 
 #include "mm_exhelp.h"
 #include "mm_fourier.h"
+#include "mm_quad.h"
 
 enum { P_MEDIUM, P_E, P_RHO, P_H, P_LAMBDA, P_CYCLES, P_AMP, P_T };
 enum { M_BEAM, M_BAR };
@@ -156,44 +157,6 @@ static double complex exact_psi(const wave *w, double x, double t)
     return w->A / csqrt(q) * cexp(I * ph) * cexp(-y * y / (2 * w->sigma * w->sigma * q));
 }
 
-/* psi(x, t) = c_0 + 2 sum_j c_j exp(i (k_j (x - xl) - omega_j t)), eq. (6):
- * C_j = c_j exp(-i omega_j t) once per mode, then exp(i j dk X) by rotation
- * in j, restarted exactly every SUM_RESTART modes. */
-static void mode_sum(const double complex *C, int jlo, int jhi, double dk, double complex c0, const double *x,
-                     int n, double xl, double complex *psi)
-{
-    for (int i = 0; i < n; i++) {
-        double X = x[i] - xl;
-        double complex step = cexp(I * fmod(dk * X, 2 * M_PI)), e = 0, sum = 0;
-        for (int j = jlo; j <= jhi; j++) {
-            if ((j - jlo) % SUM_RESTART == 0)
-                e = cexp(I * fmod((double)j * dk * X, 2 * M_PI));
-            else
-                e *= step;
-            sum += C[j - jlo] * e;
-        }
-        psi[i] = c0 + 2 * sum;
-    }
-}
-
-/* Centroid and r.m.s. width of |psi|^2 on an even grid (trapezoid; the
- * ends are negligible). */
-static void moments(const double *x, const double complex *psi, int n, double *centre, double *width)
-{
-    double s0 = 0, s1 = 0, s2 = 0;
-    for (int i = 0; i < n; i++) {
-        double p = creal(psi[i]) * creal(psi[i]) + cimag(psi[i]) * cimag(psi[i]);
-        s0 += p;
-        s1 += p * x[i];
-    }
-    *centre = s1 / s0;
-    for (int i = 0; i < n; i++) {
-        double p = creal(psi[i]) * creal(psi[i]) + cimag(psi[i]) * cimag(psi[i]), d = x[i] - *centre;
-        s2 += p * d * d;
-    }
-    *width = sqrt(s2 / s0);
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     wave w = model(in);
@@ -252,8 +215,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         return MM_ENOMEM;
     mm_linspace(xl, xr, np, s0->x);
     double complex c0 = cr[0];
-    mode_sum(C0, jlo, jhi, dk, c0, s0->x, np, xl, p0);
-    mode_sum(Ct, jlo, jhi, dk, c0, s0->x, np, xl, pt);
+    /* psi(x, t) = c_0 + 2 sum_j C_j exp(i k_j (x - xl)), eq. (6), C_j = c_j exp(-i omega_j t) */
+    mm_fourier_mode_sum(C0, jlo, jhi, dk, c0, s0->x, np, xl, SUM_RESTART, p0);
+    mm_fourier_mode_sum(Ct, jlo, jhi, dk, c0, s0->x, np, xl, SUM_RESTART, pt);
     double worst = 0, worst0 = 0;
     for (int i = 0; i < np; i++) {
         double x = s0->x[i];
@@ -267,9 +231,16 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     }
     /* the curves are for the eye: six digits, once the checks and the
      * moments have used them all */
-    double xc0, xct, wd0, wdt;
-    moments(s0->x, p0, np, &xc0, &wd0);
-    moments(s0->x, pt, np, &xct, &wdt);
+    /* the centroid and r.m.s. width of |psi|^2 (mm_quad_moments) */
+    double xc0, xct, wd0, wdt, *d0 = mm_res_alloc(res, 2 * sizeof *d0 * (size_t)np), *dt = d0 + np;
+    if (!d0)
+        return MM_ENOMEM;
+    for (int i = 0; i < np; i++) {
+        d0[i] = creal(p0[i]) * creal(p0[i]) + cimag(p0[i]) * cimag(p0[i]);
+        dt[i] = creal(pt[i]) * creal(pt[i]) + cimag(pt[i]) * cimag(pt[i]);
+    }
+    mm_quad_moments(s0->x, d0, np, &xc0, &wd0);
+    mm_quad_moments(s0->x, dt, np, &xct, &wdt);
     mm_series *sr[4] = {s0, st, e0, et};
     for (int k = 0; k < 4; k++) {
         mm_ex_round_sig(sr[k]->x, np, 8);
@@ -360,19 +331,11 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_dispersion = {
-    .id = "vib-dispersion",
-    .chapter = 5,
-    .section = "5.3",
+    .id = "vib-dispersion", .chapter = 5, .section = "5.3",
     .title = "Phase and group velocity: a wave packet in a beam and in a bar",
     .summary = "A wave packet travels at the group velocity while its crests move at the phase velocity; in a "
                "beam the packet spreads, in a bar it keeps its shape.",
     .tags = "waves, dispersion, phase velocity, group velocity, wave packet, beam, bar",
-    .theory = "exercises/vib/dispersion.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/dispersion.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

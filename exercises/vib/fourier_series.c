@@ -21,6 +21,7 @@
 
 #include "mm_exhelp.h"
 #include "mm_fourier.h"
+#include "mm_special.h"
 
 enum { P_WAVE, P_TERMS, P_T, P_A };
 enum { W_SQUARE, W_SAWTOOTH, W_TRIANGLE };
@@ -136,18 +137,6 @@ static double alias_bound(int wave, double A, int k, long N)
     case W_SAWTOOTH: return 2 * M_PI / 3 * A * k / (n2 - (double)k * k);
     default:         return 8 * A / (3 * ((double)N - k) * ((double)N - k));
     }
-}
-
-/* Si(pi) = int_0^pi sin(u)/u du by its power series (terms fall like
- * pi^(2n)/(2n+1)!, 30 terms are far past double precision). */
-static double si_pi(void)
-{
-    double term = M_PI, sum = 0;                   /* term = (-1)^n pi^(2n+1)/(2n+1)! */
-    for (int n = 0; n < 30; n++) {
-        sum += term / (2 * n + 1);
-        term *= -M_PI * M_PI / ((2 * n + 2) * (2 * n + 3));
-    }
-    return sum;
 }
 
 /* The maximum of S_K at its known place, eqs. (10), (12), (14): the value
@@ -276,7 +265,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     for (int k = 1; k <= K; k++)
         tol_max += alias_bound(wave, A, k, N);
     tol_max = 1.5 * tol_max + tol_round;
-    double G = si_pi() / M_PI - 0.5;
+    double G = mm_special_si(M_PI) / M_PI - 0.5;             /* Si(pi) = int_0^pi sin(u)/u du */
     /* S_K at its known place is a K-term sum: exact but for its rounding,
      * which matters when the overshoot is a small part of A (the triangle) */
     mm_res_scalar_err(res, O_OVERSHOOT, s_ref - A, tol_round, MM_ERR_BOUND);
@@ -337,19 +326,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_fourier_series = {
-    .id = "vib-fourier-series",
-    .chapter = 5,
-    .section = "5.4",
-    .title = "Fourier series and the Gibbs overshoot",
+    .id = "vib-fourier-series", .chapter = 5, .section = "5.4", .title = "Fourier series and the Gibbs overshoot",
     .summary = "Square, sawtooth and triangle waves as sums of harmonics: coefficients by FFT, partial sums, "
                "the 9 % overshoot at a jump.",
     .tags = "Fourier series, harmonics, FFT, Gibbs phenomenon, periodic motion",
-    .theory = "exercises/vib/fourier_series.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = NULL,
-    .solve = solve,
+    .theory = "exercises/vib/fourier_series.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .solve = solve,
 };

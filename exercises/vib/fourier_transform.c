@@ -173,40 +173,6 @@ static double error_bound(int pulse, double tau, double A, double fs, double f, 
     return sum;
 }
 
-/* ---- the transform of the samples summed directly (no FFT) --------------- */
-
-typedef struct dtft {
-    const double *x;   /* samples, x[m] at the pulse centre */
-    long m, half;      /* centre index; samples m-half .. m+half are used */
-    double dt, level;  /* step; level subtracted (0, or X_c(0)/2) */
-    int deriv;         /* 1: the derivative d/df instead */
-} dtft;
-
-/* X_c(f) of the samples, dt (x_m + 2 sum_i x_{m+i} cos(2 pi f i dt)) (the
- * samples are symmetric about the centre), or its derivative in f.
- * cos and sin of i th by rotation, restarted exactly every 64 terms. */
-static int dtft_re(double f, double *out, void *ctx)
-{
-    const dtft *d = ctx;
-    double th = 2 * M_PI * f * d->dt, c1 = cos(th), s1 = sin(th), c = 1, s = 0, sum = 0;
-    for (long i = 1; i <= d->half; i++) {
-        if (i % 64 == 0) {
-            c = cos((double)i * th);
-            s = sin((double)i * th);
-        } else {
-            double cn = c * c1 - s * s1;
-            s = s * c1 + c * s1;
-            c = cn;
-        }
-        sum += d->deriv ? -d->x[d->m + i] * (double)i * s : d->x[d->m + i] * c;
-    }
-    if (d->deriv)
-        *out = 2 * d->dt * 2 * M_PI * d->dt * sum;
-    else
-        *out = d->dt * (d->x[d->m] + 2 * sum) - d->level;
-    return 0;
-}
-
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
     const int pulse = (int)in[P_PULSE].x;
@@ -267,8 +233,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         half = m;
     if (half > n - 1 - m)
         half = n - 1 - m;
-    dtft d = {.x = x, .m = m, .half = half, .dt = dt, .level = 0};
-    double f_ref, fz = NAN;
+    /* X_c(f) of the samples summed directly (mm_fourier_even_transform): at
+     * any f, not only at the bins */
+    mm_fourier_even d = {.x = x, .m = m, .half = half, .dt = dt, .level = 0};
+    double f_ref, fz;
     if (pulse == PU_GAUSS) {
         d.level = X0 / 2;
         f_ref = sqrt(log(2) / 2) / (M_PI * sigma_of(tau));
@@ -279,29 +247,11 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * triangle's spectrum touches zero without changing sign (sinc^2), so
      * there the derivative's sign change (the first minimum) is sought */
     d.deriv = pulse == PU_TRI;
-    double step = 1 / (16 * tau), fa = d.deriv ? step : 0, ga, gb;
-    dtft_re(fa, &ga, &d);
-    long evals = 1;
-    int iters = 0;
-    for (int i = d.deriv ? 2 : 1; i <= 64; i++) {
-        double fb = i * step;
-        dtft_re(fb, &gb, &d);
-        evals++;
-        if (gb == 0) {
-            fz = fb;
-            break;
-        }
-        if ((ga > 0) != (gb > 0)) {
-            double fx, width;
-            rc = mm_roots_brent(dtft_re, &d, fa, fb, ga, gb, 1e-12 / tau, 200, &fz, &fx, &width, &iters, &evals,
-                                err);
-            if (rc != MM_OK)
-                return rc;
-            break;
-        }
-        fa = fb;
-        ga = gb;
-    }
+    long evals = 0;
+    int iters;
+    if ((rc = mm_roots_first(mm_fourier_even_transform, &d, 1 / (16 * tau), d.deriv, 64, 1e-12 / tau, 200, &fz,
+                             &iters, &evals, err)) != MM_OK)
+        return rc;
     if (isnan(fz))
         return mm_error_set(err, MM_EINTERNAL, "", "no zero found below 4/duration");
     /* how far the zero may move.  A simple zero: the error bound at f_ref
@@ -423,19 +373,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_fourier_transform = {
-    .id = "vib-fourier-transform",
-    .chapter = 5,
-    .section = "5.5",
-    .title = "Fourier integral: the spectrum of a pulse",
+    .id = "vib-fourier-transform", .chapter = 5, .section = "5.5", .title = "Fourier integral: the spectrum of a pulse",
     .summary = "Rectangular, triangular, Gaussian and half-sine pulses: their spectra by FFT against the closed "
                "forms; shorter pulse, wider spectrum.",
     .tags = "Fourier transform, Fourier integral, pulse, spectrum, FFT, sampling",
-    .theory = "exercises/vib/fourier_transform.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/fourier_transform.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -64,8 +64,7 @@ static const mm_output outputs[] = {
     [O_BW] = MM_SCALAR("bandwidth", "half-power bandwidth (exact, eq. 5)", "rad/s", .flags = MM_ANSWER | MM_EXACT),
     [O_BW_APPROX] = MM_SCALAR("bandwidth_approx", "half-power bandwidth, approximation 2 zeta omega_n", "rad/s",
                               .flags = MM_EXACT),
-    [O_PHASE_RES] = MM_SCALAR("phase_at_resonance", "phase lag at omega = omega_n, eq. (4)", "rad",
-                              .flags = MM_EXACT),
+    [O_PHASE_RES] = MM_SCALAR("phase_at_resonance", "phase lag at omega = omega_n, eq. (4)", "rad", .flags = MM_EXACT),
     [O_PEAKS] = MM_TABLE("peaks", "peak and bandwidth of each damping ratio", peak_cols, peak_units),
     [O_AMP] = MM_SERIES("amplitude_%d", "|H| = X/(F0/k), curve %d", "", "omega/omega_n", "", .first = 1,
                         .last = MAX_ZETAS, .figure = "amplitude"),
@@ -329,18 +328,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_frequency_response = {
-    .id = "vib-frequency-response",
-    .chapter = 5,
-    .section = "5.9.2",
+    .id = "vib-frequency-response", .chapter = 5, .section = "5.9.2",
     .title = "Frequency response: amplitude and phase",
     .summary = "Magnification and phase lag against the forcing frequency for several damping ratios; peak and bandwidth.",
     .tags = "vibration, 1 DOF, frequency response, resonance peak, bandwidth, phase",
-    .theory = "exercises/vib/frequency_response.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = NULL,
-    .solve = solve,
+    .theory = "exercises/vib/frequency_response.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .solve = solve,
 };

@@ -22,6 +22,8 @@
 #include <stdio.h>
 
 #include "mm_exhelp.h"
+#include "mm_peaks.h"
+#include "mm_rational.h"
 #include "mm_roots.h"
 
 enum { P_A1, P_W1, P_PHI1, P_A2, P_W2, P_PHI2, P_TEND, P_POINTS };
@@ -56,8 +58,7 @@ enum { O_BEAT, O_BEAT_F, O_CARRIER, O_EMAX, O_EMIN, O_PERIODIC, O_PERIOD, O_PEAK
 static const mm_output outputs[] = {
     [O_BEAT] = MM_SCALAR("beat_period", "beat period 2 pi / |omega1 - omega2|", "s", .flags = MM_ANSWER | MM_EXACT),
     [O_BEAT_F] = MM_SCALAR("beat_frequency", "beat frequency |omega1 - omega2| / (2 pi)", "Hz", .flags = MM_EXACT),
-    [O_CARRIER] = MM_SCALAR("carrier_omega", "mean angular frequency (omega1 + omega2)/2", "rad/s",
-                            .flags = MM_EXACT),
+    [O_CARRIER] = MM_SCALAR("carrier_omega", "mean angular frequency (omega1 + omega2)/2", "rad/s", .flags = MM_EXACT),
     [O_EMAX] = MM_SCALAR("envelope_max", "largest envelope A1 + A2", "m", .flags = MM_ANSWER | MM_EXACT),
     [O_EMIN] = MM_SCALAR("envelope_min", "smallest envelope |A1 - A2|", "m", .flags = MM_ANSWER | MM_EXACT),
     [O_PERIODIC] = MM_SCALAR("periodic", "is the sum periodic?", "", .flags = MM_ANSWER | MM_EXACT),
@@ -113,66 +114,6 @@ static int dx_dt(double t, double *fx, void *ctx)
     const harm *h = ctx;
     *fx = -h->A1 * h->w1 * sin(h->w1 * t + h->p1) - h->A2 * h->w2 * sin(h->w2 * t + h->p2);
     return 0;
-}
-
-/* w1/w2 = p/q with q <= MAX_Q, to the rounding of the given values (4 eps
- * relative: 10 and 11, or 0.1 and 0.3, as typed), by continued fractions;
- * 1 and 1.0000000001 are not (their ratio needs q = 1e10). */
-static int rational(double r, long *p, long *q)
-{
-    long h0 = 0, h1 = 1, k0 = 1, k1 = 0;
-    double x = r;
-    for (int i = 0; i < 40; i++) {
-        double a = floor(x);
-        long h2 = (long)a * h1 + h0, k2 = (long)a * k1 + k0;
-        if (k2 > MAX_Q)
-            return 0;
-        h0 = h1; h1 = h2; k0 = k1; k1 = k2;
-        if (fabs((double)h1 / (double)k1 - r) <= 4 * DBL_EPSILON * r) {
-            *p = h1;
-            *q = k1;
-            return 1;
-        }
-        if (x - a < 1e-15)
-            return 0;
-        x = 1 / (x - a);
-    }
-    return 0;
-}
-
-/* Times of the envelope's minima measured on the signal: the heights p_i
- * of successive carrier peaks sample E(t_i); where p_i^2 dips (below the
- * mean level A1^2 + A2^2) a parabola through three neighbours gives the
- * bottom.  Dips closer than half a beat period are one dip.  Returns the
- * number stored in tmin. */
-static int envelope_minima(const double *tp, const double *pp, int np, const harm *h, double Tb,
-                           double *tmin, double *ymin)
-{
-    int nm = 0;
-    double level = h->A1 * h->A1 + h->A2 * h->A2;
-    for (int i = 1; i + 1 < np && nm < MAX_MINIMA; i++) {
-        double y0 = pp[i - 1] * pp[i - 1], y1 = pp[i] * pp[i], y2 = pp[i + 1] * pp[i + 1];
-        if (!(y1 < y0 && y1 <= y2 && y1 < level))
-            continue;
-        /* vertex of the parabola through (t0,y0), (t1,y1), (t2,y2) */
-        double a = tp[i - 1] - tp[i], b = tp[i + 1] - tp[i];
-        double da = y0 - y1, db = y2 - y1;
-        double den = 2 * (da * b - db * a);
-        double tv = tp[i] + (den != 0 ? (da * b * b - db * a * a) / den : 0);
-        if (tv < tp[i - 1] || tv > tp[i + 1])
-            tv = tp[i];
-        if (nm > 0 && tv - tmin[nm - 1] < 0.5 * Tb) {
-            if (y1 < ymin[nm - 1]) {
-                tmin[nm - 1] = tv;
-                ymin[nm - 1] = y1;
-            }
-            continue;
-        }
-        tmin[nm] = tv;
-        ymin[nm] = y1;
-        nm++;
-    }
-    return nm;
 }
 
 /* The carrier peaks: local maxima of x found by Brent's method on x' = 0
@@ -271,7 +212,17 @@ static int beats(const harm *h, double t_end, const double *tp, const double *pp
     double *tmin = mm_res_alloc(res, sizeof *tmin * MAX_MINIMA), *ymin = mm_res_alloc(res, sizeof *ymin * MAX_MINIMA);
     if (!tmin || !ymin)
         return MM_ENOMEM;
-    int nm = envelope_minima(tp, pp, np, h, Tb, tmin, ymin), regular = nm >= 2;
+    /* the envelope's bottoms measured on the signal: the heights p_i of
+     * successive carrier peaks sample E(t_i); where p_i^2 dips below the
+     * mean level A1^2 + A2^2, a parabola through three neighbours gives the
+     * bottom; dips closer than half a beat period are one */
+    double *p2 = mm_res_alloc(res, sizeof *p2 * (size_t)(np + 1));
+    if (!p2)
+        return MM_ENOMEM;
+    for (int i = 0; i < np; i++)
+        p2[i] = pp[i] * pp[i];
+    int nm = mm_peaks_minima(np, tp, p2, h->A1 * h->A1 + h->A2 * h->A2, 0.5 * Tb, MAX_MINIMA, tmin, ymin);
+    int regular = nm >= 2;
     for (int i = 1; i < nm; i++)
         if (fabs(tmin[i] - tmin[i - 1] - Tb) > 0.5 * Tb)
             regular = 0;
@@ -302,7 +253,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
 
     /* ---- periodicity, eq. (6) ---- */
     long p = 0, q = 0;
-    int periodic = rational(h.w1 / h.w2, &p, &q);
+    /* w1/w2 = p/q with q <= MAX_Q, to the rounding of the given values (4 eps
+     * relative: 10 and 11, or 0.1 and 0.3, as typed), by continued fractions */
+    int periodic = mm_rational_approx(h.w1 / h.w2, MAX_Q, 4 * DBL_EPSILON, &p, &q);
     double Tp = periodic ? 2 * M_PI * (double)p / h.w1 : 0;   /* p periods of x1 = q periods of x2 */
     char ptext[120];
     if (periodic)
@@ -370,19 +323,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_harmonics = {
-    .id = "vib-harmonics",
-    .chapter = 5,
-    .section = "5.2",
-    .title = "Two harmonics: beats and Lissajous figures",
+    .id = "vib-harmonics", .chapter = 5, .section = "5.2", .title = "Two harmonics: beats and Lissajous figures",
     .summary = "The sum of two harmonic motions: beats and their envelope, when the sum is periodic, and the "
                "Lissajous figure of one against the other.",
-    .tags = "harmonic motion, beats, envelope, periodic motion, Lissajous",
-    .theory = "exercises/vib/harmonics.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "harmonic motion, beats, envelope, periodic motion, Lissajous", .theory = "exercises/vib/harmonics.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

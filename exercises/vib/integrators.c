@@ -80,13 +80,11 @@ static const mm_output outputs[] = {
     [O_AMPLITUDE] = MM_SCALAR("amplitude", "largest |x| of the exact motion at the plotted times", "m",
                               .flags = MM_EXACT),
     [O_T_SWEEP] = MM_SCALAR("t_sweep", "time span of the work-precision sweeps", "s", .flags = MM_EXACT),
-    [O_DRIFT_RK4] = MM_SCALAR("energy_drift_rk4", "RK4: relative energy change after the run", "",
-                              .flags = MM_ANSWER),
+    [O_DRIFT_RK4] = MM_SCALAR("energy_drift_rk4", "RK4: relative energy change after the run", "", .flags = MM_ANSWER),
     [O_E_VERLET] = MM_SCALAR("energy_error_verlet", "Verlet: largest relative energy error", ""),
     [O_E_NEWMARK] = MM_SCALAR("energy_error_newmark", "average acceleration: largest relative energy error", ""),
     [O_METHODS] = MM_TABLE("methods", "each method at the chosen h or rtol", cols, units),
-    [O_X_EXACT] = MM_SERIES("x_exact", "exact displacement", "m", "t", "s", .figure = "response",
-                            .role = "reference"),
+    [O_X_EXACT] = MM_SERIES("x_exact", "exact displacement", "m", "t", "s", .figure = "response", .role = "reference"),
     [O_X_M] = MM_SERIES("x_%s", "%s", "m", "t", "s", .keys = mkeys, .figure = "response", .mark = "dots"),
     [O_WORK] = MM_SERIES("work_%s", "error of the end state against evaluations, %s", "m", "evaluations", "",
                          .keys = mkeys, .figure = "work", .x_scale = "log", .y_scale = "log"),
@@ -430,19 +428,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_integrators = {
-    .id = "vib-integrators",
-    .chapter = 5,
-    .section = "5.8",
-    .title = "Time integrators compared: error against cost",
+    .id = "vib-integrators", .chapter = 5, .section = "5.8", .title = "Time integrators compared: error against cost",
     .summary = "One oscillator by central difference, Newmark, Verlet, RK4, DOPRI5 and DOP853: errors, costs, "
                "orders, energy.",
     .tags = "vibration, numerical methods, time integration, Newmark, Runge-Kutta, work-precision, energy",
-    .theory = "exercises/vib/integrators.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/integrators.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

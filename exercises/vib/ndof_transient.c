@@ -20,7 +20,6 @@
 #include <string.h>
 
 #include "mm_exhelp.h"
-#include "mm_linalg.h"
 #include "mm_mdof.h"
 #include "mm_vib.h"
 
@@ -37,8 +36,7 @@ static const mm_param params[] = {
     [P_ENDS] = {"ends", "ends", "", MM_CHOICE, 0, 0, 0, .choices = ends, .help = "fixed-free: the last mass is free"},
     [P_A] = {"alpha", "mass-proportional damping a", "1/s", MM_REAL, 0.1, 0, 100,
              .help = "C = a M + b K; a damps the slow modes: zeta_j = a/(2 omega_j) + b omega_j/2"},
-    [P_B] = {"beta", "stiffness-proportional damping b", "s", MM_REAL, 1e-3, 0, 1,
-             .help = "b damps the fast modes"},
+    [P_B] = {"beta", "stiffness-proportional damping b", "s", MM_REAL, 1e-3, 0, 1, .help = "b damps the fast modes"},
     [P_F] = {"F", "force", "N", MM_REAL, 10, -1e4, 1e4, .help = "amplitude of F cos(omega t) on mass p"},
     [P_AT] = {"p", "loaded mass", "", MM_INT, 10, 1, MAXN, .help = "which mass the force pushes (1 .. n)"},
     [P_OMEGA] = {"omega", "forcing frequency", "rad/s", MM_REAL, 0, 0, 1e3, .help = "0: a constant force (a step)"},
@@ -95,12 +93,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double *Phi = mm_res_alloc(res, nn * sizeof *Phi), w[MAXN], c[MAXN], F[MAXN] = {0};
     if (!M || !K || !Phi)
         return MM_ENOMEM;
-    for (int i = 0; i < n; i++) {
-        M[i * n + i] = mass;
-        K[i * n + i] = i == n - 1 && free_end ? k : 2 * k;
-        if (i + 1 < n)
-            K[i * n + i + 1] = K[(i + 1) * n + i] = -k;
-    }
+    mm_mdof_chain_matrices(n, mass, k, free_end, M, K);
     F[p] = in[P_F].x;
     mm_mdof_system sys = {n, M, NULL, K};
     int rc = mm_mdof_modes(&sys, n, w, Phi, NULL, err);
@@ -112,8 +105,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if (!t)
         return MM_ENOMEM;
     for (int j = 0; j < n; j++) {
-        double th = free_end ? (2 * j + 1) * M_PI / (2 * (2 * n + 1.0)) : (j + 1) * M_PI / (2 * (n + 1.0));
-        double ex = w0 * sin(th);
+        double ex = w0 * sin(mm_mdof_chain_theta(n, j, free_end));
         worst = fmax(worst, fabs(w[j] * w[j] - ex * ex));
         c[j] = a + b * w[j] * w[j];                                    /* 2 zeta_j omega_j, eq. (2) */
         double row[4] = {j + 1, w[j], c[j] / (2 * w[j]), Phi[p * n + j] * F[p]};
@@ -128,50 +120,27 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if ((rc = mm_vib_transient_run(res, n, M, K, w, Phi, c, m, NULL, NULL, F, W, h, in[P_TEND].x,
                                    (int)in[P_POINTS].x, &tr, err)))
         return rc;
-    mm_res_scalar_err(res, O_ERR, tr.err_max, tr.round_nm, MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_TRUNC, tr.trunc_max, tr.round, MM_ERR_ESTIMATE);
-    /* eq. (3): K^-1 F less what the retained modes carry statically */
-    double r[MAXN], rmax = 0;
-    mm_linalg_solve_info info;
-    if ((rc = mm_linalg_solve(n, 1, K, F, r, &info, err)))
-        return rc;
-    for (int i = 0; i < n; i++) {
-        for (int j = 0; j < m; j++)
-            r[i] -= Phi[i * n + j] * Phi[p * n + j] * F[p] / (w[j] * w[j]);
-        rmax = fmax(rmax, fabs(r[i]));
-    }
-    mm_res_scalar_err(res, O_STATIC, rmax, 16 * eps * n * mm_vib_big(tr.q_ex, (size_t)tr.ns * n), MM_ERR_ESTIMATE);
-
     static const int sid[3] = {O_X, O_XE, O_XM};
-    const double *src[3] = {tr.q_nm, tr.q_ex, tr.q_m};
-    for (int s = 0; s < (m < n ? 3 : 2); s++) {
-        mm_series *se = mm_res_series(res, sid[s], tr.ns);
-        if (!se)
-            return MM_ENOMEM;
-        for (int i = 0; i < tr.ns; i++)
-            se->x[i] = tr.t[i], se->y[i] = src[s][i * n + p];
-    }
+    if ((rc = mm_vib_transient_show(res, &tr, n, h, O_ERR, O_TRUNC, 1, &p, sid, m < n ? 3 : 2)))
+        return rc;
+    /* eq. (3): K^-1 F less what the retained modes carry statically */
+    double r[MAXN];
+    if ((rc = mm_mdof_static_residual(n, m, K, w, Phi, p, F[p], r, err)))
+        return rc;
+    mm_res_scalar_err(res, O_STATIC, mm_maxabs(r, n), 16 * eps * n * mm_vib_big(tr.q_ex, (size_t)tr.ns * n),
+                      MM_ERR_ESTIMATE);
+
     if (w[n - 1] * h > 2)
         mm_res_warn(res, "omega_max h = %.3g: the fastest modes take fewer than 3 steps a period; average "
                          "acceleration keeps them bounded but at the wrong frequency", w[n - 1] * h);
-    mm_res_method(res, mm_newmark_method_name(MM_NEWMARK_AVERAGE), h);
-    mm_res_method_stat(res, "steps", (double)tr.steps);
 
-    /* the exact motion, 16 frames a period of the lowest mode */
-    double t_show, *tf = mm_res_alloc(res, MM_ANIM_MAX_FRAMES * sizeof *tf);
-    int nf = mm_vib_frames(in[P_TEND].x, 2 * M_PI / w[0] / 2, 1500 / (4 * n + 4), &t_show);
-    double *q = mm_res_alloc(res, (size_t)nf * n * sizeof *q);
-    mm_anim *an = mm_res_animation(res, nf, "t", "s");
-    if (!tf || !q || !an)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++)
-        tf[f] = an->t[f] = t_show * f / (nf - 1);
-    mm_mdof_pulse g = {1, W, INFINITY};
-    if ((rc = mm_mdof_modal_response(n, n, w, c, Phi, n, M, NULL, NULL, F, &g, nf, tf, q, err)))
+    /* the exact motion, 16 frames a period of the lowest mode, the largest moving 0.3 of a gap */
+    int nf;
+    double *q;
+    if ((rc = mm_vib_modal_frames(res, n, M, w, c, Phi, NULL, NULL, F, W, in[P_TEND].x, 2 * M_PI / w[0] / 2,
+                                  1500 / (4 * n + 4), &nf, &q, err)))
         return rc;
-    double big = mm_vib_big(q, (size_t)nf * n);
-    for (int i = 0; i < nf * n; i++)
-        q[i] *= 0.3 / big;                            /* the largest moves 0.3 of a gap */
+    mm_vib_scale(q, (size_t)nf * n, 0.3);
     return mm_vib_chain_draw(res, n, !free_end, nf, q, 1.0);
 }
 
@@ -182,18 +151,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_ndof_transient = {
-    .id = "vib-ndof-transient",
-    .chapter = 5,
-    .section = "5.11.1",
+    .id = "vib-ndof-transient", .chapter = 5, .section = "5.11.1",
     .title = "The transient of n degrees of freedom: modes retained and Rayleigh damping",
     .summary = "A chain pushed at one mass: modal superposition with m modes against direct integration of all.",
     .tags = "vibration, n DOF, transient, modal superposition, Rayleigh damping, truncation, Newmark",
-    .theory = "exercises/vib/ndof_transient.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/ndof_transient.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };

@@ -23,6 +23,8 @@
 
 #include "mm_exhelp.h"
 #include "mm_fourier.h"
+#include "mm_peaks.h"
+#include "mm_vib.h"
 
 enum { P_M, P_K, P_C, P_F0, P_DETUNING, P_TEND, P_POINTS };
 
@@ -33,8 +35,7 @@ static const mm_param params[] = {
              .help = "spring force per metre of stretch; with m it sets omega_n between 3e-3 and 3e4 rad/s"},
     [P_C] = {"c", "damping coefficient", "N s/m", MM_REAL, 0, 0, 1e4,
              .help = "viscous damper force per m/s; 0 lets the amplitude grow without bound"},
-    [P_F0] = {"F0", "force amplitude", "N", MM_REAL, 1, 0, 1e4,
-              .help = "amplitude of F0 cos(omega t), up to 10 kN"},
+    [P_F0] = {"F0", "force amplitude", "N", MM_REAL, 1, 0, 1e4, .help = "amplitude of F0 cos(omega t), up to 10 kN"},
     [P_DETUNING] = {"detuning", "detuning", "", MM_REAL, 0, -0.5, 0.5,
                     .help = "relative distance of the forcing frequency from omega_n: omega = omega_n (1 + detuning); "
                             "within +-0.5, beyond which it is no longer near resonance"},
@@ -127,33 +128,26 @@ static double shape(double a, double b, double t)
  * of |x| over [ta, tb] by least squares on peak = beta g(t) (eq. 7).  The
  * peaks are the velocity zeros of the motion sampled 32 times a period;
  * each is placed by linear interpolation of v and valued by the cubic
- * Hermite interpolant of (x, v).  Returns the number of peaks used (MM_ENOMEM
- * as -1). */
+ * Hermite interpolant of (x, v) (mm_peaks_hermite).  Returns the number of
+ * peaks used (MM_ENOMEM as -1). */
 static int measure_growth(const mm_sdof *s, const mm_sdof_props *p, double ta, double tb, double *rate,
                           mm_result *res)
 {
     double a = p->zeta * p->omega_n, b = p->omega_d - s->omega;
     double T = 2 * M_PI / s->omega;
     int n = (int)ceil(32 * tb / T) + 1;
-    double *t = mm_res_alloc(res, 3 * (size_t)n * sizeof *t), *x = t + n, *v = x + n;
+    double *t = mm_res_alloc(res, 5 * (size_t)n * sizeof *t), *x = t + n, *v = x + n, *tp = v + n, *xp = tp + n;
     if (!t)
         return -1;
     mm_linspace(0, tb, n, t);
     for (int i = 0; i < n; i++)
         x[i] = mm_sdof_x(s, p, t[i], &v[i]);
+    int np = mm_peaks_hermite(n, t, x, v, ta, n, tp, xp);
     double sgg = 0, sgp = 0;
-    int np = 0;
-    for (int i = 0; i + 1 < n; i++) {
-        if (t[i] < ta || !(v[i] * v[i + 1] < 0 || (v[i + 1] == 0 && v[i] != 0)))
-            continue;
-        double h = t[i + 1] - t[i], u = v[i] / (v[i] - v[i + 1]);    /* v = 0 at t[i] + u h */
-        double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
-        double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
-        double xp = h00 * x[i] + h10 * h * v[i] + h01 * x[i + 1] + h11 * h * v[i + 1];
-        double g = shape(a, b, t[i] + u * h);
+    for (int i = 0; i < np; i++) {
+        double g = shape(a, b, tp[i]);
         sgg += g * g;
-        sgp += g * fabs(xp);
-        np++;
+        sgp += g * fabs(xp[i]);
     }
     if (np >= 4)
         *rate = sgp / sgg;
@@ -283,17 +277,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_ex_warn_aliasing(res, n, t_end, fmax(p.omega_n, s.omega), "shorten t_end or raise points");
 
     /* the mass swinging wider and wider, frames from the closed form */
-    double t_show;
-    int nf = mm_ex_anim_frames(t_end, T, p.zeta > 0 ? 35 : 24, &t_show);
-    double *ta = mm_res_alloc(res, 3 * (size_t)nf * sizeof *ta), *xa = ta + nf, *Fa = xa + nf;
-    if (!ta)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++) {
-        ta[f] = t_show * f / (nf - 1);
-        xa[f] = mm_sdof_x(&s, &p, ta[f], NULL);
-        Fa[f] = s.F0 * cos(s.omega * ta[f]);
-    }
-    return mm_ex_animate_oscillator(res, nf, ta, xa, NULL, s.F0 != 0 ? Fa : NULL, "F", p.zeta > 0, 0);
+    return mm_vib_sdof_animate(res, &s, &p, t_end, T, p.zeta > 0 ? 35 : 24, 1, NULL, p.zeta > 0);
 }
 
 static const char *const references[] = {
@@ -303,18 +287,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_resonance = {
-    .id = "vib-resonance",
-    .chapter = 5,
-    .section = "5.9.6",
-    .title = "Resonance: growth, build-up and beats",
+    .id = "vib-resonance", .chapter = 5, .section = "5.9.6", .title = "Resonance: growth, build-up and beats",
     .summary = "Drive a mass-spring system at its natural frequency from rest: linear growth, damped build-up, beats.",
-    .tags = "vibration, 1 DOF, forced, resonance, beats, envelope",
-    .theory = "exercises/vib/resonance.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "vibration, 1 DOF, forced, resonance, beats, envelope", .theory = "exercises/vib/resonance.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

@@ -13,10 +13,10 @@
  * from an integration started on the steady orbit.
  * Reference: any vibrations text, e.g. S. S. Rao, Mechanical Vibrations, ch. 3.
  */
-#include <float.h>
 #include <math.h>
 
 #include "mm_exhelp.h"
+#include "mm_vib.h"
 
 enum { P_M, P_K, P_C, P_F0, P_OMEGA, P_X0, P_V0, P_TEND, P_POINTS, P_INTEGRATOR };
 
@@ -29,8 +29,7 @@ static const mm_param params[] = {
              .help = "spring force per metre of stretch; with m it sets omega_n between 3e-3 and 3e4 rad/s"},
     [P_C] = {"c", "damping coefficient", "N s/m", MM_REAL, 2, 0, 1e4,
              .help = "viscous damper force per m/s; c = 2 sqrt(k m) is critical damping"},
-    [P_F0] = {"F0", "force amplitude", "N", MM_REAL, 1, 0, 1e4,
-              .help = "amplitude of F0 cos(omega t), up to 10 kN"},
+    [P_F0] = {"F0", "force amplitude", "N", MM_REAL, 1, 0, 1e4, .help = "amplitude of F0 cos(omega t), up to 10 kN"},
     [P_OMEGA] = {"omega", "forcing frequency", "rad/s", MM_REAL, 8, 1e-3, 1e4,
                  .help = "angular frequency of the force, the range of omega_n; near omega_n the response peaks"},
     [P_X0] = {"x0", "initial displacement", "m", MM_REAL, 0, -10, 10,
@@ -55,8 +54,7 @@ static const mm_output outputs[] = {
     [O_ZETA] = MM_SCALAR("zeta", "damping ratio", "", .flags = MM_ANSWER | MM_EXACT),
     [O_X] = MM_SCALAR("X", "steady amplitude", "m", .flags = MM_ANSWER | MM_EXACT),
     [O_PHASE] = MM_SCALAR("phase", "phase lag", "rad", .flags = MM_ANSWER | MM_EXACT),
-    [O_MAGNIFICATION] = MM_SCALAR("magnification", "dynamic magnification X/(F0/k)", "",
-                                  .flags = MM_ANSWER | MM_EXACT),
+    [O_MAGNIFICATION] = MM_SCALAR("magnification", "dynamic magnification X/(F0/k)", "", .flags = MM_ANSWER | MM_EXACT),
     [O_R] = MM_SCALAR("r", "frequency ratio omega/omega_n", "", .flags = MM_EXACT),
     [O_REGIME] = MM_SCALAR("regime", "damping regime", "", .flags = MM_EXACT),
     [O_XT] = MM_SERIES("x", "displacement (closed form)", "m", "t", "s", .figure = "response"),
@@ -72,31 +70,7 @@ static mm_sdof model(const mm_value *in)
 static int check(const mm_value *in, mm_error *err)
 {
     mm_sdof s = model(in);
-    mm_sdof_props p;
-    mm_sdof_props_get(&s, &p);
-    if (p.resonant && s.F0 != 0)
-        return mm_error_set(err, MM_ERANGE, "omega",
-                            "omega = omega_n = %g rad/s with c = 0 has no steady state (the amplitude "
-                            "grows without bound); add damping or move omega (see vib-resonance)",
-                            p.omega_n);
-    return mm_ex_sdof_work_check(&s, in[P_TEND].x, err);
-}
-
-/* The mass on its spring and damper, with the force as an arrow: x(t) by
- * the closed form at each frame. */
-static int animate(const mm_sdof *s, const mm_sdof_props *p, double t_end, mm_result *res)
-{
-    double t_show;
-    int nf = mm_ex_anim_frames(t_end, 2 * M_PI / fmax(p->omega_n, s->omega), 35, &t_show);
-    double *t = mm_res_alloc(res, 3 * (size_t)nf * sizeof *t), *x = t + nf, *F = x + nf;
-    if (!t)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++) {
-        t[f] = t_show * f / (nf - 1);
-        F[f] = s->F0 * cos(s->omega * t[f]);
-    }
-    mm_sdof_x_many(s, p, nf, t, x);
-    return mm_ex_animate_oscillator(res, nf, t, x, NULL, s->F0 != 0 ? F : NULL, "F", 1, 0);
+    return mm_vib_sdof_check(&s, in[P_TEND].x, s.F0 != 0, "amplitude", err);   /* no steady state at resonance */
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -149,17 +123,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                                "terms' sizes)", worst_r, big, 16);
         /* the same measured: an integration started on the steady orbit, when
          * four forcing periods fit the work bound */
-        if (dop853 && 4 * M_PI / s.omega * mm_sdof_fastest_rate(&s, &p) <= MM_SDOF_MAX_RADIANS) {
-            double Xm, phm, Xe, phe;
-            rc = mm_ex_sdof_steady_measure(&s, &p, 2, p.phase, &Xm, &phm, &Xe, &phe, res, err);
-            if (rc != MM_OK)
-                return rc;
-            double rnd = mm_ex_roundoff(4 * M_PI, 1);         /* two periods of round-off */
-            mm_res_check_abs(res, "X: measured on the steady orbit vs eq. (4), within 10 times DOP853's error "
-                                  "estimated at rtol/10", Xm, p.X, 10 * Xe + rnd * p.X);
-            mm_res_check_abs(res, "phase: measured on the steady orbit vs eq. (4), within 10 times DOP853's "
-                                  "error estimated at rtol/10", phm, p.phase, 10 * phe + rnd);
-        }
+        if (dop853 && (rc = mm_vib_steady_check(res, &s, &p, p.X, 1, p.phase, "eq. (4)", err)) != MM_OK)
+            return rc;
     }
 
     mm_ex_warn_aliasing(res, n, t_end, fmax(p.omega_n, s.F0 != 0 ? s.omega : 0), "shorten t_end or raise points");
@@ -171,7 +136,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     else if (s.F0 != 0 && p.zeta < 0.2 && fabs(r - 1) < 0.05)
         mm_res_warn(res, "near resonance (omega/omega_n = %.3f) with little damping: "
                          "the transient lasts about 4/(zeta omega_n) = %.3g s", r, 4 / (p.zeta * p.omega_n));
-    return animate(&s, &p, t_end, res);
+    /* the mass on its spring and damper, with the force as an arrow */
+    return mm_vib_sdof_animate(res, &s, &p, t_end, 2 * M_PI / fmax(p.omega_n, s.omega), 35, 1, NULL, 1);
 }
 
 static const char *const references[] = {
@@ -181,18 +147,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_sdof_forced = {
-    .id = "vib-sdof-forced",
-    .chapter = 5,
-    .section = "5.9.2",
-    .title = "Forced vibration of a damped oscillator",
+    .id = "vib-sdof-forced", .chapter = 5, .section = "5.9.2", .title = "Forced vibration of a damped oscillator",
     .summary = "A mass on a spring and damper driven by F0 cos(omega t): transient, steady amplitude and phase lag.",
-    .tags = "vibration, 1 DOF, forced, damping, steady state",
-    .theory = "exercises/vib/sdof_forced.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "vibration, 1 DOF, forced, damping, steady state", .theory = "exercises/vib/sdof_forced.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .check = check, .solve = solve,
 };

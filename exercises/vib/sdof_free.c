@@ -7,15 +7,15 @@
  * regime (eq. 4 and its critical and overdamped forms, mm_sdof); DOP853
  * integrates eq. (1) beside it and its error is shown.  The energy balance
  * (5) is the second check: a third equation adds up the damper's work
- * during the integration, and it must equal what the closed form says the
- * block has lost.
+ * during the integration (mm_sdof_damper_work), and it must equal what the
+ * closed form says the block has lost.
  * Reference: S. S. Rao, Mechanical Vibrations, ch. 2.
  */
 #include <float.h>
 #include <math.h>
 
 #include "mm_exhelp.h"
-#include "mm_ode.h"
+#include "mm_vib.h"
 
 enum { P_M, P_K, P_C, P_X0, P_V0, P_TEND, P_POINTS };
 
@@ -41,8 +41,7 @@ enum { O_OMEGA_N, O_ZETA, O_OMEGA_D, O_REGIME, O_TD, O_LOGDEC, O_CCRIT, O_EDISS,
 static const mm_output outputs[] = {
     [O_OMEGA_N] = MM_SCALAR("omega_n", "natural frequency", "rad/s", .flags = MM_ANSWER | MM_EXACT),
     [O_ZETA] = MM_SCALAR("zeta", "damping ratio", "", .flags = MM_ANSWER | MM_EXACT),
-    [O_OMEGA_D] = MM_SCALAR("omega_d", "damped frequency (0: no oscillation)", "rad/s",
-                            .flags = MM_ANSWER | MM_EXACT),
+    [O_OMEGA_D] = MM_SCALAR("omega_d", "damped frequency (0: no oscillation)", "rad/s", .flags = MM_ANSWER | MM_EXACT),
     [O_REGIME] = MM_SCALAR("regime", "damping regime", "", .flags = MM_ANSWER | MM_EXACT),
     [O_TD] = MM_SCALAR("T_d", "damped period", "s", .flags = MM_EXACT),
     [O_LOGDEC] = MM_SCALAR("log_decrement", "logarithmic decrement", "", .flags = MM_EXACT),
@@ -64,32 +63,6 @@ static int check(const mm_value *in, mm_error *err)
 {
     mm_sdof s = model(in);
     return mm_ex_sdof_work_check(&s, in[P_TEND].x, err);
-}
-
-/* y = (x, v, D): D' = c v^2 is the work the damper has taken (eq. 5). */
-static int rhs_energy(double t, const double *y, double *dy, void *ctx)
-{
-    const mm_sdof *s = ctx;
-    mm_sdof_rhs(t, y, dy, ctx);
-    dy[2] = s->c * y[1] * y[1];
-    return 0;
-}
-
-/* The damper's work over [0, t_end] integrated with the motion (DOP853;
- * the absolute tolerance at rtol of the smallest scale of x, v and D). */
-static int damper_work(const mm_sdof *s, const mm_sdof_props *p, double t_end, double rtol,
-                       double *D, mm_error *err)
-{
-    double E0 = mm_sdof_energy(s, s->x0, s->v0), size = sqrt(2 * E0 / s->k);
-    double y0[3] = {s->x0, s->v0, 0}, y[3];
-    mm_ode_problem prob = {.n = 3, .f = rhs_energy, .params = (void *)s, .t_end = t_end, .y0 = y0};
-    mm_ode_options opt = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol * fmin(fmin(size, size * p->omega_n), E0),
-                                                 1000000);
-    opt.h_max = 1 / mm_sdof_fastest_rate(s, p);
-    mm_ode_result r = {.y_end = y};
-    int rc = mm_ode_run(&prob, &opt, &r, err);
-    *D = y[2];
-    return rc;
 }
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
@@ -124,8 +97,8 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
         D_exact = D_round = 0;                                /* no damper: nothing is lost */
     mm_res_scalar_err(res, O_EDISS, D_exact, D_round, MM_ERR_BOUND);
     double D = 0, Df = 0;                                      /* at rest: nothing to integrate */
-    if (E0 > 0 && ((rc = damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL, &D, err)) != MM_OK ||
-                   (rc = damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL / MM_EX_SDOF_REF, &Df, err)) != MM_OK))
+    if (E0 > 0 && ((rc = mm_sdof_damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL, &D, err)) != MM_OK ||
+                   (rc = mm_sdof_damper_work(&s, &p, t_end, MM_EX_SDOF_RTOL / MM_EX_SDOF_REF, &Df, err)) != MM_OK))
         return rc;
     double radians = t_end * mm_sdof_fastest_rate(&s, &p);
     mm_res_check_abs(res, "energy balance (5): damper work by DOP853 vs E(0) - E(t_end) of the closed form, "
@@ -136,16 +109,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                         "shorten t_end or raise points");
 
     /* the block moving, frames from the closed form */
-    double t_show;
-    int nf = mm_ex_anim_frames(t_end, 2 * M_PI / p.omega_n, 33, &t_show);
-    double *ta = mm_res_alloc(res, 2 * (size_t)nf * sizeof *ta), *xa = ta + nf;
-    if (!ta)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++) {
-        ta[f] = t_show * f / (nf - 1);
-        xa[f] = mm_sdof_x(&s, &p, ta[f], NULL);
-    }
-    return mm_ex_animate_oscillator(res, nf, ta, xa, NULL, NULL, NULL, 1, 0);
+    return mm_vib_sdof_animate(res, &s, &p, t_end, 2 * M_PI / p.omega_n, 33, 0, NULL, 1);
 }
 
 static const char *const references[] = {
@@ -155,18 +119,9 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_sdof_free = {
-    .id = "vib-sdof-free",
-    .chapter = 5,
-    .section = "5.9.1",
-    .title = "Free vibration of a damped oscillator",
+    .id = "vib-sdof-free", .chapter = 5, .section = "5.9.1", .title = "Free vibration of a damped oscillator",
     .summary = "A released mass on a spring and damper: under-, critically and overdamped motion.",
-    .tags = "vibration, 1 DOF, free, damping",
-    .theory = "exercises/vib/sdof_free.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .tags = "vibration, 1 DOF, free, damping", .theory = "exercises/vib/sdof_free.md", .params = params,
+    .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs), .references = references,
+    .check = check, .solve = solve,
 };

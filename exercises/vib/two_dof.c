@@ -140,17 +140,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_2dof = {
-    .id = "vib-2dof",
-    .chapter = 5,
-    .section = "5.10.1",
+    .id = "vib-2dof", .chapter = 5, .section = "5.10.1",
     .title = "Two degrees of freedom: natural frequencies and modes",
     .summary = "Two masses in a chain of three springs: two frequencies, two mode shapes, in phase and against.",
-    .tags = "vibration, 2 DOF, natural frequencies, mode shapes, eigenvalues",
-    .theory = "exercises/vib/two_dof.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .solve = solve,
+    .tags = "vibration, 2 DOF, natural frequencies, mode shapes, eigenvalues", .theory = "exercises/vib/two_dof.md",
+    .params = params, .n_params = MM_COUNT(params), .outputs = outputs, .n_outputs = MM_COUNT(outputs),
+    .references = references, .solve = solve,
 };

@@ -15,7 +15,6 @@
  * the coupled system's transition matrix, both to rounding.
  * Reference: S. S. Rao, Mechanical Vibrations, 6th ed., secs. 6.13-6.14.
  */
-#include <float.h>
 #include <math.h>
 
 #include "mm_exhelp.h"
@@ -109,35 +108,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     if ((rc = mm_vib_transient_run(res, 2, M, K, w, phi, c, m, x0, v0, F, W, h, t_end, (int)in[P_POINTS].x, &tr,
                                    err)))
         return rc;
-    mm_res_scalar_err(res, O_ERR, tr.err_max, tr.round_nm, MM_ERR_ESTIMATE);
-    mm_res_scalar_err(res, O_TRUNC, tr.trunc_max, tr.round, MM_ERR_ESTIMATE);
-    int ns = tr.ns;
-    static const int sid[3][2] = {{O_X1, O_X2}, {O_X1E, O_X2E}, {O_X1M, O_X2M}};
-    const double *src[3] = {tr.q_nm, tr.q_ex, tr.q_m};
-    for (int s = 0; s < (m < 2 ? 3 : 2); s++)
-        for (int i = 0; i < 2; i++) {
-            mm_series *se = mm_res_series(res, sid[s][i], ns);
-            if (!se)
-                return MM_ENOMEM;
-            for (int k = 0; k < ns; k++)
-                se->x[k] = tr.t[k], se->y[k] = src[s][2 * k + i];
-        }
+    static const int coord[2] = {0, 1}, sid[6] = {O_X1, O_X2, O_X1E, O_X2E, O_X1M, O_X2M};
+    if ((rc = mm_vib_transient_show(res, &tr, 2, h, O_ERR, O_TRUNC, 2, coord, sid, m < 2 ? 3 : 2)))
+        return rc;
     if (w[1] * h > 0.5)
         mm_res_warn(res, "omega2 h = %.3g: fewer than 13 steps per period of mode 2, whose period Newmark "
                          "lengthens by %.2g %%: reduce h", w[1] * h, 100 * period_error(w[1] * h));
-    mm_res_method(res, mm_newmark_method_name(MM_NEWMARK_AVERAGE), h);
-    mm_res_method_stat(res, "steps", (double)tr.steps);
 
     /* the exact motion, 16 frames a period of mode 2, within the budget */
-    double t_show, tf[MM_ANIM_MAX_FRAMES], q[2 * MM_ANIM_MAX_FRAMES];
-    int nf = mm_vib_frames(t_end, w[1] > 0 ? 2 * M_PI / w[1] : 0, 1500 / mm_vib_masses_numbers(2, K), &t_show);
-    mm_anim *a = mm_res_animation(res, nf, "t", "s");
-    if (!a)
-        return MM_ENOMEM;
-    for (int f = 0; f < nf; f++)
-        tf[f] = a->t[f] = t_show * f / (nf - 1);
-    mm_mdof_pulse g = {1, W, INFINITY};
-    if ((rc = mm_mdof_modal_response(2, 2, w, c, phi, 2, M, x0, v0, F, &g, nf, tf, q, err)))
+    int nf;
+    double *q;
+    if ((rc = mm_vib_modal_frames(res, 2, M, w, c, phi, x0, v0, F, W, t_end, w[1] > 0 ? 2 * M_PI / w[1] : 0,
+                                  1500 / mm_vib_masses_numbers(2, K), &nf, &q, err)))
         return rc;
     double big = mm_vib_big(q, 2 * (size_t)nf);
     return mm_vib_masses_draw(res, 2, K, nf, q, 4 * big);
@@ -150,18 +132,10 @@ static const char *const references[] = {
 };
 
 const mm_exercise mm_ex_vib_2dof_transient = {
-    .id = "vib-2dof-transient",
-    .chapter = 5,
-    .section = "5.10.2",
+    .id = "vib-2dof-transient", .chapter = 5, .section = "5.10.2",
     .title = "The transient of two degrees of freedom: modes against steps",
     .summary = "Two masses set moving: modal superposition (exact) beside Newmark's direct integration.",
     .tags = "vibration, 2 DOF, transient, modal superposition, Newmark, truncation",
-    .theory = "exercises/vib/two_dof_transient.md",
-    .params = params,
-    .n_params = MM_COUNT(params),
-    .outputs = outputs,
-    .n_outputs = MM_COUNT(outputs),
-    .references = references,
-    .check = check,
-    .solve = solve,
+    .theory = "exercises/vib/two_dof_transient.md", .params = params, .n_params = MM_COUNT(params), .outputs = outputs,
+    .n_outputs = MM_COUNT(outputs), .references = references, .check = check, .solve = solve,
 };
