@@ -442,7 +442,7 @@ static void every_statics_answer_should_draw_one_frame_of_allowed_shapes(void **
             fail_msg("%s: a free-body diagram without a force", ex->id);
         cJSON_Delete(d);
     }
-    assert_int_equal(n, 16);
+    assert_true(n >= 16);                   /* the catalog's 16 at least: the loop ran; more may come */
 }
 
 int main(void)
