@@ -80,6 +80,10 @@ FUZZ_SECONDS ?= 60
 
 ALL_OBJ := $(call obj,$(SOLVER_SRC) $(EX_SRC) $(SERVER_SRC) $(SERVER_CXX) server/main.c)
 
+# object files are never removed as intermediates (a test's .o, made on the
+# way to its binary, would be rebuilt by the next make)
+.SECONDARY:
+
 .PHONY: all run test asan bench deps flags clean tests loadtest fuzz fuzz-bins valgrind tsan install \
         failover fuzz-long a11y ref answers
 .DEFAULT_GOAL := all

@@ -5,7 +5,16 @@
  * For refactoring: `make answers` before and after, then diff.
  *
  *   build/tools/answers [-n 20] [id ...] > answers.txt
+ *
+ * With --checks, a tolerance study for whoever writes an exercise: over the
+ * defaults and N draws, each check's worst use of its tolerance (its error
+ * over its tolerance; 1 is the edge) and the request it was seen at, and
+ * the draws that were refused or failed:
+ *
+ *   build/tools/answers --checks -n 400 sta-ladder
  */
+#include <cJSON.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +38,67 @@ static void blank(char *s, const char *key)
     }
 }
 
+/* the --checks study: worst use of each check's tolerance */
+#define MAX_CHECKS 256
+typedef struct study {
+    int n, runs, failed;
+    char name[MAX_CHECKS][160], at[MAX_CHECKS][1024];
+    double worst[MAX_CHECKS];
+} study;
+
+static void query_text(const mm_input *in, int n, char *out, size_t size)
+{
+    out[0] = '\0';
+    for (int k = 0; k < n; k++) {
+        size_t l = strlen(out);
+        snprintf(out + l, size - l, "%s%.*s=%.*s", k ? "&" : "", (int)in[k].name_len, in[k].name,
+                 (int)in[k].text_len, in[k].text);
+    }
+}
+
+static void learn(study *st, const mm_exercise *ex, const mm_input *in, int n)
+{
+    mm_buf out;
+    mm_buf_init(&out, MM_ANSWER_MAX);
+    int status = mm_api_solve(ex, in, n, &out);
+    char q[1024];
+    query_text(in, n, q, sizeof q);
+    cJSON *doc = cJSON_Parse(out.p ? out.p : "");
+    mm_buf_free(&out);
+    st->runs++;
+    if (status != 200 || !doc) {
+        st->failed++;
+        printf("   status %d at %s\n", status, n ? q : "the defaults");
+        cJSON_Delete(doc);
+        return;
+    }
+    const cJSON *c;
+    cJSON_ArrayForEach(c, cJSON_GetObjectItem(doc, "checks")) {
+        const char *name = cJSON_GetStringValue(cJSON_GetObjectItem(c, "name"));
+        double e = cJSON_GetNumberValue(cJSON_GetObjectItem(c, "abs_error"));
+        double tol = cJSON_GetNumberValue(cJSON_GetObjectItem(c, "tolerance"));
+        const char *kind = cJSON_GetStringValue(cJSON_GetObjectItem(c, "tolerance_kind"));
+        if (kind && strcmp(kind, "relative") == 0)
+            tol *= fabs(cJSON_GetNumberValue(cJSON_GetObjectItem(c, "reference")));
+        double use = tol > 0 ? e / tol : (e > 0 ? INFINITY : 0);
+        if (!cJSON_IsTrue(cJSON_GetObjectItem(c, "passed")))
+            printf("   FAILED %s at %s\n", name ? name : "?", n ? q : "the defaults");
+        int k = 0;
+        while (k < st->n && strcmp(st->name[k], name ? name : "?") != 0)
+            k++;
+        if (k == st->n && st->n < MAX_CHECKS) {
+            snprintf(st->name[k], sizeof st->name[k], "%s", name ? name : "?");
+            st->worst[k] = -1;
+            st->n++;
+        }
+        if (k < st->n && (use > st->worst[k] || isnan(use))) {
+            st->worst[k] = use;
+            snprintf(st->at[k], sizeof st->at[k], "%s", n ? q : "the defaults");
+        }
+    }
+    cJSON_Delete(doc);
+}
+
 static void one(const mm_exercise *ex, const mm_input *in, int n, const char *label)
 {
     mm_buf out;
@@ -44,12 +114,15 @@ static void one(const mm_exercise *ex, const mm_input *in, int n, const char *la
 
 int main(int argc, char **argv)
 {
-    int n = 20, first = 1;
-    if (argc > 2 && strcmp(argv[1], "-n") == 0) {
-        n = atoi(argv[2]);
-        first = 3;
+    int n = 20, first = 1, checks = 0;
+    if (argc > first && strcmp(argv[first], "--checks") == 0)
+        checks = 1, first++;
+    if (argc > first + 1 && strcmp(argv[first], "-n") == 0) {
+        n = atoi(argv[first + 1]);
+        first += 2;
     }
     static mm_draw_set set;
+    static study st;
     for (int e = 0; e < mm_exercise_count; e++) {
         const mm_exercise *ex = mm_exercises[e];
         if (first < argc) {
@@ -59,7 +132,12 @@ int main(int argc, char **argv)
             if (!want)
                 continue;
         }
-        one(ex, NULL, 0, "defaults");
+        if (checks) {
+            memset(&st, 0, sizeof st);
+            printf("%s: every check's worst error / tolerance over the defaults and %d draws\n", ex->id, n);
+            learn(&st, ex, NULL, 0);
+        } else
+            one(ex, NULL, 0, "defaults");
         mm_rng g;
         mm_rng_seed(&g, mm_draw_seed("answers", ex->id));
         for (int i = 0; i < n; i++) {
@@ -70,8 +148,15 @@ int main(int argc, char **argv)
                 printf("%s %s refused %s\n", ex->id, label, err.msg);
                 continue;
             }
-            one(ex, set.in, set.n, label);
+            if (checks)
+                learn(&st, ex, set.in, set.n);
+            else
+                one(ex, set.in, set.n, label);
         }
+        for (int k = 0; checks && k < st.n; k++)
+            printf("   %8.3g  %s\n            at %s\n", st.worst[k], st.name[k], st.at[k]);
+        if (checks)
+            printf("   %d answers, %d not 200\n", st.runs, st.failed);
     }
     return 0;
 }

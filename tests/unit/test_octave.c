@@ -8,7 +8,8 @@
  *   - the expression translation (muParser -> vectorised MATLAB) gives the
  *     same numbers as mm_expr at many points.
  * All scripts of a run go to one Octave process (start-up costs 0.3 s).
- * MM_SEED overrides the draws' seed. */
+ * MM_SEED overrides the draws' seed; MM_ONLY=id,id runs just those
+ * exercises' scripts (while one is written). */
 #include "mm_test.h"
 
 #include <cJSON.h>
@@ -368,6 +369,20 @@ static int agrees(const cJSON *scalar, const char *output, const run *r)
     return 1;
 }
 
+/* Is id one of the comma-separated ids of list? */
+static int listed(const char *list, const char *id)
+{
+    size_t n = strlen(id);
+    for (const char *p = list; *p;) {
+        const char *e = strchr(p, ',');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        if (len == n && strncmp(p, id, n) == 0)
+            return 1;
+        p += len + (e != NULL);
+    }
+    return 0;
+}
+
 static void every_script_should_reproduce_the_answer_in_octave(void **state)
 {
     (void)state;
@@ -377,8 +392,11 @@ static void every_script_should_reproduce_the_answer_in_octave(void **state)
     mm_buf drv;
     mm_buf_init(&drv, 1 << 20);
     mm_buf_puts(&drv, "files = {");
+    const char *only = getenv("MM_ONLY");          /* "id,id": just these exercises (while writing one) */
     for (int i = 0; i < mm_exercise_count; i++) {
         const mm_exercise *ex = mm_exercises[i];
+        if (only && !listed(only, ex->id))
+            continue;
         char path[512];
         snprintf(path, sizeof path, "%.*sm", (int)strlen(ex->theory) - 2, ex->theory);
         char *body = slurp(path);
