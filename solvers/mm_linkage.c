@@ -52,6 +52,9 @@ void mm_linkage_fb_angles(const mm_fourbar *m, double th2, int side, double *th3
         ys[1] = -B, xs[1] = 2 * A;
     double Bx = a * c2, By = a * s2, best = -INFINITY, y = 0, x = 1;
     int kb = 0;
+    /* no root at all: A = B = C = 0, B on O4 with b = c (a rhombus at
+     * th2 = 0), where every th4 closes the loop; 0 is taken (y = 0, x = 1) */
+    *th4 = 0;
     for (int k = 0; k < 2; k++) {
         if (ys[k] == 0 && xs[k] == 0)
             continue;
@@ -229,11 +232,24 @@ double mm_linkage_fb_mu(const mm_fourbar *m, double th2)
 /* the Freudenstein root of either side nearest q (the assembly a sweep
  * keeps, which past a change point is the other label's): f = (th3, th4),
  * *err their rounding bound */
+/* A = B = C = 0 in Freudenstein's equation: B on O4 and b = c, so that
+ * every th4 (and its th3) closes the loop */
+static int fb_every_th4(const mm_fourbar *m, double th2)
+{
+    double a = m->a, b = m->b, c = m->c, d = m->d, c2 = cos(th2), s2 = sin(th2);
+    double K1 = d / a, K2 = d / c, K3 = (a * a - b * b + c * c + d * d) / (2 * a * c);
+    return c2 - K1 - K2 * c2 + K3 == 0 && s2 == 0 && K1 - (K2 + 1) * c2 + K3 == 0;
+}
+
 void mm_linkage_fb_nearest(const mm_fourbar *m, double th2, const double *q, double *f, double *err)
 {
     double g3, g4, h3, h4, ge, he;
     mm_linkage_fb_angles(m, th2, 1, &g3, &g4, &ge);
     mm_linkage_fb_angles(m, th2, -1, &h3, &h4, &he);
+    if (fb_every_th4(m, th2)) {          /* every assembly closes: q is one of them */
+        f[0] = q[0], f[1] = q[1], *err = ge;
+        return;
+    }
     int near1 = fabs(wrap(q[1] - g4)) + fabs(wrap(q[0] - g3)) <= fabs(wrap(q[1] - h4)) + fabs(wrap(q[0] - h3));
     f[0] = near1 ? g3 : h3, f[1] = near1 ? g4 : h4, *err = near1 ? ge : he;
 }

@@ -39,7 +39,9 @@ typedef struct mm_fourbar_class {
 double mm_linkage_fb_disc(const mm_fourbar *m, double th2);
 
 /* theta3, theta4 of the assembly side at th2 by Freudenstein's equation
- * (the stable root form); *err (may be NULL): a bound of their rounding */
+ * (the stable root form); *err (may be NULL): a bound of their rounding.
+ * Where every theta4 closes the loop (B on O4 with b = c: a rhombus at
+ * th2 = 0) theta4 = 0 is taken. */
 void mm_linkage_fb_angles(const mm_fourbar *m, double th2, int side, double *th3, double *th4, double *err);
 
 /* omega3, omega4, alpha3, alpha4 per unit crank rate (omega2 = 1) */

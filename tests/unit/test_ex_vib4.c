@@ -80,11 +80,6 @@ static const cJSON *check_named(const cJSON *doc, const char *text)
     return NULL;
 }
 
-static double elapsed_ms(const cJSON *doc)
-{
-    return cJSON_GetObjectItem(doc, "elapsed_us")->valuedouble / 1e3;
-}
-
 /* ---- vib-2dof ------------------------------------------------------------------ */
 
 static void two_dof_should_give_mass_normalised_modes_with_phi1_positive(void **state)
@@ -229,10 +224,10 @@ static void beam_modes_should_find_the_tabulated_roots_and_h4(void **state)
     cJSON_Delete(d);
 }
 
-/* A 1000-element beam answers; the budget (250 ms) is measured by make
- * bench on a quiet machine, here only a loose bound (the tests share two
- * cores with seven other builds). */
-static void beam_of_1000_elements_should_answer_in_time(void **state)
+/* A 1000-element beam answers, and right.  How long it takes (the budget
+ * is 250 ms) is measured by make bench (bench_limits), not here: a timed
+ * assertion failed under valgrind and would on any slow machine. */
+static void beam_of_1000_elements_should_answer(void **state)
 {
     (void)state;
     cJSON *d = solve_ok("vib-beam-modes", "elements=1000");
@@ -240,7 +235,6 @@ static void beam_of_1000_elements_should_answer_in_time(void **state)
     /* the discretisation error is 1e-15 here; Lanczos with Rayleigh
      * quotients keeps the rounding near 3e-13 (bench_fem) */
     check_rel(scalar(d, "omega1"), scalar(d, "omega1_exact"), 1e-11, "1000 elements");
-    assert_true(elapsed_ms(d) < 2000);
     cJSON_Delete(d);
     /* 30 modes: Lanczos still, as accurate, and so no warning of rounding
      * (the banded solver's n^4 eps, which it had before) */
@@ -250,7 +244,6 @@ static void beam_of_1000_elements_should_answer_in_time(void **state)
     assert_false(warned(d, "rounding"));
     cJSON_Delete(d);
     d = solve_ok("vib-beam-transient", "elements=1000&h=1e-4&t_end=0.02&modes=20");
-    assert_true(elapsed_ms(d) < 3000);
     cJSON_Delete(d);
 }
 
@@ -369,7 +362,7 @@ int main(void)
         cmocka_unit_test(chain_of_1000_masses_should_stay_within_n_squared_eps),
         cmocka_unit_test(bar_modes_should_leave_the_rigid_mode_out_and_converge_like_h2),
         cmocka_unit_test(beam_modes_should_find_the_tabulated_roots_and_h4),
-        cmocka_unit_test(beam_of_1000_elements_should_answer_in_time),
+        cmocka_unit_test(beam_of_1000_elements_should_answer),
         cmocka_unit_test(bar_wave_should_be_exact_at_the_courant_limit_and_refuse_above),
         cmocka_unit_test(sudden_load_should_nearly_double_the_static_deflection),
         cmocka_unit_test(stiffly_damped_modes_should_stay_exact_under_a_fast_load),

@@ -45,6 +45,29 @@ static void freudenstein_should_close_the_loop_on_the_side_asked(void **state)
             }
 }
 
+static void a_rhombus_folded_flat_should_take_any_assembly_deterministically(void **state)
+{
+    (void)state;
+    /* a = b = c = d at th2 = 0: B lies on O4 and every theta4 closes the
+     * loop (A = B = C = 0).  Both roots were skipped and theta4 was read
+     * uninitialised (valgrind, kin-four-bar's rhombus test); now theta4 = 0,
+     * theta3 = 0 (the coupler along the frame), and the nearest root is the
+     * sweep's own angles */
+    const mm_fourbar m = {1, 1, 1, 1};
+    double t3 = 9, t4 = 9, e;
+    for (int side = -1; side <= 1; side += 2) {
+        mm_linkage_fb_angles(&m, 0, side, &t3, &t4, &e);
+        assert_true(t4 == 0 && t3 == 0);
+    }
+    double q[2] = {0.3, 1.2}, f[2];
+    mm_linkage_fb_nearest(&m, 0, q, f, &e);
+    assert_true(f[0] == q[0] && f[1] == q[1]);
+    /* a hair away it is a linkage again: B = (cos h, sin h) and C on the circle about O4 */
+    mm_linkage_fb_angles(&m, 1e-3, 1, &t3, &t4, &e);
+    double Bx = cos(1e-3), By = sin(1e-3), Cx = 1 + cos(t4), Cy = sin(t4);
+    check_abs(hypot(Cx - Bx, Cy - By), 1, 1e-12, "|BC| = b");
+}
+
 static void the_rates_should_be_the_derivatives_of_the_angles(void **state)
 {
     (void)state;
@@ -230,6 +253,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(freudenstein_should_close_the_loop_on_the_side_asked),
+        cmocka_unit_test(a_rhombus_folded_flat_should_take_any_assembly_deterministically),
         cmocka_unit_test(the_rates_should_be_the_derivatives_of_the_angles),
         cmocka_unit_test(grashof_should_name_the_five_classes_and_the_change_point),
         cmocka_unit_test(a_rocking_crank_should_reach_exactly_to_its_toggles),
