@@ -32,7 +32,9 @@ install -m 755 "$bin" "$destdir$prefix/bin/mechmat-server"
 
 rm -rf "$share/web" "$share/exercises" "$share/node_modules" "$share/deploy"
 # web/: text files with the version in place
-(cd web && find . -type f ! -name '.*' -print0) | while IFS= read -r -d '' f; do
+# (not the developers' notes, web/**/*.md: they are no page, and they name
+# the version token in their text)
+(cd web && find . -type f ! -name '.*' ! -name '*.md' -print0) | while IFS= read -r -d '' f; do
   install -d "$share/web/$(dirname "$f")"
   case "$f" in
     *.html|*.js|*.mjs|*.css) sed "s/__MM_ASSET_VERSION__/$version/g" "web/$f" > "$share/web/$f"
