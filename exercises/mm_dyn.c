@@ -265,109 +265,6 @@ double mm_dyn_extreme_error(const double *v, int n, int i)
 }
 
 
-/* ---- dyn-pendulum: the closed form ----------------------------------------- */
-
-
-/* sin theta with the top exact: theta = pi (the double nearest pi, as the
- * parameter reads it) is the inverted equilibrium, sin = 0. */
-double mm_dyn_sin_top(double th)
-{
-    double r = th - 2 * M_PI * nearbyint(th / (2 * M_PI));   /* r in [-pi, pi] */
-    if (r > M_PI_2)
-        return sin(M_PI - r);
-    if (r < -M_PI_2)
-        return -sin(M_PI + r);
-    return sin(r);
-}
-
-/* The exact theta(t) and theta'(t) (eqs. 4 and 6). */
-double mm_dyn_pend_exact(const mm_dyn_pend *p, double t, double *w)
-{
-    double sn, cn, dn, am;
-    switch (p->motion) {
-    case MM_DYN_SWING:
-        mm_elliptic_jacobi(p->wn * t + p->u0, p->k, p->kc, &sn, &cn, &dn, NULL);
-        *w = 2 * p->k * p->wn * cn;
-        return 2 * atan2(p->k * sn, dn);       /* sin(theta/2) = k sn, cos(theta/2) = dn */
-    case MM_DYN_SEPARATRIX:
-        if (p->omega0 == 0) {
-            *w = 0;
-            return M_PI;
-        }
-        /* with a push: the limit k = 1 of the rotation formula */
-        /* fall through */
-    default:
-        mm_elliptic_jacobi(p->sg * p->kk * p->wn * t + p->u0, p->k, p->kc, &sn, &cn, &dn, &am);
-        *w = 2 * p->sg * p->kk * p->wn * dn;
-        return 2 * am;
-    }
-}
-
-mm_dyn_pend mm_dyn_pend_init(double L, double g, double theta0, double omega0)
-{
-    mm_dyn_pend p = {.L = L, .g = g, .theta0 = theta0, .omega0 = omega0};
-    p.wn = sqrt(p.g / p.L);
-    p.T0 = 2 * M_PI / p.wn;
-    double s = sin(0.5 * p.theta0);
-    double c = p.theta0 == M_PI ? 0 : cos(0.5 * p.theta0);   /* the top exactly */
-    double a = fabs(p.omega0) / (2 * p.wn);
-    /* eq. (3): k^2 = sin^2(theta0/2) + (omega0 / (2 wn))^2, kc^2 = 1 - k^2 */
-    double kc2 = (c - a) * (c + a);
-    if (kc2 > 0) {
-        p.motion = MM_DYN_SWING;
-        p.kc = sqrt(kc2);
-        p.k = sqrt(s * s + a * a);
-        p.T = 4 * mm_elliptic_Kc(p.kc) / p.wn;                       /* eq. (5) */
-        /* sn(u0) = sin(theta0/2)/k, cn(u0) = omega0/(2 k wn): u0 = F(phi0) */
-        p.u0 = mm_elliptic_F(atan2(s, p.omega0 / (2 * p.wn)), p.k, p.kc);
-    } else if (kc2 == 0 && p.omega0 == 0) {
-        p.motion = MM_DYN_SEPARATRIX;                                        /* at rest on the top */
-        p.T = INFINITY;
-        p.k = 1;
-    } else {
-        /* over the top (or on the separatrix with a push): theta/2 = am(sg kk wn t + u0, 1/kk) */
-        p.motion = kc2 == 0 ? MM_DYN_SEPARATRIX : MM_DYN_OVER;
-        p.kk = sqrt(s * s + a * a);
-        p.k = 1 / p.kk;
-        p.kc = sqrt(-kc2) / p.kk;
-        p.sg = p.omega0 >= 0 ? 1 : -1;
-        p.T = p.kc > 0 ? 2 * mm_elliptic_Kc(p.kc) / (p.kk * p.wn) : INFINITY;   /* eq. (7) */
-        p.u0 = mm_elliptic_F(0.5 * p.theta0, p.k, p.kc);
-    }
-    return p;
-}
-
-/* Energy per unit m L^2: theta'^2 / 2 + wn^2 (1 - cos theta), written with
- * 2 sin^2(theta/2) so that it keeps its digits near the bottom. */
-double mm_dyn_pend_energy(const mm_dyn_pend *p, double th, double w)
-{
-    double s = sin(0.5 * th);
-    return 0.5 * w * w + 2 * p->wn * p->wn * s * s;
-}
-
-/* The period (eqs. 5 and 7) as a function of the distance d = |E - Es| of
- * the energy per unit m L^2 from the separatrix's Es = 2 g/L, on the side
- * the motion is on. */
-static double period_of_distance(const mm_dyn_pend *p, double d)
-{
-    double Es = 2 * p->wn * p->wn;
-    if (p->motion == MM_DYN_SWING)
-        return 4 * mm_elliptic_Kc(sqrt(d / Es)) / p->wn;
-    double E = Es + d;
-    return 2 * mm_elliptic_Kc(sqrt(d / E)) / (sqrt(E / Es) * p->wn);
-}
-
-/* |dT/dE| by a central difference in d, relative step 1e-4 (accurate to
- * ~1e-8 relative: it only sizes a tolerance).  d comes from kc, which
- * keeps its digits right up to the separatrix. */
-double mm_dyn_pend_period_sensitivity(const mm_dyn_pend *p)
-{
-    double Es = 2 * p->wn * p->wn;
-    double d = p->motion == MM_DYN_SWING ? Es * p->kc * p->kc : Es * p->kk * p->kk * p->kc * p->kc, h = 1e-4;
-    return fabs(period_of_distance(p, d * (1 + h)) - period_of_distance(p, d * (1 - h))) / (2 * h * d);
-}
-
-
 /* ---- dyn-double-pendulum ---------------------------------------------------- */
 
 /* The fastest rate of the motion [1/s]: the fast small-oscillation
@@ -603,7 +500,7 @@ int mm_dyn_plan_animate(const mm_dyn_plan *p, mm_result *res)
     return MM_OK;
 }
 
-int mm_dyn_pend_animate(const mm_dyn_pend *p, double t_end, int n, const double *t, const double *th,
+int mm_dyn_pend_animate(const mm_pendulum_motion *p, double t_end, int n, const double *t, const double *th,
                         mm_result *res)
 {
     double t_show;
@@ -635,7 +532,7 @@ int mm_dyn_pend_animate(const mm_dyn_pend *p, double t_end, int n, const double 
     }
     bob->radius = 0.06 * L;
     for (int f = 0; f < nf; f++) {
-        double w, a0 = mm_dyn_pend_exact(p, a->t[f], &w);    /* frames between grid points: the closed form */
+        double w, a0 = mm_pendulum_exact(p, a->t[f], &w);    /* frames between grid points: the closed form */
         double x = L * sin(a0), y = -L * cos(a0);
         rod->x[2 * f] = 0, rod->y[2 * f] = 0;
         rod->x[2 * f + 1] = x, rod->y[2 * f + 1] = y;
@@ -903,11 +800,11 @@ int mm_dyn_plan_stretched(const mm_dyn_plan *p, double *t_s, double *err_ts, mm_
  * 2 pi, where |theta'| is largest), each located by one Newton step from
  * the integrated state at the closed form's prediction.  Half a period
  * apart for a swing, a whole one for a turn over the top. */
-int mm_dyn_pend_measure_period(const mm_dyn_pend *p, mm_ode_rhs f, double rtol, double h_max, mm_result *res,
+int mm_dyn_pend_measure_period(const mm_pendulum_motion *p, mm_ode_rhs f, double rtol, double h_max, mm_result *res,
                                double *Tm, double *dE, mm_error *err)
 {
     double K = mm_elliptic_Kc(p->kc), ta, tb, target_a, target_b, half;
-    if (p->motion == MM_DYN_SWING) {
+    if (p->motion == MM_PENDULUM_SWING) {
         ta = (2 * K - p->u0) / p->wn;               /* u = 2K: sn = 0 */
         half = 2 * K / p->wn;                       /* T/2 */
         target_a = target_b = 0;
@@ -925,9 +822,9 @@ int mm_dyn_pend_measure_period(const mm_dyn_pend *p, mm_ode_rhs f, double rtol, 
     if (rc != MM_OK)
         return rc;
     double ca = ta - (x[0] - target_a) / v[0], cb = tb - (x[1] - target_b) / v[1];
-    *Tm = (cb - ca) * (p->motion == MM_DYN_SWING ? 2 : 1);
-    double E0 = mm_dyn_pend_energy(p, p->theta0, p->omega0);
-    *dE = fmax(fabs(mm_dyn_pend_energy(p, x[0], v[0]) - E0), fabs(mm_dyn_pend_energy(p, x[1], v[1]) - E0));
+    *Tm = (cb - ca) * (p->motion == MM_PENDULUM_SWING ? 2 : 1);
+    double E0 = mm_pendulum_energy(p, p->theta0, p->omega0);
+    *dE = fmax(fabs(mm_pendulum_energy(p, x[0], v[0]) - E0), fabs(mm_pendulum_energy(p, x[1], v[1]) - E0));
     return MM_OK;
 }
 

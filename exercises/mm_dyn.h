@@ -8,6 +8,7 @@
 #include "mm_exercise.h"
 #include "mm_multibody.h"
 #include "mm_ode.h"
+#include "mm_pendulum.h"
 #include "mm_symplectic.h"
 
 /* The decimal quantum of an animation drawn to the size `size` [m]: the
@@ -112,39 +113,7 @@ double mm_dyn_extreme_error(const double *v, int n, int i);
 double mm_dyn_sc_energy_bound(const mm_slider_crank *s, const double *q, const double *qd, const double *qr,
                               const double *qdr, double tol_ref, double *bJ);
 
-/* ---- dyn-pendulum: the exact motion of the plane pendulum (pendulum.md) ----- */
-
-/* The kinds of motion; the fields of the closed form (eqs. 3-7). */
-enum { MM_DYN_SWING = 0, MM_DYN_SEPARATRIX = 1, MM_DYN_OVER = 2 };
-typedef struct mm_dyn_pend {
-    double L, g, wn;        /* wn = sqrt(g/L) */
-    double theta0, omega0;
-    int motion;
-    double k, kc;           /* SWING: modulus and its complement; OVER: of 1/k */
-    double kk;              /* OVER: the energy modulus k > 1 (kc, k then of 1/kk) */
-    double u0;              /* argument of the Jacobi functions at t = 0 */
-    double sg;              /* OVER: direction of the rotation */
-    double T, T0;           /* period (INFINITY on the separatrix), small-angle period */
-} mm_dyn_pend;
-
-/* The closed form of the pendulum of length L under g started at theta0
- * with speed omega0: the motion, its moduli and period.  Cannot fail. */
-mm_dyn_pend mm_dyn_pend_init(double L, double g, double theta0, double omega0);
-
-/* The exact theta(t), and theta'(t) in *w (eqs. 4 and 6).  Cannot fail. */
-double mm_dyn_pend_exact(const mm_dyn_pend *p, double t, double *w);
-
-/* sin theta, exactly 0 at theta = pi (the double nearest pi as the
- * parameter reads it: the inverted equilibrium).  Cannot fail. */
-double mm_dyn_sin_top(double th);
-
-/* Energy per unit m L^2: theta'^2 / 2 + wn^2 (1 - cos theta), keeping its
- * digits near the bottom.  Cannot fail. */
-double mm_dyn_pend_energy(const mm_dyn_pend *p, double th, double w);
-
-/* |dT/dE|, the period's sensitivity to the energy per unit m L^2, by a
- * central difference (~1e-8 relative: it sizes a tolerance).  Cannot fail. */
-double mm_dyn_pend_period_sensitivity(const mm_dyn_pend *p);
+/* ---- dyn-pendulum: its exact motion is mm_pendulum's (solvers/) -------------- */
 
 /* The period of p measured from an integration of f (its equation of
  * motion, ctx p) by DOP853 at rtol with steps up to h_max, where it is well
@@ -154,7 +123,7 @@ double mm_dyn_pend_period_sensitivity(const mm_dyn_pend *p);
  * half a period apart for a swing, a whole one for a turn over the top.
  * *dE receives the larger energy error of the two states.  Not on the
  * separatrix.  Returns MM_OK or the integrator's code with err filled. */
-int mm_dyn_pend_measure_period(const mm_dyn_pend *p, mm_ode_rhs f, double rtol, double h_max, mm_result *res,
+int mm_dyn_pend_measure_period(const mm_pendulum_motion *p, mm_ode_rhs f, double rtol, double h_max, mm_result *res,
                                double *Tm, double *dE, mm_error *err);
 
 /* The period against the amplitude, eq. (5): T / T0 (mm_pendulum) as the
@@ -167,7 +136,7 @@ int mm_dyn_pend_period_curve(mm_result *res, int curve, int series);
  * period, the shorter of T and T0), each frame by the closed form, with the
  * bob's path from the n integrated angles th at the times t (at most 360
  * points).  Returns MM_OK or MM_ENOMEM. */
-int mm_dyn_pend_animate(const mm_dyn_pend *p, double t_end, int n, const double *t, const double *th,
+int mm_dyn_pend_animate(const mm_pendulum_motion *p, double t_end, int n, const double *t, const double *th,
                         mm_result *res);
 
 /* ---- dyn-double-pendulum ------------------------------------------------------ */

@@ -77,22 +77,22 @@ static const char *const motion_names[] = {"swinging", "separatrix", "over the t
 
 /* ---- the model and its closed form ------------------------------------------- */
 
-static mm_dyn_pend model(const mm_value *in)
+static mm_pendulum_motion model(const mm_value *in)
 {
-    return mm_dyn_pend_init(in[P_L].x, in[P_G].x, in[P_THETA0].x, in[P_OMEGA0].x);
+    return mm_pendulum_motion_init(in[P_L].x, in[P_G].x, in[P_THETA0].x, in[P_OMEGA0].x);
 }
 
 static int rhs(double t, const double *y, double *dy, void *ctx)
 {
     (void)t;
-    const mm_dyn_pend *p = ctx;
+    const mm_pendulum_motion *p = ctx;
     dy[0] = y[1];
-    dy[1] = -p->wn * p->wn * mm_dyn_sin_top(y[0]);                /* eq. (1) */
+    dy[1] = -p->wn * p->wn * mm_pendulum_sin_top(y[0]);                /* eq. (1) */
     return 0;
 }
 
 /* The fastest rate of the motion [1/s]: wn, and the largest |theta'|. */
-static double rate(const mm_dyn_pend *p)
+static double rate(const mm_pendulum_motion *p)
 {
     double a = fabs(p->omega0) / (2 * p->wn), s = sin(0.5 * p->theta0);
     return p->wn * fmax(1, 2 * sqrt(s * s + a * a));
@@ -114,7 +114,7 @@ static double rate(const mm_dyn_pend *p)
 
 static int check(const mm_value *in, mm_error *err)
 {
-    mm_dyn_pend p = model(in);
+    mm_pendulum_motion p = model(in);
     double t_end = in[P_TEND].x, r = rate(&p);
     if (t_end * r > MAX_RADIANS)
         return mm_error_set(err, MM_ERANGE, "t_end",
@@ -128,7 +128,7 @@ static int check(const mm_value *in, mm_error *err)
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
-    mm_dyn_pend p = model(in);
+    mm_pendulum_motion p = model(in);
     double t_end = in[P_TEND].x;
     int n = (int)in[P_POINTS].x;
 
@@ -146,10 +146,10 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             mm_res_warn(res, "this push lands exactly on the separatrix: the bob creeps up to the top and "
                              "takes forever to arrive");
     }
-    if (p.motion == MM_DYN_SWING)
+    if (p.motion == MM_PENDULUM_SWING)
         mm_res_scalar(res, O_AMPL, 2 * asin(fmin(p.k, 1)));
-    mm_res_scalar(res, O_K, p.motion == MM_DYN_OVER ? p.kk : p.k);
-    if (p.motion == MM_DYN_SWING && p.kc < 1e-3)
+    mm_res_scalar(res, O_K, p.motion == MM_PENDULUM_OVER ? p.kk : p.k);
+    if (p.motion == MM_PENDULUM_SWING && p.kc < 1e-3)
         mm_res_warn(res, "the swing reaches within %.2g rad of the top: near the separatrix the period "
                          "grows like 4 ln(8/kc) / omega_n (kc = %.3g), and the integrator's tiny energy "
                          "errors decide the timing more and more", 2 * asin(p.kc), p.kc);
@@ -187,13 +187,13 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_res_method_stat(res, "evaluations", (double)r.n_eval);
 
     /* checks: the energy, then the trajectory against the exact solution */
-    double worst = 0, drift = 0, E0 = mm_dyn_pend_energy(&p, p.theta0, p.omega0), big = 0, wmax = 0;
+    double worst = 0, drift = 0, E0 = mm_pendulum_energy(&p, p.theta0, p.omega0), big = 0, wmax = 0;
     for (int i = 0; i < n; i++) {
-        double we, the = mm_dyn_pend_exact(&p, sth->x[i], &we);
+        double we, the = mm_pendulum_exact(&p, sth->x[i], &we);
         slin->x[i] = sth->x[i];
         slin->y[i] = p.theta0 * cos(p.wn * sth->x[i]) + p.omega0 / p.wn * sin(p.wn * sth->x[i]);
         worst = fmax(worst, fabs(sth->y[i] - the));
-        drift = fmax(drift, fabs(mm_dyn_pend_energy(&p, sth->y[i], w[i]) - E0));
+        drift = fmax(drift, fabs(mm_pendulum_energy(&p, sth->y[i], w[i]) - E0));
         big = fmax(big, fabs(the));
         wmax = fmax(wmax, fabs(we));
     }
@@ -205,7 +205,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     /* an energy error dE moves the period by |dT/dE| dE, the phase by
      * |theta'| t / T of that: near the separatrix |dT/dE| ~ 1/kc^2 and the
      * integration's own energy error decides the timing (eq. 9) */
-    double dTdE = isfinite(p.T) ? mm_dyn_pend_period_sensitivity(&p) : 0;
+    double dTdE = isfinite(p.T) ? mm_pendulum_period_sensitivity(&p) : 0;
     double phase = isfinite(p.T) ? 2 * wmax * t_end / p.T * dTdE * drift : 0;
     /* the steps' errors and the dense output's between them: 1.5 times the
      * step term (eq. 8; measured: a short run on a fine grid reached 1.14) */
@@ -229,7 +229,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
             return rc;
         /* each crossing time: RTOL of the angle's size divided by the speed
          * there, plus the period shift of the energy error at the crossings */
-        double bigT = p.motion == MM_DYN_SWING ? 2 * asin(fmin(p.k, 1)) : fabs(p.theta0) + 4 * M_PI;
+        double bigT = p.motion == MM_PENDULUM_SWING ? 2 * asin(fmin(p.k, 1)) : fabs(p.theta0) + 4 * M_PI;
         double tol_T = RTOL * (1 + bigT) / wmax + 2 * dTdE * dE;
         if (tol_T >= 0.01 * p.T)
             mm_res_warn(res, "the period measured from the integration (%.6g s) is not shown: this close to "

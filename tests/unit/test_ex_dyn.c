@@ -336,29 +336,6 @@ static void dyn_plan_should_start_and_end_at_rest_and_drive_the_planned_accelera
     }
 }
 
-static void dyn_pendulum_closed_form_should_reduce_to_the_small_swing(void **state)
-{
-    (void)state;
-    /* theta0 = 1e-3: theta = theta0 cos(wn t) to theta0^3, T = T0 (1 + theta0^2 / 16) */
-    double th0 = 1e-3;
-    mm_dyn_pend p = mm_dyn_pend_init(2, 9.81, th0, 0);
-    assert_int_equal(p.motion, MM_DYN_SWING);
-    check_rel(p.T, p.T0 * (1 + th0 * th0 / 16), 1e-12, "T = T0 (1 + theta0^2/16 + O(theta0^4))");
-    for (int i = 0; i <= 10; i++) {
-        double w, t = 0.37 * i, th = mm_dyn_pend_exact(&p, t, &w);
-        check_abs(th, th0 * cos(p.wn * t), th0 * th0 * th0, "theta(t) = theta0 cos(wn t) + O(theta0^3)");
-    }
-    check_abs(mm_dyn_sin_top(M_PI), 0, 0, "sin at the top is exactly 0");
-    /* the energy is kept by the exact motion (a large swing) */
-    mm_dyn_pend big = mm_dyn_pend_init(1, 9.81, 2.5, 0.3);
-    double w0, th = mm_dyn_pend_exact(&big, 0, &w0), E0 = mm_dyn_pend_energy(&big, th, w0);
-    check_rel(th, 2.5, 1e-14, "theta(0) = theta0");
-    for (int i = 1; i <= 10; i++) {
-        double w, thi = mm_dyn_pend_exact(&big, 0.41 * i, &w);
-        check_rel(mm_dyn_pend_energy(&big, thi, w), E0, 1e-13, "energy conserved by the closed form");
-    }
-}
-
 static void dyn_slider_crank_energy_bound_should_bound_the_energy_difference(void **state)
 {
     (void)state;
@@ -620,7 +597,6 @@ int main(void)
         cmocka_unit_test(robot_commanded_out_of_reach_should_say_which_joint),
         cmocka_unit_test(robot_defaults_should_start_from_the_static_torques),
         cmocka_unit_test(dyn_plan_should_start_and_end_at_rest_and_drive_the_planned_acceleration),
-        cmocka_unit_test(dyn_pendulum_closed_form_should_reduce_to_the_small_swing),
         cmocka_unit_test(dyn_slider_crank_energy_bound_should_bound_the_energy_difference),
         cmocka_unit_test(dyn_extreme_error_should_find_the_vertex_of_a_sampled_parabola),
         cmocka_unit_test(slider_crank_should_coast_through_its_dead_centres),
