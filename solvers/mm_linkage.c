@@ -50,6 +50,8 @@ void mm_linkage_fb_angles(const mm_fourbar *m, double th2, int side, double *th3
     double ys[2] = {Q, C}, xs[2] = {A, Q};
     if (Q == 0)
         ys[1] = -B, xs[1] = 2 * A;
+    if (A == 0 && B == 0 && C != 0)
+        ys[1] = 1, xs[1] = 0;             /* the double root at t = infinity: th4 = pi (a toggle) */
     double Bx = a * c2, By = a * s2, best = -INFINITY, y = 0, x = 1;
     int kb = 0;
     /* no root at all: A = B = C = 0, B on O4 with b = c (a rhombus at

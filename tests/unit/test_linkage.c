@@ -249,9 +249,27 @@ static void newton_on_the_quick_return_should_land_on_the_closed_form(void **sta
     mm_mech_work_free(w);
 }
 
+/* A toggle where both roots of Freudenstein's quadratic are at t = infinity
+ * (A = B = 0, C = 2): a = b = 1, c = d = 2 at th2 = 0 puts B at (1, 0), and
+ * the only C at 1 from B and 2 from O4 = (2, 0) is the origin: th4 = pi.
+ * Before, both roots were skipped and th4 = 0 came back (|BC| = 3). */
+static void fourbar_double_root_at_infinity_should_give_pi(void **state)
+{
+    (void)state;
+    mm_fourbar m = {.a = 1, .b = 1, .c = 2, .d = 2};
+    for (int side = -1; side <= 1; side += 2) {
+        double t3, t4, e;
+        mm_linkage_fb_angles(&m, 0, side, &t3, &t4, &e);
+        check_abs(fabs(t4), M_PI, 0, "th4 = pi at the toggle");
+        double Cx = 2 + 2 * cos(t4), Cy = 2 * sin(t4);
+        check_abs(hypot(Cx - 1, Cy), 1, 4 * DBL_EPSILON, "|BC| = b: the loop closes");
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(fourbar_double_root_at_infinity_should_give_pi),
         cmocka_unit_test(freudenstein_should_close_the_loop_on_the_side_asked),
         cmocka_unit_test(a_rhombus_folded_flat_should_take_any_assembly_deterministically),
         cmocka_unit_test(the_rates_should_be_the_derivatives_of_the_angles),
