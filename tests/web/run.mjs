@@ -752,6 +752,30 @@ try {
   // boxes are left out (their colours are the theory's text, checked with
   // it; they are half of axe's time), their scrolling boxes are not.  The
   // assignment sheet has its own (assignment.mjs).
+  // "typeset" is done only when the theory is laid out in its own fonts:
+  // KaTeX_Size2 (a tall bracket) is asked for only when a display is first
+  // laid out, and a display that overflows once it arrives must be reachable
+  // by keyboard when the page says done (axe found one that was not, the
+  // font arriving between the page's measurement and axe's).  The fonts are
+  // slowed here so that they are always still on their way when the page
+  // first measures; before the page waited for them this failed every time.
+  await test('typeset is done only once the theory\'s fonts are in, and every box that then overflows is reachable by keyboard (fonts slowed 700 ms)', async (page) => {
+    await page.route('**/katex/dist/fonts/*', async (route) => {
+      await new Promise((resolve) => setTimeout(resolve, 700));
+      await route.continue();
+    });
+    await openTypeset(page, server.origin, 'id=dyn-double-pendulum');
+    const s = await page.evaluate(() => ({
+      loading: [...document.fonts].filter((f) => f.status === 'loading').map((f) => `${f.family} ${f.style} ${f.weight}`),
+      unreachable: [...document.querySelectorAll('#theory .katex-display, #theory pre')]
+        .filter((e) => e.scrollWidth > e.clientWidth + 1 && e.getAttribute('tabindex') !== '0').length,
+      reachable: document.querySelectorAll('#theory [tabindex="0"]').length,
+    }));
+    assert.deepEqual(s.loading, [], 'no font still loading when typeset is done');
+    assert.equal(s.unreachable, 0, 'every overflowing box has tabindex 0');
+    assert.ok(s.reachable >= 1, 'the wide display is reachable (the check has something to check)');
+  });
+
   await test('axe: the catalog and representative exercises, light at 1280 px and dark at 390 px: zero critical or serious violations', async (page) => {
     const problems = [];
     const known = (id) => !id || api.some((e) => e.id === id);

@@ -1101,14 +1101,22 @@ async function typeset() {
       }
     }
   }
-  // a display's width is known only in its own fonts: measure once the main
-  // ones are in, and again whenever more arrive (a box that then overflows
-  // must become reachable by keyboard)
+  // a display's width is known only in its own fonts, and which fonts it
+  // needs (KaTeX_Size2 for a tall bracket, bold italic for a vector) only
+  // once it is laid out: measuring lays the theory out, which asks for them;
+  // measure again when every font asked for is in, and only then say "done"
+  // (a box that overflows once its font arrives must be reachable by
+  // keyboard by then).  Fonts that arrive later still (a failed load being
+  // retried) measure again when they do.
   try {
     await Promise.all([document.fonts.load('1em KaTeX_Main'), document.fonts.load('italic 1em KaTeX_Math')]);
   } catch { /* measured in the fallback font; loadingdone measures again */ }
   focusableScrollers();
   document.fonts.addEventListener('loadingdone', focusableScrollers);
+  for (let i = 0; i < 4 && document.fonts.status === 'loading'; i++) {
+    try { await document.fonts.ready; } catch { break; }
+    focusableScrollers();
+  }
   document.documentElement.dataset.typeset = 'done';
 }
 
