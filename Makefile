@@ -84,7 +84,7 @@ ALL_OBJ := $(call obj,$(SOLVER_SRC) $(EX_SRC) $(SERVER_SRC) $(SERVER_CXX) server
 # way to its binary, would be rebuilt by the next make)
 .SECONDARY:
 
-.PHONY: all run test asan bench deps flags clean tests loadtest fuzz fuzz-bins valgrind tsan install \
+.PHONY: all run test asan bench deps flags clean tests loadtest fuzz fuzz-bins valgrind tsan install study \
         failover fuzz-long a11y ref answers
 .DEFAULT_GOAL := all
 
@@ -165,6 +165,16 @@ $(BUILD)/tools/answers: $(BUILD)/obj/tests/tools/answers.o $(LIBS)
 answers: $(BUILD)/tools/answers
 	@$(BUILD)/tools/answers -n $(ANSWERS_N) > $(BUILD)/answers.txt
 	@echo "answers: $$(wc -l < $(BUILD)/answers.txt) lines in $(BUILD)/answers.txt ($$(md5sum < $(BUILD)/answers.txt | cut -c1-12))"
+
+# every exercise's checks at STUDY_N seeded draws inside its limits (minutes):
+# a check that fails there, or an answer lost (422, 500), fails the study;
+# the worst use of each check's tolerance is in test-output/study.log
+STUDY_N ?= 2000
+study: deps
+	@$(MAKE) --no-print-directory $(BUILD)/tools/answers
+	@mkdir -p test-output
+	@bash -o pipefail -c '$(BUILD)/tools/answers --checks -n $(STUDY_N) > test-output/study.log; rc=$$?; \
+	  grep -E "^   (FAILED|status [0-9]+ \(an answer lost\))" test-output/study.log | cut -c1-300; tail -n 1 test-output/study.log; exit $$rc'
 
 # the reference harness's draws (tests/ref/num_ref.py; make ref)
 $(BUILD)/ref/num_draws: $(BUILD)/obj/tests/ref/num_draws.o $(LIBS)

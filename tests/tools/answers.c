@@ -12,6 +12,13 @@
  * the draws that were refused or failed:
  *
  *   build/tools/answers --checks -n 400 sta-ladder
+ *
+ * It ends "study: N passed, N failed" (one per exercise) and exits 1 when an
+ * exercise failed: a check that did not pass, or an answer other than 200
+ * or a 400 that names its parameter (a limit met while solving, "reduce h").
+ * A draw lies inside every limit, so a learner could send it; a failed
+ * check there is a wrong number or a tolerance that is not a bound, and a
+ * 422 or 500 an answer lost (`make study`, 2,000 draws each).
  */
 #include <cJSON.h>
 #include <math.h>
@@ -41,7 +48,7 @@ static void blank(char *s, const char *key)
 /* the --checks study: worst use of each check's tolerance */
 #define MAX_CHECKS 256
 typedef struct study {
-    int n, runs, failed;
+    int n, runs, failed, bad;   /* bad: checks failed, answers lost */
     char name[MAX_CHECKS][160], at[MAX_CHECKS][1024];
     double worst[MAX_CHECKS];
 } study;
@@ -68,7 +75,11 @@ static void learn(study *st, const mm_exercise *ex, const mm_input *in, int n)
     st->runs++;
     if (status != 200 || !doc) {
         st->failed++;
-        printf("   status %d at %s\n", status, n ? q : "the defaults");
+        /* a limit met while solving names its parameter: a refusal, not a loss */
+        const cJSON *e = doc ? cJSON_GetObjectItem(doc, "error") : NULL;
+        int named = status == 400 && cJSON_IsString(cJSON_GetObjectItem(e, "param"));
+        st->bad += !named;
+        printf("   status %d%s at %s\n", status, named ? "" : " (an answer lost)", n ? q : "the defaults");
         cJSON_Delete(doc);
         return;
     }
@@ -81,8 +92,10 @@ static void learn(study *st, const mm_exercise *ex, const mm_input *in, int n)
         if (kind && strcmp(kind, "relative") == 0)
             tol *= fabs(cJSON_GetNumberValue(cJSON_GetObjectItem(c, "reference")));
         double use = tol > 0 ? e / tol : (e > 0 ? INFINITY : 0);
-        if (!cJSON_IsTrue(cJSON_GetObjectItem(c, "passed")))
+        if (!cJSON_IsTrue(cJSON_GetObjectItem(c, "passed"))) {
+            st->bad++;
             printf("   FAILED %s at %s\n", name ? name : "?", n ? q : "the defaults");
+        }
         int k = 0;
         while (k < st->n && strcmp(st->name[k], name ? name : "?") != 0)
             k++;
@@ -123,6 +136,7 @@ int main(int argc, char **argv)
     }
     static mm_draw_set set;
     static study st;
+    int passed = 0, failed = 0;
     for (int e = 0; e < mm_exercise_count; e++) {
         const mm_exercise *ex = mm_exercises[e];
         if (first < argc) {
@@ -155,8 +169,14 @@ int main(int argc, char **argv)
         }
         for (int k = 0; checks && k < st.n; k++)
             printf("   %8.3g  %s\n            at %s\n", st.worst[k], st.name[k], st.at[k]);
-        if (checks)
+        if (checks) {
             printf("   %d answers, %d not 200\n", st.runs, st.failed);
+            if (st.bad)
+                printf("   %s: %d failed checks or answers lost\n", ex->id, st.bad);
+            passed += !st.bad, failed += !!st.bad;
+        }
     }
-    return 0;
+    if (checks)
+        printf("study: %d passed, %d failed\n", passed, failed);
+    return failed > 0;
 }
