@@ -1,5 +1,5 @@
 % Friction torque of a collar, eqs. (1)-(4).
-out.M_new = 2 / 3 * mu * P * (R2^3 - R1^3) / (R2^2 - R1^2);     % uniform pressure
+out.M_new = 2 / 3 * mu * P * (R2^2 + R1 * R2 + R1^2) / (R1 + R2);  % uniform pressure; (2) with R2 - R1 divided out
 out.M_worn = 1 / 2 * mu * P * (R1 + R2);                        % uniform wear
 C = P / (2 * pi * (R2 - R1));                                   % p r = C when worn
 if strcmp(wear, 'worn')
@@ -8,7 +8,7 @@ if strcmp(wear, 'worn')
   p = @(r) C ./ r;
 else
   out.M = out.M_new;
-  out.p_max = P / (pi * (R2^2 - R1^2));
+  out.p_max = P / (pi * (R2 - R1) * (R2 + R1));   % no cancellation for a thin ring
   p = @(r) out.p_max + 0 * r;
 end
 if mu > 0, out.r_eff = out.M / (mu * P); end

@@ -4,8 +4,10 @@
  * sta-centroid and sta-beam-diagrams, and the hard cases of the chapter:
  *   a truss that is a mechanism, one with a redundant member, a loaded
  *   joint with no member, nearly collinear members; friction exactly at
- *   the slip limit; a beam load exactly on a support; a polygon given
- *   clockwise and counter-clockwise; a self-intersecting polygon (400);
+ *   the slip limit; a beam load exactly on a support; a thrust ring 1.2
+ *   mm wide at 5.6 m; a
+ *   polygon given clockwise and counter-clockwise; a self-intersecting
+ *   polygon (400);
  * plus what every statics answer shares: a one-frame free-body diagram of
  * the allowed shapes and a default answer of at most 64 KB. */
 #include "mm_test.h"
@@ -356,6 +358,20 @@ static void bearings_and_wheels_should_match_their_closed_forms(void **state)
     cJSON_Delete(d);
     d = solve_ok("sta-thrust-bearing", "wear=worn");
     check_rel(scalar(d, "M"), 0.5 * 0.1 * 5000 * 0.07, 8 * EPS, "mu P (R1 + R2) / 2");
+    cJSON_Delete(d);
+    /* a thin ring, 1.2 mm wide at 5.6 m (the tolerance study's draw): R2^2 -
+     * R1^2 and R2^3 - R1^3 cancelled 2400 ulps away, p_new and M_new were off
+     * by 215 and 70 ulps and both quadrature checks failed (3.35 and 2.28 x
+     * their tolerance).  Guards the factored forms: M_new is the worn torque
+     * plus mu P (R2 - R1)^2 / (6 (R1 + R2)), the area pi (R2 - R1)(R2 + R1),
+     * every digit; it tends to mu P R */
+    const double P = 61.12822314606765, R1 = 5.627169532635568, R2 = 5.628340667557675, mu = 0.44133673286760633;
+    d = solve_ok("sta-thrust-bearing", "P=61.12822314606765&R1=5.627169532635568&R2=5.628340667557675&"
+                                       "mu=0.44133673286760633&wear=new&points=52");
+    double w = R2 - R1;                                 /* exact: Sterbenz */
+    check_rel(scalar(d, "M_new"), mu * P * (0.5 * (R1 + R2) + w * w / (6 * (R1 + R2))), 8 * EPS,
+              "M_new = M_worn + mu P (R2 - R1)^2 / (6 (R1 + R2))");
+    check_rel(scalar(d, "p_max"), P / (M_PI * (R1 + R2) * w), 8 * EPS, "P / area, the area 2 pi R (R2 - R1)");
     cJSON_Delete(d);
     d = solve_ok("sta-rolling-resistance", "mu=0.01");
     check_abs(scalar(d, "mode"), 2, 0, "on ice it slides");
