@@ -117,7 +117,7 @@ int mm_beam_solve(const mm_beam_problem *p, mm_beam **out, mm_error *err)
         return rc;
     int cap = 4 + p->n_point + 2 * p->n_dist + p->n_moment;
     mm_beam *b = calloc(1, sizeof *b);
-    double *mem = calloc((size_t)cap * 10, sizeof *mem);
+    double *mem = calloc((size_t)cap * 13, sizeof *mem);
     if (!b || !mem) {
         free(b);
         free(mem);
@@ -127,7 +127,7 @@ int mm_beam_solve(const mm_beam_problem *p, mm_beam **out, mm_error *err)
     b->dV = mem + cap, b->dM = mem + 2 * cap;
     b->q0 = mem + 3 * cap, b->q1 = mem + 4 * cap;
     b->V0 = mem + 5 * cap, b->M0 = mem + 6 * cap, b->T0 = mem + 7 * cap, b->Y0 = mem + 8 * cap;
-    double *Yp = mem + 9 * cap;
+    double *Yp = mem + 9 * cap, *eV = mem + 10 * cap, *eM = mem + 11 * cap, *eq = mem + 12 * cap;
     b->L = p->L, b->EI = p->EI, b->a = p->a, b->b = p->b, b->kind = p->kind;
 
     /* the breakpoints */
@@ -153,69 +153,99 @@ int mm_beam_solve(const mm_beam_problem *p, mm_beam **out, mm_error *err)
             b->xs[u++] = b->xs[i];
     b->nb = u;
 
-    /* the reactions, eqs. (2)-(3): sum of forces and of moments */
-    double F = 0, Mo = 0, o = p->kind == MM_BEAM_TWO_SUPPORTS ? p->a : 0;
+    /* the reactions, eqs. (2)-(3): sum of forces and of moments; sF and sMo
+     * the magnitudes summed into them, and es[k] those of reaction k: what
+     * its rounding is measured against (a reaction from terms that cancel,
+     * e.g. a load next to a support, is small but as uncertain as they) */
+    double F = 0, Mo = 0, sF = 0, sMo = 0, o = p->kind == MM_BEAM_TWO_SUPPORTS ? p->a : 0, es[2] = {0, 0};
     for (int i = 0; i < p->n_point; i++) {
         F += p->point[2 * i + 1];
         Mo += p->point[2 * i + 1] * (p->point[2 * i] - o);
+        sF += fabs(p->point[2 * i + 1]);
+        sMo += fabs(p->point[2 * i + 1] * (p->point[2 * i] - o));
     }
     for (int i = 0; i < p->n_dist; i++) {
         const double *r = p->dist + 4 * i;
-        F += 0.5 * (r[2] + r[3]) * (r[1] - r[0]);
+        double l = r[1] - r[0];
+        F += 0.5 * (r[2] + r[3]) * l;
         Mo += dist_moment(r, o);
+        sF += 0.5 * (fabs(r[2]) + fabs(r[3])) * l;
+        sMo += 0.5 * (fabs(r[2]) + fabs(r[3])) * l * fabs(r[0] - o) + l * l * (fabs(r[2]) / 6 + fabs(r[3]) / 3);
     }
-    for (int i = 0; i < p->n_moment; i++)
+    for (int i = 0; i < p->n_moment; i++) {
         Mo += p->moment[2 * i + 1];
+        sMo += fabs(p->moment[2 * i + 1]);
+    }
     if (p->kind == MM_BEAM_TWO_SUPPORTS) {
         b->nr = 2;
         b->rx[0] = p->a, b->rx[1] = p->b;
         b->ry[1] = -Mo / (p->b - p->a);          /* moments about the pin */
         b->ry[0] = -F - b->ry[1];
         b->rc[0] = b->rc[1] = 0;
+        es[1] = sMo / (p->b - p->a);
+        es[0] = sF + es[1];
     } else {
         b->nr = 1;
         b->rx[0] = 0;
         b->ry[0] = -F;
         b->rc[0] = -Mo;                          /* the clamp's couple */
+        es[0] = sF;
     }
 
-    /* jumps and the distributed intensity of each segment */
-    for (int i = 0; i < p->n_point; i++)
-        b->dV[break_at(b, p->point[2 * i])] += p->point[2 * i + 1];
-    for (int k = 0; k < b->nr; k++) {
-        b->dV[break_at(b, b->rx[k])] += b->ry[k];
-        b->dM[break_at(b, b->rx[k])] -= b->rc[k];
+    /* jumps and the distributed intensity of each segment; eV and eM the
+     * magnitudes each jump was computed from: a load's own, a reaction's es */
+    for (int i = 0; i < p->n_point; i++) {
+        int j = break_at(b, p->point[2 * i]);
+        b->dV[j] += p->point[2 * i + 1];
+        eV[j] += fabs(p->point[2 * i + 1]);
     }
-    for (int i = 0; i < p->n_moment; i++)
-        b->dM[break_at(b, p->moment[2 * i])] -= p->moment[2 * i + 1];
+    for (int k = 0; k < b->nr; k++) {
+        int j = break_at(b, b->rx[k]);
+        b->dV[j] += b->ry[k];
+        b->dM[j] -= b->rc[k];
+        eV[j] += es[k];
+        eM[j] += p->kind == MM_BEAM_CANTILEVER ? sMo : 0;
+    }
+    for (int i = 0; i < p->n_moment; i++) {
+        int j = break_at(b, p->moment[2 * i]);
+        b->dM[j] -= p->moment[2 * i + 1];
+        eM[j] += fabs(p->moment[2 * i + 1]);
+    }
     for (int i = 0; i < p->n_dist; i++) {
         const double *r = p->dist + 4 * i;
         double slope = (r[3] - r[2]) / (r[1] - r[0]);
         for (int k = break_at(b, r[0]); k < b->nb - 1 && b->xs[k] < r[1]; k++) {
             b->q0[k] += r[2] + slope * (b->xs[k] - r[0]);
             b->q1[k] += slope;
+            eq[k] += fabs(r[2]) + fabs(slope * (b->xs[k] - r[0]));   /* what q0 is summed from */
         }
     }
 
-    /* sweep from x = 0: V and M just right of each breakpoint (eq. 5) */
+    /* sweep from x = 0: V and M just right of each breakpoint (eq. 5).
+     * sV and sM: the magnitudes summed into V and M so far, each jump and
+     * q0 counted by what it was itself summed from (eV, eM, eq), so that
+     * their rounding, and the reactions', is in it.  V's error is carried
+     * into M over a segment as V h: M's scale takes sV h, not |V| h (a load
+     * next to a support, then a long span: V is the small difference of
+     * the load and the reaction, its error that of the load) */
     double V = 0, M = 0, sV = 0, sM = 0;
     for (int k = 0; k < b->nb - 1; k++) {
         V += b->dV[k];
         M += b->dM[k];
-        sV += fabs(b->dV[k]);
-        sM += fabs(b->dM[k]);
+        sV += eV[k];
+        sM += eM[k];
         b->V0[k] = V, b->M0[k] = M;
         double h = b->xs[k + 1] - b->xs[k], q0 = b->q0[k], q1 = b->q1[k];
         double dVs = q0 * h + q1 * h * h / 2, dMs = V * h + q0 * h * h / 2 + q1 * h * h * h / 6;
-        sV += fabs(q0 * h) + fabs(q1 * h * h / 2);
-        sM += fabs(V * h) + fabs(q0 * h * h / 2) + fabs(q1 * h * h * h / 6);
+        sM += sV * h + eq[k] * h * h / 2 + fabs(q1 * h * h * h / 6);
+        sV += eq[k] * h + fabs(q1 * h * h / 2);
         V += dVs;
         M += dMs;
     }
     b->Vend = V + b->dV[b->nb - 1];
     b->Mend = M + b->dM[b->nb - 1];
-    b->Vscale = sV + fabs(b->dV[b->nb - 1]);
-    b->Mscale = sM + fabs(b->dM[b->nb - 1]);
+    b->Vscale = sV + eV[b->nb - 1];
+    b->Mscale = sM + eM[b->nb - 1];
 
     /* the deflection: a particular solution from y = y' = 0 at x = 0, then
      * y0 + theta0 x added to meet the supports (eq. 7) */

@@ -96,7 +96,11 @@ void mm_beam_eval(const mm_beam *b, double x, int side, mm_beam_value *v);
 /* V and M just right of x = L after every jump there: zero for a beam in
  * equilibrium, rounding otherwise (a second route: reactions from two
  * equations, diagrams summed load by load).  *scale receives the sum of
- * the magnitudes summed into them.  Cannot fail. */
+ * the magnitudes summed into them, each term counted by the magnitudes it
+ * was itself computed from (a reaction by the loads' forces and moments,
+ * however much they cancel in it), and for M every segment's V h counted
+ * as (that sum for V so far) h: V's rounding carried along the segment.
+ * Rounding is a small multiple of DBL_EPSILON times it.  Cannot fail. */
 void mm_beam_closure(const mm_beam *b, double *V_end, double *M_end, double *V_scale, double *M_scale);
 
 /* The extremes: the value of largest magnitude, with its sign, and where
