@@ -10,7 +10,9 @@
  * smooth maximum f differs from f(x*) only by (x - x*)^2 f''/2, so
  * function values below about sqrt(eps) relative cannot place x closer than
  * about sqrt(eps) |x*| (the search then stops when the two interior values
- * are equal: it reports the bracket it reached).
+ * are equal and the point halfway between them is no higher: it reports
+ * the bracket it reached; a higher midpoint means the two straddle a sharp
+ * maximum, and the search goes on between them).
  *
  * To find a minimum, maximise -f.  No globals; safe from many threads as
  * long as f is.

@@ -85,6 +85,29 @@ static void golden_should_reach_the_height_of_a_flat_maximum_at_an_end(void **st
     check_rel(r.fx, 1, 8 * 2.2204460492503131e-16, "height |H(0)| = 1");
 }
 
+/* A sharp resonance, zeta = 0.0305 (Q = 16): golden section on [0, 1.5]
+ * reaches interior points 6.6e-9 apart either side of the peak whose values
+ * are equal by symmetry, though 5.8e-15 (26 eps) relative below the top
+ * (f''/f = -r_p^2 / (zeta^2 (1 - zeta^2)) = -1100: a drop f'' dx^2 / 2 at
+ * dx = 3.3e-9).  Guards the search's stop on equal values: it stopped
+ * there, 1.65 times outside rounding; the midpoint is higher, so it must
+ * go on and reach the height to rounding; the top is flat to 8 eps within
+ * zeta sqrt(16 eps) / r_p <= 2.2e-9 of it, where the place is not known
+ * better. */
+static void golden_should_reach_the_height_of_a_sharp_peak(void **state)
+{
+    (void)state;
+    static const double zs[3] = {0.030513960499703025, 0.030260945414241236, 0.03543807962139439};
+    for (int k = 0; k < 3; k++) {
+        double z = zs[k];
+        mm_opt_result r;
+        assert_int_equal(mm_opt_golden_max(resonance, &z, 0, 1.5, 1e-12, 200, &r, NULL), MM_OK);
+        check_rel(r.fx, 1 / (2 * z * sqrt(1 - z * z)), 8 * 2.2204460492503131e-16, "height of a sharp peak");
+        check_abs(r.x, sqrt(1 - 2 * z * z), r.bracket + 2.2e-9, "within the bracket or the flat top");
+        assert_true(r.evals < 60);
+    }
+}
+
 /* ---- refining a sampled extreme ---- */
 
 static double sine(double x, double *err, void *p)
@@ -140,6 +163,7 @@ int main(void)
         cmocka_unit_test(golden_should_find_the_resonance_peak),
         cmocka_unit_test(golden_should_find_a_maximum_at_the_end),
         cmocka_unit_test(golden_should_reach_the_height_of_a_flat_maximum_at_an_end),
+        cmocka_unit_test(golden_should_reach_the_height_of_a_sharp_peak),
         cmocka_unit_test(golden_should_refuse_bad_arguments_and_pass_on_stops),
         cmocka_unit_test(refined_extreme_should_hold_pi_over_2_within_its_stated_error),
         cmocka_unit_test(refined_extreme_at_an_end_should_be_the_end),
