@@ -52,7 +52,8 @@ static const mm_param params[] = {
     [P_ALPHA] = {"alpha", "mass-proportional damping a", "1/s", MM_REAL, 2, 0, 1e4, .help = "C = a M + b K"},
     [P_BETA] = {"beta", "stiffness-proportional damping b", "s", MM_REAL, 0, 0, 1, .help = "damps the high modes"},
     [P_MODES] = {"modes", "modes retained", "", MM_INT, 10, 1, 100, .help = "the modal sum keeps the lowest m"},
-    [P_H] = {"h", "Newmark step", "s", MM_REAL, 5e-5, 1e-8, 1, .help = "the step of the direct integration"},
+    [P_H] = {"h", "Newmark step", "s", MM_REAL, 5e-5, 1e-8, 1, .help = "the step of the direct integration; "
+             "a moving load must be on the span at t = h: h < L/v"},
     [P_TEND] = {"t_end", "duration", "s", MM_REAL, 0.05, 1e-6, 1e3,
                 .help = "simulated time; steps x elements at most 2e6 (the direct run's work)"},
     [P_PROBE] = {"probe", "point shown", "L", MM_REAL, 0.5, 0, 1, .help = "where the deflection is plotted"},
@@ -83,6 +84,19 @@ static int check(const mm_value *in, mm_error *err)
 {
     double steps = ceil(in[P_TEND].x / in[P_H].x), n = in[P_EL].x;
     int bc = (int)in[P_BC].x, have = bc == 2 ? 2 * (int)n - 2 : 2 * (int)n;
+    /* a force that crosses the span within one step is over a support at
+     * t = 0 and past the far end at t = h: every load vector of the direct
+     * run is zero, and its w_max is 0 whatever P, E or v */
+    double cross = in[P_L].x / in[P_V].x;
+    if ((int)in[P_LOAD].x == 0 && in[P_H].x >= cross) {
+        if (ceil(in[P_TEND].x / cross) * n > 2e6)
+            return mm_error_set(err, MM_ERANGE, "h", "load=moving: it crosses the span in L/v = %.3g s, within "
+                                "one step h = %.3g s, never seen by the direct run: make h less than %.3g s and "
+                                "t_end less than %.3g s", cross, in[P_H].x, cross, 2e6 * cross / n);
+        return mm_error_set(err, MM_ERANGE, "h", "load=moving: P crosses the span in L/v = %.3g s, within "
+                            "one step h = %.3g s, so the direct run never has it on the beam: make h less than "
+                            "%.3g s", cross, in[P_H].x, cross);
+    }
     if (steps * n > 2e6)
         return mm_error_set(err, MM_ERANGE, "h", "%.3g steps of %g elements are too much work for one request "
                             "(steps x elements at most 2e6): make h at least %.3g s", steps, n, in[P_TEND].x * n / 2e6);
@@ -235,9 +249,18 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * a few eps a step of terms up to kS times the motion */
     double werr = (nall == nf ? newmark_err : rmax) + 16 * eps * ((double)steps + kS) * gbig;
     mm_res_scalar_err(res, O_WMAX, wmax, werr, MM_ERR_ESTIMATE);
-    if (wst != 0)
-        mm_res_scalar_err(res, O_DAF, wmax / fabs(wst), wmax / fabs(wst) * (werr / fmax(wmax, 1e-300) + west /
-                          fabs(wst)), MM_ERR_ESTIMATE);
+    /* the error of w_max / |w_static|, as werr / |wst| + factor west / |wst|:
+     * the relative form, factor (werr / w_max + west / |wst|), was 0 x inf
+     * (NaN) where the motion has not reached the probe (w_max = 0 or
+     * subnormal), and 0 where werr / 1e-300 stayed finite: a factor 0 with
+     * an error 0, the motion it missed not counted */
+    if (wst != 0) {
+        double daf = wmax / fabs(wst);
+        mm_res_scalar_err(res, O_DAF, daf, (werr + daf * west) / fabs(wst), MM_ERR_ESTIMATE);
+    } else {
+        mm_res_warn(res, "w_static = 0 at the probe (P = 0, or the probe on a support): dynamic_factor = "
+                         "w_max / |w_static| does not exist and is left out");
+    }
     mm_series *sd = mm_res_series(res, O_SD, rows), *sm = mm_res_series(res, O_SM, rows);
     if (!sd || !sm)
         return MM_ENOMEM;

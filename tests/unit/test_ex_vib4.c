@@ -12,7 +12,9 @@
  *                       1000 elements;
  *   vib-bar-wave:       exact nodes at the Courant limit, refused above it;
  *   vib-beam-transient: a sudden load's dynamic factor 2; 1000 elements;
- *                       stiffly damped modes under a fast load;
+ *                       stiffly damped modes under a fast load; the
+ *                       factor where the motion has not reached the
+ *                       probe; a step a moving load crosses within;
  *   num-newmark:        issue 10's defects #1 and #12, the raised limits. */
 #include "mm_test.h"
 
@@ -289,19 +291,75 @@ static void sudden_load_should_nearly_double_the_static_deflection(void **state)
 }
 
 /* A force crossing 48 stiffly damped elements (c / omega^2 = 0.72 s) in 4 us,
- * sampled once 23 ms later: the polynomial modal solution once cancelled to
- * 1e-6 m of noise, and w_max read 1 m for a beam that never moved at the probe. */
+ * followed for 23 ms: the polynomial modal solution once cancelled to 1e-6 m
+ * of noise, and w_max read 1 m for a beam that never moved at the probe.
+ * (Found at h = 0.0233 s, a step the force crosses within, now refused: at
+ * h = 3.5 us the direct run has it on the span once.) */
 static void stiffly_damped_modes_should_stay_exact_under_a_fast_load(void **state)
 {
     (void)state;
     cJSON *d = solve_ok("vib-beam-transient", "E=5.49e12&I=2.29e-10&rho=47&A=1.4e-7&L=0.00571&"
                         "bc=simply-supported&elements=48&load=moving&P=-6.7e5&v=1462&alpha=8680&beta=0.72&"
-                        "modes=67&h=0.0233&t_end=0.0226&probe=0.476&points=144");
+                        "modes=67&h=3.5e-6&t_end=0.0226&probe=0.476&points=144");
     double ws = fabs(scalar(d, "w_static"));
     assert_true(scalar(d, "truncation_error") < 1e-12 * ws);    /* ~1e-22 m: no noise */
     assert_true(scalar(d, "time_error") < 1e-3 * ws);
     assert_true(scalar(d, "w_max") < 1e-3 * ws);
     cJSON_Delete(d);
+}
+
+/* A step load at 0.92 L of a clamped beam whose first period is 4 days,
+ * followed for 8 s: the motion has not reached the probe at 0.22 L (w_max =
+ * 2.5e-322 m).  The dynamic factor's error was factor x (werr / max(w_max,
+ * 1e-300) + ...) = 0 x inf, a NaN, and the answer a 422; it is 0 with the
+ * error of w_max over |w_static|. */
+static void dynamic_factor_should_be_finite_where_the_motion_has_not_reached_the_probe(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-beam-transient", "E=36337503227.40963&I=3.9294262940808374e-13&rho=177.32509105984178&"
+                        "A=0.006531808451366835&L=388.73880662506605&bc=clamped-clamped&elements=841&load=step&"
+                        "P=192395.6516379593&a=0.9163779294019139&modes=10&alpha=6160.373786917685&"
+                        "beta=0.3763582557295705&h=0.7753092679603784&t_end=7.8834121666808&"
+                        "probe=0.22343975501365254&points=502");
+    const cJSON *f = named(d, "scalars", "dynamic_factor"), *w = named(d, "scalars", "w_max");
+    assert_non_null(f);
+    assert_true(cJSON_GetObjectItem(f, "value")->valuedouble < 1e-300);
+    check_rel(cJSON_GetObjectItem(f, "error")->valuedouble,
+              cJSON_GetObjectItem(w, "error")->valuedouble / fabs(scalar(d, "w_static")), 1e-12, "werr / |w_static|");
+    cJSON_Delete(d);
+    /* no static deflection at a support: no factor, and a warning why */
+    d = solve_ok("vib-beam-transient", "probe=0");
+    assert_null(named(d, "scalars", "dynamic_factor"));
+    assert_true(warned(d, "w_static = 0"));
+    cJSON_Delete(d);
+}
+
+/* A force that crosses the span within one step (L/v = 0.21 s, h = 0.26 s;
+ * 0.048 s and 0.079 s) is over a support at t = 0 and past the far end at
+ * t = h: the direct run never has it on the beam, w_max = 0 whatever P.
+ * These were 422s (the factor's NaN above); now refused, naming h. */
+static void beam_transient_should_refuse_a_step_a_moving_load_crosses_within(void **state)
+{
+    (void)state;
+    static const char *const q[2] = {
+        "E=38688117401.82408&I=0.0038432639186813077&rho=946.3032875436272&A=1.3681057606418699e-08&"
+        "L=0.017408084146971484&bc=cantilever&elements=321&load=moving&P=453699.4044936169&v=0.08226317271312443&"
+        "alpha=8949.213497689183&beta=0.32577197432175875&modes=32&h=0.2617478238790962&t_end=0.07415384598733969&"
+        "probe=0.7230176463208792&points=23",
+        "E=875586342982.117&I=2.0667531518666659e-10&rho=5.785475124326855&A=2.508916392412771e-08&"
+        "L=0.0037628619462915687&bc=clamped-clamped&elements=443&load=moving&P=-98728.28390616248&"
+        "v=0.0786076409464237&alpha=1464.3592986819897&beta=0.3437239690738433&modes=56&h=0.07941990967356227&"
+        "t_end=1.9248175955440827&probe=0.38641765715143284&points=1338"};
+    for (int k = 0; k < 2; k++) {
+        answer a = solve("vib-beam-transient", q[k]);
+        assert_int_equal(a.status, 400);
+        const cJSON *e = cJSON_GetObjectItem(a.doc, "error");
+        assert_string_equal(cJSON_GetObjectItem(e, "param")->valuestring, "h");
+        assert_non_null(strstr(cJSON_GetObjectItem(e, "message")->valuestring, "L/v"));
+        cJSON_Delete(a.doc);
+    }
+    /* just inside: the force is on the span at t = h */
+    cJSON_Delete(solve_ok("vib-beam-transient", "v=1e4&h=9.9e-5"));
 }
 
 /* ---- num-newmark ------------------------------------------------------------------ */
@@ -366,6 +424,8 @@ int main(void)
         cmocka_unit_test(bar_wave_should_be_exact_at_the_courant_limit_and_refuse_above),
         cmocka_unit_test(sudden_load_should_nearly_double_the_static_deflection),
         cmocka_unit_test(stiffly_damped_modes_should_stay_exact_under_a_fast_load),
+        cmocka_unit_test(dynamic_factor_should_be_finite_where_the_motion_has_not_reached_the_probe),
+        cmocka_unit_test(beam_transient_should_refuse_a_step_a_moving_load_crosses_within),
         cmocka_unit_test(newmark_should_check_tightly_and_warn_of_a_large_error),
         cmocka_unit_test(newmark_modes_should_take_zeta_from_the_complex_modes),
         cmocka_unit_test(newmark_should_allow_what_fits_the_budget),
