@@ -109,12 +109,59 @@ static int check(const mm_value *in, mm_error *err)
     return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
 }
 
-/* the point at t + e, for mm_kin_circle3 */
+/* the point at t + e less the point at t, for mm_kin_circle3, in the frame
+ * of theta(t) (rho does not depend on it) and from the same rounded r, r',
+ * r'', theta', theta'' as eqs. (2)-(3): r(t + e) = r + dr, theta(t + e) =
+ * theta + dth with dr = e (r' + r'' e/2), dth = e (theta' + theta'' e/2), so
+ *     P(t + e) - P(t) = (dr cos dth - 2 r sin^2(dth/2), (r + dr) sin dth)
+ * keeps its digits: no theta of up to 10^3 rad nor |x| rounded into it */
 static int point(double t, double e, mm_v2 *P, void *ctx)
 {
-    state s = at(ctx, t + e);
-    *P = mm_v2_polar(s.r, s.th);
+    (void)t;
+    const state *s = ctx;
+    double dr = e * (s->r1 + 0.5 * s->r2 * e), dth = e * (s->th1 + 0.5 * s->th2 * e), sh = sin(0.5 * dth);
+    *P = (mm_v2){dr * cos(dth) - 2 * s->r * sh * sh, (s->r + dr) * sin(dth)};
     return 1;
+}
+
+/* The step of the three-point circle.  Its curvature is even in h,
+ *     k(h) = k + C2 h^2 + O(h^4),
+ * and with the Taylor coefficients Z1 = v, Z2 = a/2, Z3, Z4 of the path
+ * about t (P(t + e) - P(t) = Z1 e + Z2 e^2 + ...), T = Z1/|v| and x, y
+ * the components along T and across it,
+ *     C2 = 2/|v|^2 (y4 - (x2 y3 + 2 x3 y2)/|v| + y2 (x2^2 - y2^2)/|v|^2)
+ * (0 on a circle run at constant speed).  R(h) = 1/|k(h)| is a series in
+ * h^2 only while h is small beside the scales of the motion: rho/|v| (a
+ * radian of turn), |Z1/Zk|^(1/(k-1)) (the speed or the direction changing,
+ * a cusp) and sqrt|k/C2| (an inflection within reach: k(h) reaches 0 there,
+ * however large rho/|v| is).  In the frame of theta(t), z = r e^(i theta):
+ * E = e^(i dth) has E0 = 1, Ek = i (theta' E(k-1) + theta'' E(k-2)) / k,
+ * and Zk = r Ek + r' E(k-1) + r''/2 E(k-2). */
+static double circle_step(const state *s, double speed, double k)
+{
+    mm_v2 E[5] = {{1, 0}}, Z[5];
+    for (int j = 1; j < 5; j++) {
+        mm_v2 w = mm_v2_scale(E[j - 1], s->th1);
+        if (j >= 2)
+            w = mm_v2_add(w, mm_v2_scale(E[j - 2], s->th2));
+        E[j] = mm_v2_scale(mm_v2_perp(w), 1.0 / j);
+        Z[j] = mm_v2_add(mm_v2_scale(E[j], s->r), mm_v2_scale(E[j - 1], s->r1));
+        if (j >= 2)
+            Z[j] = mm_v2_add(Z[j], mm_v2_scale(E[j - 2], 0.5 * s->r2));
+    }
+    mm_v2 T = mm_v2_scale(Z[1], 1 / speed);
+    double x2 = mm_v2_dot(T, Z[2]), y2 = mm_v2_cross(T, Z[2]), x3 = mm_v2_dot(T, Z[3]), y3 = mm_v2_cross(T, Z[3]);
+    double y4 = mm_v2_cross(T, Z[4]);
+    double C2 = 2 / (speed * speed) * (y4 - (x2 * y3 + 2 * x3 * y2) / speed + y2 * (x2 * x2 - y2 * y2) / (speed * speed));
+    double scale = 1 / (speed * fabs(k));
+    for (int j = 2; j < 5; j++) {
+        double zj = mm_v2_norm(Z[j]);
+        if (zj > 0)
+            scale = fmin(scale, pow(speed / zj, 1.0 / (j - 1)));
+    }
+    if (C2 != 0)
+        scale = fmin(scale, sqrt(fabs(k / C2)));
+    return 0.02 * scale;
 }
 
 /* the animation's frame at t */
@@ -178,17 +225,25 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                      mm_v2_norm(mm_v2_sub(v, vc)), 0, 8 * DBL_EPSILON * big_v);
     mm_res_check_abs(res, "a by eq. (3) vs d2/dt2 of (r cos theta, r sin theta): |difference| [m/s^2]",
                      mm_v2_norm(mm_v2_sub(a, ac)), 0, 8 * DBL_EPSILON * big_a);
-    /* radius of curvature against the circle through three points h apart:
-     * R(h) - rho = O(h) (O(h^2) when the speed is constant), so the value
-     * at h/4 lies within 2 |R(h/2) - R(h/4)| of rho, plus the rounding of a
-     * circle through points s = |v| h apart: eps |x| rho / s^2 */
+    /* radius of curvature against the circle through three points h apart
+     * (h from circle_step): R(h) - rho = O(h^2), so the value at h/4 lies
+     * within 2 |R(h/2) - R(h/4)| of rho, plus rounding.  The points at
+     * e = h/4 carry d = 8 eps (|r' e| + |r''| e^2/2 + (|r| + |dr|) (|theta' e|
+     * + |theta''| e^2/2)); the circle through points s = |v| e apart has
+     * twice the area s^3/R, which they move by 6 d s and its own rounding by
+     * 4 eps s^2: R to 8 (d R/s^2 + eps R/s) R.  And rho's own rounding: v x a
+     * loses digits near an inflection, rho to 8 eps |v| |a| / |v x a| of it */
     double an = speed > 0 ? fabs(mm_v2_cross(v, a)) / speed : 0;
     if (an > 1e-9 * amag && speed > 1e-9 * (fabs(s.r) + 1)) {
-        double rho = speed * speed / an, R[3], h = 0.02 * rho / speed;
-        int ok = mm_kin_circle3(point, &p, t, h, R);
-        double sp = speed * h / 4, round_ = 64 * DBL_EPSILON * (mm_v2_norm(x) + rho) * rho * rho / (sp * sp);
+        double rho = speed * speed / an, k = mm_v2_cross(v, a) / (speed * speed * speed), R[3];
+        double h = circle_step(&s, speed, k), e = h / 4, sp = speed * e;
+        int ok = mm_kin_circle3(point, &s, t, h, R);
+        double dr = e * (fabs(s.r1) + 0.5 * fabs(s.r2) * e), d = 8 * DBL_EPSILON * (dr + (fabs(s.r) + dr) *
+                                                                  (fabs(s.th1) * e + 0.5 * fabs(s.th2) * e * e));
+        double round_ = 8 * (d * rho / (sp * sp) + DBL_EPSILON * rho / sp) * rho +
+                        8 * DBL_EPSILON * amag / an * rho;
         if (ok)
-            mm_res_check_abs(res, "rho = v^2/a_n vs the circle through three points |v| h apart (h = 0.005 rho/v)",
+            mm_res_check_abs(res, "rho = v^2/a_n vs the circle through three points of the path, bound 2 |R(h/2) - R(h/4)| + rounding",
                              R[2], rho, 2 * fabs(R[1] - R[2]) + round_);
     }
 
