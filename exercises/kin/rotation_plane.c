@@ -198,24 +198,29 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     mm_v2 x, v, a, vc, ac;
     double vr, vt, ar, at_;
     kin(&s, &x, &v, &a, &vr, &vt, &ar, &at_);
-    double speed = mm_v2_norm(v), amag = mm_v2_norm(a);
+    /* |v|, |a|, v x a and v . a from the polar components: rotation-free, so
+     * v x a is exactly 0 on a radial line (theta' = theta'' = 0) where the
+     * Cartesian components left a_n ~ 1e-17 and rho ~ 1e17 m */
+    double speed = hypot(vr, vt), amag = hypot(ar, at_), cr = vr * at_ - vt * ar, dt_ = vr * ar + vt * at_;
     mm_res_scalar(res, O_R, s.r);
     mm_res_scalar(res, O_TH, s.th);
     mm_res_scalar(res, O_VR, vr);
     mm_res_scalar(res, O_VT, vt);
-    mm_res_scalar(res, O_V, hypot(vr, vt));
+    mm_res_scalar(res, O_V, speed);
     mm_res_scalar(res, O_AR, ar);
     mm_res_scalar(res, O_AT, at_);
-    mm_res_scalar(res, O_A, hypot(ar, at_));
+    mm_res_scalar(res, O_A, amag);
     mm_res_scalar(res, O_CENT, -s.r * s.th1 * s.th1);
     mm_res_scalar(res, O_COR, 2 * s.r1 * s.th1);
     if (speed > 0) {
         /* path components: a_t along v, a_n across it, rho = v^2 / a_n */
-        double an = fabs(mm_v2_cross(v, a)) / speed;
-        mm_res_scalar(res, O_ATAN, mm_v2_dot(v, a) / speed);
+        double an = fabs(cr) / speed;
+        mm_res_scalar(res, O_ATAN, dt_ / speed);
         mm_res_scalar(res, O_ANOR, an);
         if (an > 0)
             mm_res_scalar(res, O_RHO, speed * speed / an);
+        else
+            mm_res_warn(res, "the path is straight at t = %g (v and a along one line): no radius of curvature", t);
     }
     /* the polar route against the Cartesian one: rounding of the largest term */
     cartesian(&s, &vc, &ac);
@@ -233,9 +238,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * twice the area s^3/R, which they move by 6 d s and its own rounding by
      * 4 eps s^2: R to 8 (d R/s^2 + eps R/s) R.  And rho's own rounding: v x a
      * loses digits near an inflection, rho to 8 eps |v| |a| / |v x a| of it */
-    double an = speed > 0 ? fabs(mm_v2_cross(v, a)) / speed : 0;
+    double an = speed > 0 ? fabs(cr) / speed : 0;
     if (an > 1e-9 * amag && speed > 1e-9 * (fabs(s.r) + 1)) {
-        double rho = speed * speed / an, k = mm_v2_cross(v, a) / (speed * speed * speed), R[3];
+        double rho = speed * speed / an, k = cr / (speed * speed * speed), R[3];
         double h = circle_step(&s, speed, k), e = h / 4, sp = speed * e;
         int ok = mm_kin_circle3(point, &s, t, h, R);
         double dr = e * (fabs(s.r1) + 0.5 * fabs(s.r2) * e), d = 8 * DBL_EPSILON * (dr + (fabs(s.r) + dr) *

@@ -300,6 +300,22 @@ static void the_rotation_plane_should_pass_its_checks_near_an_inflection(void **
     cJSON_Delete(d);
 }
 
+/* theta' = theta'' = 0: the bead slides along an arm that does not turn, a
+ * straight radial line.  v x a from the Cartesian components (rotated by
+ * theta = 0.3) came out 5.6e-17 instead of 0, and rho = 1.44e17 m was
+ * printed as exact; from the polar components it is 0 exactly: a_n = 0, no
+ * rho, a warning, and a_t = r'' = 0.7 */
+static void the_rotation_plane_on_a_radial_line_should_give_no_radius_of_curvature(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("kin-rotation-plane", "omega0=0&alpha=0&u=1.3&b=0.7&theta0=0.3");
+    assert_null(find(d, "scalars", "rho"));
+    check_abs(scalar(d, "a_n"), 0, 0, "a_n = 0 on a straight path");
+    check_rel(scalar(d, "a_t"), 0.7, 1e-15, "a_t = r''");
+    assert_true(warned(d, "straight"));
+    cJSON_Delete(d);
+}
+
 /* b a hair from R but not equal to it: k = 2 sqrt(R b) / (R + b) rounds to
  * 1, where the AGM of E(k) (mm_elliptic_E) stalled at g = 0 and gave pi/4
  * instead of 1, so the arch length came out pi (R + b) against the
@@ -432,6 +448,7 @@ int main(void)
         cmocka_unit_test(the_rolling_wheel_should_pass_its_checks_near_an_inflection),
         cmocka_unit_test(the_rolling_wheel_should_give_the_cycloids_arch_with_b_a_hair_from_r),
         cmocka_unit_test(the_rotation_plane_should_pass_its_checks_near_an_inflection),
+        cmocka_unit_test(the_rotation_plane_on_a_radial_line_should_give_no_radius_of_curvature),
         cmocka_unit_test(mobility_should_catch_the_overconstrained_linkages),
         cmocka_unit_test(space_motion_should_find_gimbal_lock),
         cmocka_unit_test(the_other_exercises_should_give_their_textbook_values),
