@@ -110,11 +110,13 @@ typedef struct mm_mdof_motion {
 
 /* The exact q(t) (and v(t) = q'(t) when v is not NULL) of (1) under mo at
  * the nt times t_i = k[i] h (k nondecreasing, k[0] >= 0), into q[i*n + j]:
- * the state (q, q'/w, cos omega t, sin omega t) (w = sqrt(max K_ii/M_ii),
- * for balance) is carried from sample to sample by e^{G k h}, computed
- * once for each different gap k[i] - k[i-1].  Rounding grows with the
- * number of samples, not of steps: about nt eps relative to the motion's
- * size (times the conditioning of the modes' energy, for a stiff system).
+ * the state (q, q'/w, s cos omega t, s sin omega t) (w = sqrt(max K_ii/M_ii),
+ * s = 1, or the power of 2 above max|M^-1 F| / w^2 where that is > 1, for
+ * balance: no column of G larger than the mechanics' w) is carried from
+ * sample to sample by e^{G k h}, computed once for each different gap
+ * k[i] - k[i-1].  Rounding grows with the number of samples, not of
+ * steps: about nt eps relative to the motion's size (times the
+ * conditioning of the modes' energy, for a stiff system).
  * n <= MM_MDOF_MAX_STATE_DOF.  Errors: MM_ERANGE (n, h <= 0, nt < 1, k
  * decreasing), MM_EVALUE, MM_ESINGULAR (M singular), MM_ENONFINITE (the
  * motion overflows), MM_ENOMEM. */

@@ -5,7 +5,8 @@
  *                       (k2 = 0 between twins); a rigid-body mode;
  *   vib-absorber:       anti-resonance, the sweep 0 .. omega_max, Den Hartog;
  *   vib-2dof-transient, vib-ndof-transient: the truncation error vanishes
- *                       with every mode kept, and not before;
+ *                       with every mode kept, and not before; a large force
+ *                       leaves the transition matrix its digits;
  *   vib-chain-modes:    the largest chain, its error below n^2 eps;
  *   vib-bar-modes:      rigid-body mode left out; h^2 from both masses;
  *   vib-beam-modes:     beta L of the tables, two rigid modes, h^4,
@@ -170,6 +171,31 @@ static void transients_should_lose_nothing_with_every_mode_kept(void **state)
         cJSON_Delete(d);
     }
     check_abs(prev, 0, 0, "ten modes of ten masses: nothing truncated");
+}
+
+/* Twenty-five 1 g masses, strongly damped, pushed by 3e3 N for one step of
+ * 0.039 s (x_9 = -114 m): the transition matrix's load column f / w was 1.1e4
+ * a step against the mechanics' 10, so expm squared 12 times and was off by
+ * 8.5e-11 m (3400 eps of the motion; the modal sum is right to 6e-14, by
+ * 50 digits), 2.5 times the check's rounding bound.  With the load's state
+ * scaled (mm_mdof_exact) it agrees with the modal sum to a few eps. */
+static void a_large_force_should_not_cost_the_transition_matrix_its_digits(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-ndof-transient", "n=25&m=0.0011815219954385311&k=0.04294435627722371&"
+                        "ends=fixed-fixed&alpha=86.19536485758786&beta=0.4515146737564145&F=-2987.19945686341&"
+                        "p=9&omega=83.03113654419269&modes=16&h=0.038626576468506396&t_end=0.00672991146546028&"
+                        "points=130");
+    const cJSON *c = check_named(d, "vs the coupled system's transition matrix");
+    assert_non_null(c);
+    assert_true(cJSON_IsTrue(cJSON_GetObjectItem(c, "passed")));
+    const cJSON *y = cJSON_GetObjectItem(named(d, "series", "x_p_exact"), "y");
+    assert_int_equal(cJSON_GetArraySize(y), 2);
+    double x = cJSON_GetArrayItem(y, 1)->valuedouble, err = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
+    check_rel(x, -113.98741539646567, 1e-14, "x_9 at h, 50 digits by mpmath");
+    if (!(err < 64 * EPS * fabs(x)))
+        fail_msg("modal sum vs transition matrix: %.3g m, over 64 eps of the motion", err);
+    cJSON_Delete(d);
 }
 
 /* ---- vib-chain-modes -------------------------------------------------------------- */
@@ -417,6 +443,7 @@ int main(void)
         cmocka_unit_test(two_dof_should_count_a_rigid_body_mode),
         cmocka_unit_test(absorber_should_stop_the_main_mass_at_the_tuned_frequency),
         cmocka_unit_test(transients_should_lose_nothing_with_every_mode_kept),
+        cmocka_unit_test(a_large_force_should_not_cost_the_transition_matrix_its_digits),
         cmocka_unit_test(chain_of_1000_masses_should_stay_within_n_squared_eps),
         cmocka_unit_test(bar_modes_should_leave_the_rigid_mode_out_and_converge_like_h2),
         cmocka_unit_test(beam_modes_should_find_the_tabulated_roots_and_h4),
