@@ -280,8 +280,15 @@ int mm_ex_sdof_steady_measure(const mm_sdof *s, const mm_sdof_props *p, int peri
     if (rc != MM_OK)
         return rc;
     *lag = lag_near + remainder(*lag - lag_near, 2 * M_PI);      /* compare angles, not numbers */
-    *X_est = fabs(*X - Xf);
-    *lag_est = fabs(remainder(*lag - lagf, 2 * M_PI));
+    /* the error is one complex number d in the measured X e^{-i lag}: the
+     * runs' difference estimates its size |d|, and each part is within it,
+     * dX <= |d| and d lag <= |d| / X.  Not the parts' own differences: a
+     * small part of d need not shrink with rtol (an overdamped case had its
+     * lag off by 1.77e-13 at rtol and at rtol/10 alike, while |d| fell
+     * from 2.5e-13 X to 2.3e-14 X), so |lag - lagf| = 1e-15 missed it */
+    double dl = remainder(*lag - lagf, 2 * M_PI), d = hypot(*X - Xf, 2 * sqrt(*X * Xf) * sin(0.5 * dl));
+    *X_est = d;
+    *lag_est = *X > 0 ? d / *X : fabs(dl);
     return MM_OK;
 }
 

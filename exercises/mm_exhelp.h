@@ -118,8 +118,11 @@ double mm_ex_roundoff(double radians, double peak);
  * for `periods` forcing periods, 64 samples a period, projected on cos and
  * sin (mm_fourier_harmonic).  *X and *lag receive the amplitude and the lag
  * behind cos(omega t), the lag put within pi of lag_near; *X_est and
- * *lag_est their errors estimated by a second run at rtol / MM_EX_SDOF_REF.  A check
- * of the steady-state formulas that does not use them beyond the start. */
+ * *lag_est their errors estimated by a second run at rtol / MM_EX_SDOF_REF:
+ * the size |d| of the difference of the two X e^{-i lag}, and |d| / X (each
+ * part of an error is within its size; a part's own difference may not
+ * shrink with rtol).  A check of the steady-state formulas that does not
+ * use them beyond the start. */
 int mm_ex_sdof_steady_measure(const mm_sdof *s, const mm_sdof_props *p, int periods,
                               double lag_near, double *X, double *lag, double *X_est,
                               double *lag_est, mm_result *res, mm_error *err);
