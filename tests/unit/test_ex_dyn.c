@@ -281,6 +281,36 @@ static void pendulum_fast_turn_over_the_top_should_keep_its_energy_between_steps
     cJSON_Delete(d);
 }
 
+/* The tolerance study (answers --checks -n 2000): a 9 mm pendulum swung
+ * hard (omega0 = 27.9 against 2 sqrt(g/L) = 43.1), 0.28 rad of motion in 3
+ * steps, failed the energy check 1.03 times over.  Its steps erred 5.5e-12
+ * in the energy; the plot grid, read from DOP853's dense output, 1.1e-9:
+ * mid-step the interpolant erred 1.4 RTOL (1 + |theta'|) in theta'.  The
+ * old bound, RTOL (E0 + g/L)(1 + rate t_end), had no room for it.  It is
+ * now RTOL times the energy's gradient against DOP853's allowance (eq. 8)
+ * times (6 for the dense output + rate t_end), plus rounding: the drift
+ * passes with a fifth of it, and the bound stays within 100x of the
+ * error at the defaults. */
+static void pendulum_short_hard_swing_should_keep_its_energy_on_the_plot_grid(void **state)
+{
+    (void)state;
+    const char *name = "energy: largest drift of theta'^2/2 + (g/L)(1 - cos theta) over the run [1/s^2]";
+    cJSON *d = solve_ok("dyn-pendulum", "L=0.00925525536028067&g=4.302346129853195&theta0=0.006858548812466235&"
+                                        "t_end=0.010169708125491004&omega0=27.862322771159597&points=531");
+    assert_int_equal((int)scalar(d, "motion"), 0);
+    const cJSON *c = find(d, "checks", name);
+    assert_non_null(c);
+    double e = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
+    assert_true(e <= 0.5 * cJSON_GetObjectItem(c, "tolerance")->valuedouble);
+    cJSON_Delete(d);
+    d = solve_ok("dyn-pendulum", "");
+    c = find(d, "checks", name);
+    assert_non_null(c);
+    e = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
+    assert_true(e > 0 && cJSON_GetObjectItem(c, "tolerance")->valuedouble <= 100 * e);
+    cJSON_Delete(d);
+}
+
 /* MM_DRAWS=200: Dormand-Prince at the learner's loose rtol (3.7e-4) over a
  * long chaotic run let its energy run away until its step collapsed: the
  * whole answer was a 422, though the reference and the symplectic run were
@@ -591,6 +621,7 @@ int main(void)
         cmocka_unit_test(pendulum_pushed_over_the_top_should_turn),
         cmocka_unit_test(pendulum_short_run_on_a_fine_grid_should_pass_its_trajectory_check),
         cmocka_unit_test(pendulum_fast_turn_over_the_top_should_keep_its_energy_between_steps),
+        cmocka_unit_test(pendulum_short_hard_swing_should_keep_its_energy_on_the_plot_grid),
         cmocka_unit_test(double_pendulum_loose_dopri5_that_runs_away_should_still_answer),
         cmocka_unit_test(double_pendulum_energy_over_1000_periods_should_stay_bounded_only_when_symplectic),
         cmocka_unit_test(double_pendulum_defaults_should_be_chaotic),
