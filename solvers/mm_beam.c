@@ -247,11 +247,19 @@ int mm_beam_solve(const mm_beam_problem *p, mm_beam **out, mm_error *err)
     b->Vscale = sV + eV[b->nb - 1];
     b->Mscale = sM + eM[b->nb - 1];
 
-    /* the deflection: a particular solution from y = y' = 0 at x = 0, then
-     * y0 + theta0 x added to meet the supports (eq. 7) */
+    /* the deflection: a particular solution from y = y' = 0 at the clamp
+     * or at the pin, swept right to L and back left to 0, then theta0 (x -
+     * a) added to meet the roller (eq. 8).  Not from x = 0 with y0 + theta0
+     * x fitted to both supports: the particular solution at a and b is then
+     * the whole overhang's deflection, and its rounding, divided by b - a,
+     * went into theta0 and out again times the overhang: L / (b - a) times
+     * the rounding (74 eps of y_max on supports 0.031 m apart at x = 30 m).
+     * From the pin, y(b) is summed over [a, b] alone: theta0 is as accurate
+     * as the moment there, and y carries only its own terms' rounding. */
     if (p->EI > 0) {
-        double T = 0, Y = 0, EI = p->EI;
-        for (int k = 0; k < b->nb - 1; k++) {
+        double EI = p->EI, xo = p->kind == MM_BEAM_TWO_SUPPORTS ? p->a : 0, T = 0, Y = 0;
+        int ko = break_at(b, xo);
+        for (int k = ko; k < b->nb - 1; k++) {   /* rightwards from the start */
             double h = b->xs[k + 1] - b->xs[k], q0 = b->q0[k], q1 = b->q1[k], V0 = b->V0[k], M0 = b->M0[k];
             b->T0[k] = T, b->Y0[k] = Y, Yp[k] = Y;
             double dT = h * (M0 + h * (V0 / 2 + h * (q0 / 6 + h * q1 / 24))) / EI;
@@ -260,18 +268,21 @@ int mm_beam_solve(const mm_beam_problem *p, mm_beam **out, mm_error *err)
             Y += dY;
         }
         Yp[b->nb - 1] = Y;
-        double th0 = 0, y0 = 0;
-        if (p->kind == MM_BEAM_TWO_SUPPORTS) {
-            double ya = Yp[break_at(b, p->a)], yb = Yp[break_at(b, p->b)];
-            th0 = (ya - yb) / (p->b - p->a);
-            y0 = -ya - th0 * p->a;
+        double Tr = T, Yr = Y;
+        T = Y = 0;
+        for (int k = ko - 1; k >= 0; k--) {      /* leftwards: segment k's start from its end */
+            double h = b->xs[k + 1] - b->xs[k], q0 = b->q0[k], q1 = b->q1[k], V0 = b->V0[k], M0 = b->M0[k];
+            T -= h * (M0 + h * (V0 / 2 + h * (q0 / 6 + h * q1 / 24))) / EI;
+            Y -= T * h + h * h * (M0 / 2 + h * (V0 / 6 + h * (q0 / 24 + h * q1 / 120))) / EI;
+            b->T0[k] = T, b->Y0[k] = Y, Yp[k] = Y;
         }
+        double th0 = p->kind == MM_BEAM_TWO_SUPPORTS ? -Yp[break_at(b, p->b)] / (p->b - p->a) : 0;
         for (int k = 0; k < b->nb - 1; k++) {
             b->T0[k] += th0;
-            b->Y0[k] += y0 + th0 * b->xs[k];
+            b->Y0[k] += th0 * (b->xs[k] - xo);
         }
-        b->Tend = T + th0;
-        b->Yend = Y + y0 + th0 * p->L;
+        b->Tend = Tr + th0;
+        b->Yend = Yr + th0 * (p->L - xo);
     }
     *out = b;
     return MM_OK;
