@@ -7,8 +7,8 @@
  *     cut where the error estimate is largest until the estimates add up
  *     to the tolerance;
  *   - mm_quad_gl: composite 5-point Gauss-Legendre on m equal panels, m
- *     doubling until two successive results agree (a fixed mesh, refined
- *     everywhere at once).
+ *     doubling until two successive meshes agree panel by panel (a fixed
+ *     mesh, refined everywhere at once).
  * Error estimates are estimates.  mm_quad_gk steers its subdivision by
  * QUADPACK's (|K15 - G7| sharpened by (200 |K15 - G7| / I|f - mean|)^1.5),
  * which for a smooth f overstates the error of K15 by orders of magnitude;
@@ -79,13 +79,17 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
                mm_quad_piece *piece, mm_quad_result *r, mm_error *err);
 
 /* The integral of f over [a, b] by composite 5-point Gauss-Legendre on m
- * equal panels, m = m0, 2 m0, 4 m0, ... <= max_panels, until two successive
- * results differ by at most tol; *err receives that last difference (an
- * estimate that overstates the error of the finer result for a smooth f),
- * *panels the m used.  1 <= m0 <= max_panels <= MM_QUAD_MAX_PANELS.
- * Returns MM_OK (r->converged = 0 when max_panels ran out), MM_EVALUE for
- * bad arguments, MM_ENONFINITE, or f's own return.  r->pieces is the
- * number of panels, r->abs_value the integral of |f|. */
+ * equal panels, m = m0, 2 m0, 4 m0, ... <= max_panels, until two doublings
+ * in a row change the result by at most tol; r->err receives the last
+ * change, summed panel by panel in absolute value: sum over the panels of
+ * the coarser mesh of |(its two halves on the finer) - (it)| (an estimate
+ * that overstates the error of the finer result for a smooth f, and that
+ * errors of opposite sign in different panels cannot cancel; never below
+ * the rounding floor).  1 <= m0 <= max_panels <= MM_QUAD_MAX_PANELS;
+ * 16 max_panels bytes of scratch.  Returns MM_OK (r->converged = 0 when
+ * max_panels ran out), MM_EVALUE for bad arguments, MM_ENOMEM,
+ * MM_ENONFINITE, or f's own return.  r->pieces is the number of panels,
+ * r->abs_value the integral of |f|. */
 int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_panels, double tol,
                mm_quad_result *r, mm_error *err);
 

@@ -9,8 +9,10 @@
  * refined between the samples (golden-section search, eq. 6), and the area
  * under the curve.  The area is computed by two quadrature rules with
  * different error behaviour — adaptive Gauss-Kronrod (7-15 points, eq. 4)
- * and composite 5-point Gauss-Legendre on a mesh refined by halving (eq. 5),
- * both in mm_quad — which must agree within their error estimates; the
+ * and composite 5-point Gauss-Legendre on a mesh refined by halving (eq. 5,
+ * its estimate the halving's change summed panel by panel, which errors
+ * cancelling between panels cannot fool), both in mm_quad — which must
+ * agree within their error estimates; the
  * trapezoid rule on the plot's own samples (eq. 3) is what the drawn
  * polyline encloses.
  * Every printed number carries an error estimate: the extremes are searched

@@ -153,6 +153,31 @@ static void composite_gauss_legendre_should_converge_with_order_ten(void **state
     assert_true(fabs(r.value - exact) <= r.err);
 }
 
+static int f_sin_over_1px2(double x, double *fx, void *p)
+{
+    (void)p;
+    *fx = sin(x) / (x * x + 1);
+    return 0;
+}
+
+static void the_gauss_estimate_should_not_rest_on_panels_cancelling(void **state)
+{
+    (void)state;
+    /* odd f, a mesh point 0.074 from 0 on 1024 panels: the two panels there
+     * err by +-1.23e-7 and cancel to 3e-12, while on 2048 panels the one
+     * across 0 errs by 2.5e-10; |G_2048 - G_1024| (2.22e-10) fell short of
+     * that error (2.25e-10).  Summed panel by panel it is 2.5e-7.  mpmath
+     * quad, split at the multiples of pi: 0.00152629195254315552216996946727 */
+    mm_quad_result r;
+    assert_int_equal(mm_quad_gl(f_sin_over_1px2, NULL, -24.91236337002283, 917.1070996834376, 512, 2048, 1e-11, &r,
+                                NULL), MM_OK);
+    assert_int_equal(r.pieces, 2048);
+    assert_false(r.converged);
+    double e = fabs(r.value - 0.00152629195254315552);
+    assert_true(e > 1e-10);                          /* the case: G_2048 is off */
+    assert_true(e <= r.err);
+}
+
 static void non_finite_values_and_bad_arguments_should_be_named(void **state)
 {
     (void)state;
@@ -205,6 +230,7 @@ int main(void)
         cmocka_unit_test(the_estimate_should_not_overstate_a_smooth_error_by_orders),
         cmocka_unit_test(running_out_of_pieces_should_say_so),
         cmocka_unit_test(composite_gauss_legendre_should_converge_with_order_ten),
+        cmocka_unit_test(the_gauss_estimate_should_not_rest_on_panels_cancelling),
         cmocka_unit_test(non_finite_values_and_bad_arguments_should_be_named),
         cmocka_unit_test(the_partition_should_cover_the_interval),
     };
