@@ -575,11 +575,23 @@ try {
   });
 
   await test('print: a worked solution on A4', async (page) => {
+    // A page learns of print media by its media-query listener, which runs
+    // at the next frame, not when emulateMedia returns: the listener is
+    // slowed by 400 ms here so that a test reading too early fails every time.
+    await page.addInitScript(() => {
+      const add = MediaQueryList.prototype.addEventListener;
+      MediaQueryList.prototype.addEventListener = function (type, fn, o) {
+        const slow = this.media === 'print' && type === 'change' ? (e) => setTimeout(() => fn(e), 400) : fn;
+        return add.call(this, type, slow, o);
+      };
+    });
     await openTypeset(page, server.origin, 'id=vib-sdof-forced');
+    assert.equal(await page.getAttribute('html', 'data-medium'), 'screen');
     const frame0 = await page.$eval('figure.anim .anim-svg [data-name="mass"] polygon', (p) => p.getAttribute('points'));
     await page.$eval('.anim-scrub', (s) => { s.value = '50'; s.dispatchEvent(new Event('input')); });
     assert.notEqual(await page.$eval('figure.anim .anim-svg [data-name="mass"] polygon', (p) => p.getAttribute('points')), frame0);
     await page.emulateMedia({ media: 'print' });
+    await page.waitForFunction(() => document.documentElement.dataset.medium === 'print');
     const vis = await page.evaluate(() => Object.fromEntries(Object.entries({
       form: '#params', theory: '#theory', given: '#print-params table', results: '#scalars', checks: '#checks', figure: 'svg.mm-plot', animation: 'figure.anim .anim-print svg', live: 'figure.anim .anim-svg', controls: '.anim-controls', header: 'header.site', takeaway: '#takeaway',
     }).map(([k, s]) => { const e = document.querySelector(s); return [k, !!e && getComputedStyle(e).display !== 'none' && e.getClientRects().length > 0]; })));

@@ -987,7 +987,11 @@ function themeForMedia() {
   state.theme = th;
   if (state.player) state.player.setTheme(printMq.matches ? animTheme(true) : animTheme());
   redraw();
+  // the medium the figures were last drawn for: the listener runs at the next
+  // frame after the medium changes, so a caller (a test) waits for this
+  document.documentElement.dataset.medium = printMq.matches ? 'print' : 'screen';
 }
+document.documentElement.dataset.medium = printMq.matches ? 'print' : 'screen';
 printMq.addEventListener('change', themeForMedia);
 
 // ---- exercise extensions (web/js/ex/registry.js) ------------------------------------
