@@ -49,9 +49,34 @@ static void blank(char *s, const char *key)
 #define MAX_CHECKS 256
 typedef struct study {
     int n, runs, failed, bad;   /* bad: checks failed, answers lost */
-    char name[MAX_CHECKS][160], at[MAX_CHECKS][1024];
+    char key[MAX_CHECKS][160], name[MAX_CHECKS][160], at[MAX_CHECKS][1024];
     double worst[MAX_CHECKS];
 } study;
+
+/* A check named by a value ("zeta = 0.1: peak height ...") is one check
+ * over the draws: its key has "= #" for each number after an equals sign
+ * (the name shown is the one at the worst draw). */
+static void check_key(const char *name, char *key, size_t size)
+{
+    size_t k = 0;
+    for (const char *p = name; *p && k + 1 < size;) {
+        key[k++] = *p;
+        if (*p++ != '=')
+            continue;
+        while (*p == ' ' && k + 1 < size)
+            key[k++] = *p++;
+        const char *q = p + (*p == '-' || *p == '+');
+        if (*q < '0' || *q > '9')
+            continue;
+        while ((*q >= '0' && *q <= '9') || *q == '.' || ((*q == 'e' || *q == 'E') && q[1] && strchr("+-0123456789", q[1])) ||
+               ((*q == '+' || *q == '-') && (q[-1] == 'e' || q[-1] == 'E')))
+            q++;
+        if (k + 1 < size)
+            key[k++] = '#';
+        p = q;
+    }
+    key[k] = '\0';
+}
 
 static void query_text(const mm_input *in, int n, char *out, size_t size)
 {
@@ -96,16 +121,19 @@ static void learn(study *st, const mm_exercise *ex, const mm_input *in, int n)
             st->bad++;
             printf("   FAILED %s at %s\n", name ? name : "?", n ? q : "the defaults");
         }
+        char key[160];
+        check_key(name ? name : "?", key, sizeof key);
         int k = 0;
-        while (k < st->n && strcmp(st->name[k], name ? name : "?") != 0)
+        while (k < st->n && strcmp(st->key[k], key) != 0)
             k++;
         if (k == st->n && st->n < MAX_CHECKS) {
-            snprintf(st->name[k], sizeof st->name[k], "%s", name ? name : "?");
+            snprintf(st->key[k], sizeof st->key[k], "%s", key);
             st->worst[k] = -1;
             st->n++;
         }
         if (k < st->n && (use > st->worst[k] || isnan(use))) {
             st->worst[k] = use;
+            snprintf(st->name[k], sizeof st->name[k], "%s", name ? name : "?");
             snprintf(st->at[k], sizeof st->at[k], "%s", n ? q : "the defaults");
         }
     }
