@@ -6,6 +6,7 @@
 
 #include "mm_elliptic.h"
 #include "mm_exhelp.h"
+#include "mm_opt.h"
 #include "mm_pendulum.h"
 #include "mm_roots.h"
 #include "mm_scene.h"
@@ -180,40 +181,29 @@ static double abs_tau(const peak_ctx *c, double t)
     return fabs(tau[c->j]);
 }
 
-/* Sample on nt points, then golden-section search around the best sample.
- * The maximum found is attained (a lower bound); the true one exceeds it by
- * at most |tau''| w^2 / 8 over the final bracket w, estimated from second
- * differences. */
+static int abs_tau_fn(double t, double *f, void *ctx)
+{
+    *f = abs_tau(ctx, t);
+    return 0;
+}
+
+/* Sample on 2001 points, then golden-section search around the best
+ * sample (mm_opt_scan_golden_max).  The maximum found is attained (a lower
+ * bound); the true one exceeds it by at most |tau''| w^2 / 8 over the final
+ * bracket w, estimated from second differences. */
 double mm_dyn_plan_peak(const mm_dyn_plan *p, int j, double *t_at, double *err)
 {
     peak_ctx c = {p, j};
     enum { NT = 2001 };
-    int best = 0;
-    double vbest = -1;
-    for (int i = 0; i < NT; i++) {
-        double v = abs_tau(&c, p->T * i / (NT - 1));
-        if (v > vbest)
-            vbest = v, best = i;
-    }
-    double a = p->T * (best > 0 ? best - 1 : 0) / (NT - 1), b = p->T * (best < NT - 1 ? best + 1 : NT - 1) / (NT - 1);
-    const double r = 0.6180339887498949;
-    double x1 = b - r * (b - a), x2 = a + r * (b - a), f1 = abs_tau(&c, x1), f2 = abs_tau(&c, x2);
-    for (int it = 0; it < 80 && b - a > 4 * DBL_EPSILON * fmax(fabs(a), fabs(b)); it++) {
-        if (f1 > f2) {
-            b = x2, x2 = x1, f2 = f1;
-            x1 = b - r * (b - a), f1 = abs_tau(&c, x1);
-        } else {
-            a = x1, x1 = x2, f1 = f2;
-            x2 = a + r * (b - a), f2 = abs_tau(&c, x2);
-        }
-    }
-    double t = f1 > f2 ? x1 : x2, v = fmax(f1, fmax(f2, vbest));
-    if (vbest >= fmax(f1, f2))
-        t = p->T * best / (NT - 1);                /* an end point or a kink of |tau| */
+    mm_opt_result o;
+    mm_error e = {0};
+    if (mm_opt_scan_golden_max(abs_tau_fn, &c, p->T / (NT - 1), NT - 1, 4 * DBL_EPSILON * p->T, 200, &o, &e) != MM_OK)
+        return *t_at = NAN, *err = NAN, NAN;      /* a torque that is not finite */
+    double t = o.x, v = o.fx;
     double h = 1e-3 * p->T, tm = fmax(t - h, 0), tp = fmin(t + h, p->T);
     double curv = fabs(abs_tau(&c, tp) - 2 * abs_tau(&c, 0.5 * (tm + tp)) + abs_tau(&c, tm)) /
                   (0.25 * (tp - tm) * (tp - tm));
-    double w = fmax(b - a, 4 * DBL_EPSILON * p->T);
+    double w = fmax(o.bracket, 4 * DBL_EPSILON * p->T);
     *t_at = t;
     *err = curv * w * w / 8 + 4 * DBL_EPSILON * v;
     return v;
@@ -224,33 +214,28 @@ double mm_dyn_plan_peak(const mm_dyn_plan *p, int j, double *t_at, double *err)
 /* The extremes of the effective inertia J(phi) (eq. 5) over a turn: 720
  * samples, each refined by golden sections.  J is even about 0 and pi, so
  * half a turn is enough. */
+typedef struct inertia_ctx {
+    const mm_slider_crank *s;
+    double sign;
+} inertia_ctx;
+
+static int signed_inertia(double phi, double *f, void *ctx)
+{
+    const inertia_ctx *c = ctx;
+    *f = c->sign * mm_sc_inertia(c->s, phi, NULL);
+    return 0;
+}
+
 void mm_dyn_sc_inertia_range(const mm_slider_crank *s, double *Jmin, double *Jmax)
 {
     enum { NS = 360 };
-    *Jmin = INFINITY, *Jmax = 0;
-    for (int sign = -1; sign <= 1; sign += 2) {
-        int best = 0;
-        double vb = -INFINITY;
-        for (int i = 0; i <= NS; i++) {
-            double v = sign * mm_sc_inertia(s, M_PI * i / NS, NULL);
-            if (v > vb)
-                vb = v, best = i;
-        }
-        double a = M_PI * fmax(best - 1, 0) / NS, b = M_PI * fmin(best + 1, NS) / NS, g = 0.6180339887498949;
-        double x1 = b - g * (b - a), x2 = a + g * (b - a);
-        double f1 = sign * mm_sc_inertia(s, x1, NULL), f2 = sign * mm_sc_inertia(s, x2, NULL);
-        for (int it = 0; it < 60; it++) {
-            if (f1 > f2) {
-                b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = sign * mm_sc_inertia(s, x1, NULL);
-            } else {
-                a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = sign * mm_sc_inertia(s, x2, NULL);
-            }
-        }
-        double v = fmax(vb, fmax(f1, f2)) * sign;
-        if (sign < 0)
-            *Jmin = v;
-        else
-            *Jmax = v;
+    for (int k = 0; k < 2; k++) {
+        inertia_ctx c = {s, k ? 1 : -1};
+        mm_opt_result o;
+        mm_error e = {0};
+        double v = mm_opt_scan_golden_max(signed_inertia, &c, M_PI / NS, NS, 4 * DBL_EPSILON * M_PI, 200, &o, &e) == MM_OK
+                       ? c.sign * o.fx : NAN;
+        *(k ? Jmax : Jmin) = v;
     }
 }
 

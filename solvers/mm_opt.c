@@ -123,9 +123,14 @@ int mm_opt_scan_golden_max(mm_opt_fn f, void *params, double step, int n, double
     double best = -INFINITY, fx;
     int ib = 0;
     for (int i = 0; i <= n; i++) {
-        f(i * step, &fx, params);
+        int rc = f(i * step, &fx, params);
+        if (rc != 0)
+            return rc;
         if (fx > best)
             best = fx, ib = i;
     }
-    return mm_opt_golden_max(f, params, fmax(ib - 1, 0) * step, (ib + 1) * step, tol, max_evals, res, err);
+    int rc = mm_opt_golden_max(f, params, fmax(ib - 1, 0) * step, fmin(ib + 1, n) * step, tol, max_evals, res, err);
+    if (rc == MM_OK && best >= res->fx)          /* the sample is as high (an end, or a kink) */
+        res->x = ib * step, res->fx = best;
+    return rc;
 }

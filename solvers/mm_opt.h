@@ -70,10 +70,14 @@ void mm_opt_refine_extreme(mm_opt_fn_err f, void *params, double s, double x0, d
 
 /* The largest value of f over the grid x_i = i step, i = 0 .. n (step >
  * 0), the first largest one at x_ib, refined by mm_opt_golden_max on
- * [x_{max(ib-1, 0)}, x_{ib+1}] to tol within max_evals evaluations: the
- * global maximum of a function whose peaks are wider than 2 step.  res as
- * mm_opt_golden_max's (its evals those of the golden sections alone).
- * Returns what mm_opt_golden_max returns. */
+ * [x_{max(ib-1, 0)}, x_{min(ib+1, n)}] (never outside the grid) to tol
+ * within max_evals evaluations: the global maximum of a function whose
+ * peaks are wider than 2 step.  res as mm_opt_golden_max's (its evals those
+ * of the golden sections alone), except that a sample higher than what the
+ * golden sections found, or as high (a maximum at an end of the grid, or
+ * at a kink), is
+ * returned itself.  Returns f's nonzero return, or what mm_opt_golden_max
+ * returns. */
 int mm_opt_scan_golden_max(mm_opt_fn f, void *params, double step, int n, double tol, int max_evals,
                            mm_opt_result *res, mm_error *err);
 

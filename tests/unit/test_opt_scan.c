@@ -24,6 +24,29 @@ static int falling(double x, double *fx, void *params)
     return 0;
 }
 
+/* rising to the grid's right end x = 5, and not defined past it (as a
+ * planned motion is not past its end, or an angle past its period) */
+static int rising(double x, double *fx, void *params)
+{
+    double *past = params;
+    if (x > 5)
+        *past = fmax(*past, x);
+    *fx = x > 5 ? 1e300 : x * x;
+    return 0;
+}
+
+static void scan_then_golden_should_stay_on_the_grid_and_keep_an_end_sample(void **state)
+{
+    (void)state;
+    mm_opt_result r;
+    mm_error err;
+    double past = 0;
+    assert_int_equal(mm_opt_scan_golden_max(rising, &past, 0.5, 10, 1e-12, 200, &r, &err), MM_OK);
+    check_abs(past, 0, 0, "no point past the grid's end was asked for");
+    check_abs(r.x, 5, 0, "the end itself (its sample is the largest value)");
+    check_abs(r.fx, 25, 0, "f there");
+}
+
 static void scan_then_golden_should_find_the_taller_bump(void **state)
 {
     (void)state;
@@ -45,6 +68,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(scan_then_golden_should_find_the_taller_bump),
+        cmocka_unit_test(scan_then_golden_should_stay_on_the_grid_and_keep_an_end_sample),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
