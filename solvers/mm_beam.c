@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mm_dd.h"
+
 struct mm_beam {
     double L, EI, a, b;
     mm_beam_kind kind;
@@ -102,11 +104,134 @@ static int break_at(const mm_beam *b, double x)
     return lo;
 }
 
-/* integral over a linear load of q (x - o) dx: (x1 - o) W + l^2 (q1/6 + q2/3) */
-static double dist_moment(const double *r, double o)
+/* ---- the loads' sums, exactly ---------------------------------------------------
+ * A reaction is a sum of the loads' forces or moments (over b - a), and
+ * those terms may cancel to a small part of themselves (a clamp couple of
+ * 1.23 N m from moments of 1.5e6 N m): summed in double, each term's
+ * rounding, 1e-16 of 1.5e6, was 5e-11 of the result, printed as exact.  So
+ * the sums are kept exactly, as a sum of doubles that do not overlap
+ * (Shewchuk's partials, the algorithm of Python's math.fsum), every term
+ * split exactly into doubles first (a product by fma, a sum by TwoSum):
+ * only the last division rounds.  Exact unless a product falls below
+ * 1e-292 (it then loses bits to underflow, 1e-323 absolute each) or the
+ * partials pass XS_MAX (see xs_add). */
+enum { XS_MAX = 128 };
+typedef struct xsum {
+    int n;
+    double p[XS_MAX];                  /* ascending magnitude, non-overlapping; their sum is exact */
+} xsum;
+
+/* s += x exactly.  The parts share no bit, so each takes one bit of the
+ * exponent range at least: full (inputs spread over 2^128 in size, never
+ * these loads), the two smallest are merged, rounding by less than 2^-170
+ * of the largest part. */
+static void xs_add(xsum *s, double x)
 {
-    double l = r[1] - r[0], W = 0.5 * (r[2] + r[3]) * l;
-    return (r[0] - o) * W + l * l * (r[2] / 6 + r[3] / 3);
+    if (s->n == XS_MAX) {
+        s->p[1] += s->p[0];
+        memmove(s->p, s->p + 1, (XS_MAX - 1) * sizeof *s->p);
+        s->n--;
+    }
+    int j = 0;
+    for (int i = 0; i < s->n; i++) {
+        double y = s->p[i];
+        if (fabs(x) < fabs(y)) {
+            double t = x;
+            x = y, y = t;
+        }
+        double hi = x + y, lo = y - (hi - x);   /* x + y = hi + lo exactly (|x| >= |y|) */
+        if (lo != 0)
+            s->p[j++] = lo;
+        x = hi;
+    }
+    s->p[j++] = x;
+    s->n = j;
+}
+
+/* s += a b c exactly: a and b sums of doubles, c a double; each product of
+ * two doubles is p + e exactly (fma), so a b c is 4 n_a n_b doubles */
+static void xs_add_prod(xsum *s, const xsum *a, const xsum *b, double c)
+{
+    for (int i = 0; i < a->n; i++)
+        for (int j = 0; j < b->n; j++) {
+            double p = a->p[i] * b->p[j], e = fma(a->p[i], b->p[j], -p);
+            double pc = p * c, ec = e * c;
+            xs_add(s, pc);
+            xs_add(s, fma(p, c, -pc));
+            xs_add(s, ec);
+            xs_add(s, fma(e, c, -ec));
+        }
+}
+
+/* the exact sum of up to three doubles */
+static xsum xs_of(int n, double x0, double x1, double x2)
+{
+    xsum s = {0};
+    const double x[3] = {x0, x1, x2};
+    for (int i = 0; i < n; i++)
+        xs_add(&s, x[i]);
+    return s;
+}
+
+/* the sum as double-double, within u^2 of it (u = 2^-53): the partials
+ * compressed (Shewchuk's Compress: two sweeps of TwoSum, top down then
+ * bottom up) so that the rest lies within half an ulp of the largest, then
+ * the two largest.  (The partials as they stand need not: 1 - 0.11..1 in
+ * binary is a tiny sum of two large parts.) */
+static mm_dd xs_dd(const xsum *s)
+{
+    if (s->n == 0)
+        return mm_dd_from(0);
+    double g[XS_MAX], Q = s->p[s->n - 1];
+    int bottom = s->n - 1;
+    for (int i = s->n - 2; i >= 0; i--) {
+        mm_dd t = mm_dd_two_sum(Q, s->p[i]);
+        if (t.lo != 0)
+            g[bottom--] = t.hi, Q = t.lo;
+        else
+            Q = t.hi;
+    }
+    g[bottom] = Q;
+    double top = 0, next = 0;
+    for (int i = bottom + 1; i < s->n; i++) {
+        mm_dd t = mm_dd_two_sum(g[i], Q);
+        if (t.lo != 0)
+            next = t.lo;
+        Q = t.hi;
+    }
+    top = Q;
+    return (mm_dd){top, next};
+}
+
+/* The loads' resultant *F and six times their moment about o, *M6 (sum of
+ * F (x - o), of the integrals of q (x - o), and of the couples), exactly.
+ * A linear load from q1 at x1 to q2 at x2 (l = x2 - x1): resultant
+ * l (q1 + q2) / 2 and moment l [q1 (2 x1 + x2 - 3 o) + q2 (x1 + 2 x2 - 3 o)] / 6
+ * (eq. 3's integral; six times it has no division). */
+static void load_sums(const mm_beam_problem *p, double o, xsum *F, xsum *M6)
+{
+    *F = (xsum){0}, *M6 = (xsum){0};
+    const xsum one = xs_of(1, 1, 0, 0);
+    for (int i = 0; i < p->n_point; i++) {
+        const double *r = p->point + 2 * i;
+        xs_add(F, r[1]);
+        xsum arm = xs_of(2, r[0], -o, 0), f = xs_of(1, r[1], 0, 0);
+        xs_add_prod(M6, &arm, &f, 6);
+    }
+    for (int i = 0; i < p->n_dist; i++) {
+        const double *r = p->dist + 4 * i;
+        xsum l = xs_of(2, r[1], -r[0], 0), q = xs_of(2, r[2], r[3], 0);
+        xs_add_prod(F, &l, &q, 0.5);
+        xsum a1 = xs_of(2, 2 * r[0], r[1], 0), a2 = xs_of(2, r[0], 2 * r[1], 0), o3 = xs_of(1, -o, 0, 0);
+        xs_add_prod(&a1, &o3, &one, 3);
+        xs_add_prod(&a2, &o3, &one, 3);
+        xs_add_prod(M6, &l, &a1, r[2]);
+        xs_add_prod(M6, &l, &a2, r[3]);
+    }
+    for (int i = 0; i < p->n_moment; i++) {
+        xsum c = xs_of(1, p->moment[2 * i + 1], 0, 0);
+        xs_add_prod(M6, &c, &one, 6);
+    }
 }
 
 int mm_beam_solve(const mm_beam_problem *p, mm_beam **out, mm_error *err)
@@ -153,47 +278,34 @@ int mm_beam_solve(const mm_beam_problem *p, mm_beam **out, mm_error *err)
             b->xs[u++] = b->xs[i];
     b->nb = u;
 
-    /* the reactions, eqs. (2)-(3): sum of forces and of moments; sF and sMo
-     * the magnitudes summed into them, and es[k] those of reaction k: what
-     * its rounding is measured against (a reaction from terms that cancel,
-     * e.g. a load next to a support, is small but as uncertain as they) */
-    double F = 0, Mo = 0, sF = 0, sMo = 0, o = p->kind == MM_BEAM_TWO_SUPPORTS ? p->a : 0, es[2] = {0, 0};
-    for (int i = 0; i < p->n_point; i++) {
-        F += p->point[2 * i + 1];
-        Mo += p->point[2 * i + 1] * (p->point[2 * i] - o);
-        sF += fabs(p->point[2 * i + 1]);
-        sMo += fabs(p->point[2 * i + 1] * (p->point[2 * i] - o));
-    }
-    for (int i = 0; i < p->n_dist; i++) {
-        const double *r = p->dist + 4 * i;
-        double l = r[1] - r[0];
-        F += 0.5 * (r[2] + r[3]) * l;
-        Mo += dist_moment(r, o);
-        sF += 0.5 * (fabs(r[2]) + fabs(r[3])) * l;
-        sMo += 0.5 * (fabs(r[2]) + fabs(r[3])) * l * fabs(r[0] - o) + l * l * (fabs(r[2]) / 6 + fabs(r[3]) / 3);
-    }
-    for (int i = 0; i < p->n_moment; i++) {
-        Mo += p->moment[2 * i + 1];
-        sMo += fabs(p->moment[2 * i + 1]);
-    }
+    /* the reactions, eqs. (2)-(3), each from the loads' sums taken exactly
+     * (load_sums) and one division: right to rounding however much the
+     * loads' terms cancel in it.  Pin and roller each from the moments
+     * about the other support (not one from the other by eq. 2, which
+     * would add the other's rounding).  Each is within half an ulp and
+     * 1e-30 of itself (the double-double division) of the exact value */
+    xsum F, M6;
     if (p->kind == MM_BEAM_TWO_SUPPORTS) {
+        xsum Fb, M6b, gap = xs_of(2, p->b, -p->a, 0);
+        load_sums(p, p->a, &F, &M6);
+        load_sums(p, p->b, &Fb, &M6b);
+        mm_dd d6 = mm_dd_mul_d(xs_dd(&gap), 6);  /* 6 (b - a) */
         b->nr = 2;
         b->rx[0] = p->a, b->rx[1] = p->b;
-        b->ry[1] = -Mo / (p->b - p->a);          /* moments about the pin */
-        b->ry[0] = -F - b->ry[1];
+        b->ry[0] = mm_dd_val(mm_dd_div(xs_dd(&M6b), d6));            /* moments about the roller */
+        b->ry[1] = -mm_dd_val(mm_dd_div(xs_dd(&M6), d6));            /* about the pin */
         b->rc[0] = b->rc[1] = 0;
-        es[1] = sMo / (p->b - p->a);
-        es[0] = sF + es[1];
     } else {
+        load_sums(p, 0, &F, &M6);
         b->nr = 1;
         b->rx[0] = 0;
-        b->ry[0] = -F;
-        b->rc[0] = -Mo;                          /* the clamp's couple */
-        es[0] = sF;
+        b->ry[0] = -mm_dd_val(xs_dd(&F));
+        b->rc[0] = -mm_dd_val(mm_dd_div(xs_dd(&M6), mm_dd_from(6)));  /* the clamp's couple */
     }
 
     /* jumps and the distributed intensity of each segment; eV and eM the
-     * magnitudes each jump was computed from: a load's own, a reaction's es */
+     * magnitudes each jump was computed from: a load's own, a reaction's
+     * own too (it is right to rounding) */
     for (int i = 0; i < p->n_point; i++) {
         int j = break_at(b, p->point[2 * i]);
         b->dV[j] += p->point[2 * i + 1];
@@ -203,8 +315,8 @@ int mm_beam_solve(const mm_beam_problem *p, mm_beam **out, mm_error *err)
         int j = break_at(b, b->rx[k]);
         b->dV[j] += b->ry[k];
         b->dM[j] -= b->rc[k];
-        eV[j] += es[k];
-        eM[j] += p->kind == MM_BEAM_CANTILEVER ? sMo : 0;
+        eV[j] += fabs(b->ry[k]);
+        eM[j] += fabs(b->rc[k]);
     }
     for (int i = 0; i < p->n_moment; i++) {
         int j = break_at(b, p->moment[2 * i]);

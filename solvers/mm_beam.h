@@ -75,7 +75,11 @@ void mm_beam_free(mm_beam *b);
 
 /* The reactions: their number (2, or 1 for a cantilever), positions x[],
  * vertical forces Ry[] [N] and couples C[] [N m] (the clamp's; 0 for pin
- * and roller).  Arrays of 2.  Cannot fail. */
+ * and roller).  Arrays of 2.  Right to rounding (within half an ulp and
+ * 1e-30 relative) however much the loads' terms cancel in them: the
+ * loads' forces and moments are summed exactly, only one division rounds
+ * (pin and roller each from the moments about the other support).  Cannot
+ * fail. */
 int mm_beam_reactions(const mm_beam *b, double *x, double *Ry, double *C);
 
 /* The breakpoints: their count, and *x pointing at them (sorted, 0 first,
@@ -97,9 +101,10 @@ void mm_beam_eval(const mm_beam *b, double x, int side, mm_beam_value *v);
  * equilibrium, rounding otherwise (a second route: reactions from two
  * equations, diagrams summed load by load).  *scale receives the sum of
  * the magnitudes summed into them, each term counted by the magnitudes it
- * was itself computed from (a reaction by the loads' forces and moments,
- * however much they cancel in it), and for M every segment's V h counted
- * as (that sum for V so far) h: V's rounding carried along the segment.
+ * was itself computed from (a load or a reaction by its own: the
+ * reactions are right to rounding; q on a segment by its terms), and for
+ * M every segment's V h counted as (that sum for V so far) h: V's
+ * rounding carried along the segment.
  * Rounding is a small multiple of DBL_EPSILON times it.  Cannot fail. */
 void mm_beam_closure(const mm_beam *b, double *V_end, double *M_end, double *V_scale, double *M_scale);
 

@@ -260,6 +260,39 @@ static void a_see_saw_on_close_supports_should_deflect_to_the_rounding(void **st
     mm_beam_free(b);
 }
 
+/* Loads whose forces and moments nearly cancel: a cantilever whose clamp
+ * takes 0.01 N and 1.23 N m from loads of 3e5 N and moments of 1.5e6 N m,
+ * and a simply supported beam both of whose reactions are 0.02 N or less
+ * from loads of 1e5 N.  The reactions are the loads' sums: summed in
+ * double, each term's rounding (1e-16 of 1.5e6 N m) was 4e-11 to 2e-10 of
+ * the result, printed as exact (clamp couple 1.2345333334524184, exact
+ * 1.2345333333866024).  The values below are those of exact rational
+ * arithmetic on these doubles (python3 fractions), correctly rounded; the
+ * reactions must be right to rounding: within an ulp, EPS |R|. */
+static void reactions_should_be_right_to_rounding_when_the_loads_cancel(void **state)
+{
+    (void)state;
+    double x[2], R[2], C[2];
+    double pt[6] = {9.7, 1e5, 3.3, -293939.7, 7.9, 191050.83}, d[4] = {1.1, 6.3, -1234.5, 2345.6},
+           c[2] = {5.5, -1528057.7222};
+    mm_beam_problem p = {.L = 10, .kind = MM_BEAM_CANTILEVER, .n_point = 3, .point = pt, .n_dist = 1, .dist = d,
+                         .n_moment = 1, .moment = c};
+    mm_beam *b = solved(&p);
+    assert_int_equal(mm_beam_reactions(b, x, R, C), 1);
+    check_rel(R[0], 0.010000000024831715, EPS, "the clamp's force, to rounding");
+    check_rel(C[0], 1.2345333333866024, EPS, "the clamp's couple, to rounding");
+    mm_beam_free(b);
+    double pt2[6] = {1.3, 98765.4321, 4.1, -61234.5678, 3.9, -18086.4093}, d2[4] = {2.2, 5.7, -12345.6, 1234.5},
+           c2[2] = {0.7, 256146.1725};
+    mm_beam_problem s = {.L = 6, .kind = MM_BEAM_TWO_SUPPORTS, .a = 0, .b = 6, .n_point = 3, .point = pt2,
+                         .n_dist = 1, .dist = d2, .n_moment = 1, .moment = c2};
+    b = solved(&s);
+    assert_int_equal(mm_beam_reactions(b, x, R, C), 2);
+    check_rel(R[0], -0.02167000000342127, EPS, "the pin's, to rounding");
+    check_rel(R[1], -0.008330000004964273, EPS, "the roller's, to rounding");
+    mm_beam_free(b);
+}
+
 static void bad_beams_should_be_refused_naming_the_parameter(void **state)
 {
     (void)state;
@@ -301,6 +334,7 @@ int main(void)
         cmocka_unit_test(a_load_exactly_on_a_support_should_go_straight_into_it),
         cmocka_unit_test(virtual_work_should_match_the_double_integration),
         cmocka_unit_test(a_see_saw_on_close_supports_should_deflect_to_the_rounding),
+        cmocka_unit_test(reactions_should_be_right_to_rounding_when_the_loads_cancel),
         cmocka_unit_test(bad_beams_should_be_refused_naming_the_parameter),
     };
     return cmocka_run_group_tests_name("beam", tests, NULL, NULL);
