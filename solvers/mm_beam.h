@@ -20,7 +20,10 @@
  * The solution is kept per segment between breakpoints (the ends, the
  * supports, every point load and couple, the ends of every distributed
  * load): on a segment q is linear, V quadratic, M cubic, the slope quartic
- * and y quintic, all in closed form from the segment's start.
+ * and y quintic, all in closed form from the segment's start.  V and M at
+ * a segment's start come from the loads left of it (a sweep from x = 0)
+ * or right of it (from x = L), whichever sums the smaller magnitudes: a
+ * sweep carries the rounding of all it has passed, reactions included.
  *
  * No globals; mm_beam_solve allocates the solution, mm_beam_free releases it.
  */
@@ -99,7 +102,8 @@ void mm_beam_eval(const mm_beam *b, double x, int side, mm_beam_value *v);
 
 /* V and M just right of x = L after every jump there: zero for a beam in
  * equilibrium, rounding otherwise (a second route: reactions from two
- * equations, diagrams summed load by load).  *scale receives the sum of
+ * equations, diagrams summed load by load from x = 0, whichever sweep the
+ * diagrams kept).  *scale receives the sum of
  * the magnitudes summed into them, each term counted by the magnitudes it
  * was itself computed from (a load or a reaction by its own: the
  * reactions are right to rounding; q on a segment by its terms), and for

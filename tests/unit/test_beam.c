@@ -293,6 +293,78 @@ static void reactions_should_be_right_to_rounding_when_the_loads_cancel(void **s
     mm_beam_free(b);
 }
 
+/* Supports close together, loads on both sides: 87.3 m, the pin at 3.7 m,
+ * the roller 1e-6 L (8.73e-5 m) or one ulp (4.4e-16 m) to its right, the
+ * reactions 1.2e10 N or 2.4e21 N.  V and M right of the roller used to be
+ * swept from x = 0 through both reactions, whose rounding (eps F L / (b -
+ * a) in V, times up to L - b in M) is L / (b - a) times M's own: the tip's
+ * deflection was off by 2.5e-11 (1e-6 L; 1760 times y_max's printed error
+ * of 64 eps) and by 91 % (one ulp), the line and virtual work alike.  The
+ * values below are exact rational arithmetic on these doubles (python3
+ * fractions), correctly rounded.  Tolerances: M and V by a few roundings
+ * of their terms (8 eps); y by 16 eps, its quintic's terms summed over the
+ * segments from the pin. */
+static void supports_close_together_should_not_amplify_the_rounding(void **state)
+{
+    (void)state;
+    double pt[4] = {1.9, -4321.987, 86.1, -1234.5678}, d[8] = {0.2, 3.1, -310.7, -95.3, 20.3, 80.9, -77.7, -512.3};
+    const double bs[2] = {3.7000873, 3.7000000000000006};
+    const double y0[2] = {-0.006657968581272576, -0.00664327925202091},
+                 yL[2] = {-508.7370779570402, -508.7383805483218};
+    for (int k = 0; k < 2; k++) {
+        mm_beam_problem p = {.L = 87.3, .kind = MM_BEAM_TWO_SUPPORTS, .a = 3.7, .b = bs[k], .n_point = 2,
+                             .point = pt, .n_dist = 2, .dist = d, .EI = 4e6};
+        mm_beam *b = solved(&p);
+        mm_beam_value v;
+        mm_beam_eval(b, 50, 1, &v);
+        check_rel(v.M, -253877.69040178222, 8 * EPS, "M at 50 m, right of the roller");
+        check_rel(v.V, 13640.871908910893, 8 * EPS, "V at 50 m");
+        mm_beam_eval(b, 87.3, -1, &v);
+        check_abs(v.M, 0, 0, "no M right of the last load (exactly)");
+        check_rel(v.y, yL[k], 16 * EPS, "the tip's deflection");
+        double yv, yvs;
+        assert_int_equal(mm_beam_unit_load(b, 87.3, &yv, &yvs, NULL), MM_OK);
+        check_rel(yv, yL[k], 16 * EPS, "and by virtual work");
+        mm_beam_eval(b, 0, 1, &v);
+        check_rel(v.y, y0[k], 16 * EPS, "the left end's deflection");
+        double ym, xm;
+        mm_beam_extreme_y(b, &ym, &xm);
+        check_abs(xm, 87.3, 0, "largest at the tip");
+        check_abs(ym, yL[k], 64 * EPS * yvs, "y_max within its printed error, 64 eps of its scale");
+        mm_beam_free(b);
+    }
+}
+
+/* A cantilever whose loads, all between 33 and 38.4 m of a 60.5 m beam,
+ * nearly balance (the clamp takes 0.91 N and 0.05 N m): past them M is 0
+ * exactly, but swept from the clamp it was the loads' rounding, 2.4e-11 N
+ * m, and bent over the 22 m free arm it put the tip's deflection off by
+ * 34 times y_max's printed error (64 eps of its scale), 1.5 times with the
+ * reactions right to rounding.  Exact values: python3 fractions on these
+ * doubles.  Tolerances as above. */
+static void a_cantilever_whose_loads_balance_should_not_bend_their_rounding(void **state)
+{
+    (void)state;
+    double pt[4] = {34.2745, 7323.738, 38.364, 594.348}, d[4] = {33.403, 35.307, -5840.95, -2475.41},
+           c[2] = {36.421, -2841.2731};
+    mm_beam_problem p = {.L = 60.472, .kind = MM_BEAM_CANTILEVER, .n_point = 2, .point = pt, .n_dist = 1, .dist = d,
+                         .n_moment = 1, .moment = c, .EI = 4e6};
+    mm_beam *b = solved(&p);
+    mm_beam_value v;
+    mm_beam_eval(b, 20, 1, &v);
+    check_rel(v.M, -18.27733121350966, 8 * EPS, "M at 20 m, left of the loads");
+    check_rel(v.y, -0.00030634656068472747, 16 * EPS, "y at 20 m");
+    double ym, xm, yv, yvs;
+    mm_beam_extreme_y(b, &ym, &xm);
+    check_abs(xm, 60.472, 0, "largest at the tip");
+    check_rel(ym, -0.019968182455595732, 16 * EPS, "the tip's deflection");
+    assert_int_equal(mm_beam_unit_load(b, xm, &yv, &yvs, NULL), MM_OK);
+    check_abs(ym, -0.019968182455595732, 64 * EPS * yvs, "within y_max's printed error");
+    mm_beam_eval(b, 50, 1, &v);
+    check_abs(v.M, 0, 0, "no M past the loads (exactly)");
+    mm_beam_free(b);
+}
+
 static void bad_beams_should_be_refused_naming_the_parameter(void **state)
 {
     (void)state;
@@ -335,6 +407,8 @@ int main(void)
         cmocka_unit_test(virtual_work_should_match_the_double_integration),
         cmocka_unit_test(a_see_saw_on_close_supports_should_deflect_to_the_rounding),
         cmocka_unit_test(reactions_should_be_right_to_rounding_when_the_loads_cancel),
+        cmocka_unit_test(supports_close_together_should_not_amplify_the_rounding),
+        cmocka_unit_test(a_cantilever_whose_loads_balance_should_not_bend_their_rounding),
         cmocka_unit_test(bad_beams_should_be_refused_naming_the_parameter),
     };
     return cmocka_run_group_tests_name("beam", tests, NULL, NULL);
