@@ -5,6 +5,8 @@
 #include <float.h>
 #include <string.h>
 
+#include "mm_dd.h"
+
 /* ---- 3x3 matrices and rotations ------------------------------------------------ */
 
 void mm_geom_m3_mul(const double A[9], const double B[9], double C[9])
@@ -271,6 +273,62 @@ int mm_geom_circumcircle(mm_v2 a, mm_v2 b, mm_v2 c, mm_v2 *centre, double *radiu
     *centre = mm_v2_add(a, o);
     *radius = R;
     return 1;
+}
+
+/* the error of x y for x, y known within ex, ey, rounded within unit of it */
+static double prod_err(double x, double ex, double y, double ey, double unit)
+{
+    return fabs(x) * ey + fabs(y) * ex + ex * ey + unit * fabs(x * y);
+}
+
+/* A bound of the rounding of |o|, o = (C.y bb - B.y cc, B.x cc - C.x bb) /
+ * (2 B x C), from exact B and C, each operation within unit of its result
+ * and the root within 2 unit: a running error analysis. */
+static double circumradius_rounding(mm_v2 B, mm_v2 C, double unit)
+{
+    double cr = mm_v2_cross(B, C), den = 2 * cr;
+    double e_den = 2 * (prod_err(B.x, 0, C.y, 0, unit) + prod_err(B.y, 0, C.x, 0, unit) + unit * fabs(cr));
+    double bb = mm_v2_dot(B, B), cc = mm_v2_dot(C, C), e_bb = 2 * unit * bb, e_cc = 2 * unit * cc;
+    double nx = C.y * bb - B.y * cc, ny = B.x * cc - C.x * bb;
+    double e_nx = prod_err(C.y, 0, bb, e_bb, unit) + prod_err(B.y, 0, cc, e_cc, unit) + unit * fabs(nx);
+    double e_ny = prod_err(B.x, 0, cc, e_cc, unit) + prod_err(C.x, 0, bb, e_bb, unit) + unit * fabs(ny);
+    if (!(e_den < fabs(den)))
+        return INFINITY;
+    double ox = nx / den, oy = ny / den;
+    double e_ox = (e_nx + fabs(ox) * e_den) / (fabs(den) - e_den) + unit * fabs(ox);
+    double e_oy = (e_ny + fabs(oy) * e_den) / (fabs(den) - e_den) + unit * fabs(oy);
+    return hypot(e_ox, e_oy) + 2 * unit * hypot(ox, oy);            /* | |o + d| - |o| | <= |d| */
+}
+
+double mm_geom_circumradius_err(mm_v2 a, mm_v2 b, mm_v2 c, mm_v2 ea, mm_v2 eb, mm_v2 ec)
+{
+    mm_v2 centre;
+    double R;
+    if (!mm_geom_circumcircle(a, b, c, &centre, &R))
+        return INFINITY;
+    /* the points' errors: R = |B| |C| |C - B| / (2 |B x C|), so
+     * d ln R / dB = B / |B|^2 - D / |D|^2 - (C.y, -C.x) / (B x C),
+     * d ln R / dC = C / |C|^2 + D / |D|^2 - (-B.y, B.x) / (B x C), D = C - B,
+     * and d/da = -(d/dB + d/dC) */
+    mm_v2 B = mm_v2_sub(b, a), C = mm_v2_sub(c, a), D = mm_v2_sub(C, B);
+    double cr = mm_v2_cross(B, C), nB = mm_v2_dot(B, B), nC = mm_v2_dot(C, C), nD = mm_v2_dot(D, D);
+    mm_v2 gB = {R * (B.x / nB - D.x / nD - C.y / cr), R * (B.y / nB - D.y / nD + C.x / cr)};
+    mm_v2 gC = {R * (C.x / nC + D.x / nD + B.y / cr), R * (C.y / nC + D.y / nD - B.x / cr)};
+    mm_v2 gA = {-gB.x - gC.x, -gB.y - gC.y};
+    double points = fabs(gA.x) * ea.x + fabs(gA.y) * ea.y + fabs(gB.x) * eb.x + fabs(gB.y) * eb.y +
+                    fabs(gC.x) * ec.x + fabs(gC.y) * ec.y;
+    /* its own rounding, measured: the same operations in double-double
+     * (b - a and c - a exact by TwoSum), whose own error is bounded as above
+     * with 8 MM_DD_EPS an operation */
+    mm_dd Bx = mm_dd_two_sum(b.x, -a.x), By = mm_dd_two_sum(b.y, -a.y);
+    mm_dd Cx = mm_dd_two_sum(c.x, -a.x), Cy = mm_dd_two_sum(c.y, -a.y);
+    mm_dd den = mm_dd_mul_d(mm_dd_sub(mm_dd_mul(Bx, Cy), mm_dd_mul(By, Cx)), 2);
+    mm_dd bb = mm_dd_add(mm_dd_mul(Bx, Bx), mm_dd_mul(By, By)), cc = mm_dd_add(mm_dd_mul(Cx, Cx), mm_dd_mul(Cy, Cy));
+    mm_dd ox = mm_dd_div(mm_dd_sub(mm_dd_mul(Cy, bb), mm_dd_mul(By, cc)), den);
+    mm_dd oy = mm_dd_div(mm_dd_sub(mm_dd_mul(Bx, cc), mm_dd_mul(Cx, bb)), den);
+    mm_dd Rdd = mm_dd_sqrt(mm_dd_add(mm_dd_mul(ox, ox), mm_dd_mul(oy, oy)));
+    double own = mm_dd_abs(mm_dd_sub(Rdd, mm_dd_from(R))) + 1.01 * circumradius_rounding(B, C, 8 * MM_DD_EPS);
+    return 1.01 * points + own;
 }
 
 /* ---- a parametric curve: derivatives and curvature ---------------------------------- */

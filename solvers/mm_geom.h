@@ -172,6 +172,18 @@ int mm_geom_line_line(mm_v2 p1, mm_v2 u1, mm_v2 p2, mm_v2 u2, mm_v2 *x);
  * measure a curve's radius of curvature from three close points. */
 int mm_geom_circumcircle(mm_v2 a, mm_v2 b, mm_v2 c, mm_v2 *centre, double *radius);
 
+/* A bound of how far the radius mm_geom_circumcircle gives for a, b, c can
+ * be from the radius of the circle through the exact points, each known
+ * within ea, eb, ec (componentwise: |x error| <= e.x, |y error| <= e.y):
+ * the points' errors through the radius's gradient (first order, 1.01 of
+ * it), plus its own rounding, measured against the same operations in
+ * double-double.  Through close points on a curve that gradient is
+ * lopsided: R ~ s^2 / (2 sagitta) for points s apart, so an error d across
+ * the curve moves R by about d R^2 / s^2, one along it by d R / s only.
+ * Returns +inf for points mm_geom_circumcircle finds collinear.  Cannot
+ * fail. */
+double mm_geom_circumradius_err(mm_v2 a, mm_v2 b, mm_v2 c, mm_v2 ea, mm_v2 eb, mm_v2 ec);
+
 /* ---- a parametric curve: derivatives and curvature ---------------------------------- */
 
 /* The k components of a curve at t into out (k <= MM_GEOM_CURVE_MAX).

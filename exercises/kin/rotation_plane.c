@@ -21,6 +21,8 @@
 #include <float.h>
 #include <math.h>
 
+#include "mm_dd.h"
+#include "mm_errbound.h"
 #include "mm_exhelp.h"
 #include "mm_geom.h"
 #include "mm_kin.h"
@@ -104,6 +106,107 @@ static void cartesian(const state *s, mm_v2 *v, mm_v2 *a)
     a->y = s->r2 * sn + 2 * s->r1 * w * c + s->r * s->th2 * c - s->r * w * w * sn;
 }
 
+/* ---- the answers at t: in double-double, each with a bound of its error ----
+ * Near an inflection v x a = v_r a_theta - v_theta a_r is a small
+ * difference of large products, and a_r, a_theta, r, r' themselves may be
+ * differences: in double, a_n and rho lost about |v| |a| / |v x a| ulps
+ * (280 ulps of rho where that is 286, 7.6e6 ulps of a_n at 3.8e6, a_n 3.5
+ * times too large at 3.2e16, each printed as exact).  In double-double from the parameters (exact
+ * doubles) they keep ~32 digits, and a running error analysis says how
+ * many: each operation adds to its operands' errors its own rounding,
+ * below RDD of its result (mm_dd.h: 4 u^2 an operation; 8 times that for
+ * room), a sum or product of two doubles none (TwoSum, TwoProd). */
+#define RDD (8 * MM_DD_EPS)
+
+typedef struct dde {
+    mm_dd x;
+    double e;            /* |x - the exact value| <= e */
+} dde;
+
+typedef struct state_dd {
+    dde r, r1, r2, th, th1, th2;
+} state_dd;
+
+static dde exact(double a) { return (dde){mm_dd_from(a), 0}; }
+static double mag(dde a) { return mm_dd_abs(a.x); }
+static int is_double(dde a) { return a.e == 0 && a.x.lo == 0; }
+
+static dde add(dde a, dde b)
+{
+    mm_dd s = mm_dd_add(a.x, b.x);
+    return (dde){s, is_double(a) && is_double(b) ? 0 : a.e + b.e + RDD * mm_dd_abs(s)};
+}
+
+static dde sub(dde a, dde b) { return add(a, (dde){mm_dd_neg(b.x), b.e}); }
+
+static dde mul(dde a, dde b)
+{
+    mm_dd p = mm_dd_mul(a.x, b.x);
+    if (is_double(a) && is_double(b))
+        return (dde){p, 0};
+    return (dde){p, mag(a) * b.e + mag(b) * a.e + a.e * b.e + RDD * mm_dd_abs(p)};
+}
+
+static dde scale2(dde a, double k) { return (dde){{k * a.x.hi, k * a.x.lo}, fabs(k) * a.e}; }   /* k = 2^j: exact */
+
+static dde absdd(dde a) { return mm_dd_val(a.x) < 0 ? (dde){mm_dd_neg(a.x), a.e} : a; }
+
+/* |A/B - a/b| <= (e_a + |a/b| e_b) / (|b| - e_b); +inf when b may be 0 */
+static dde quot(dde a, dde b)
+{
+    mm_dd q = mm_dd_div(a.x, b.x);
+    double room = mag(b) - b.e;
+    return (dde){q, room > 0 ? (a.e + mm_dd_abs(q) * b.e) / room + RDD * mm_dd_abs(q) : INFINITY};
+}
+
+/* sqrt(a^2 + b^2): |sqrt(Q) - sqrt(q)| = |Q - q| / (sqrt(Q) + sqrt(q)) */
+static dde norm(dde a, dde b)
+{
+    dde q = add(mul(a, a), mul(b, b));
+    mm_dd r = mm_dd_sqrt(q.x);
+    double rv = mm_dd_abs(r);
+    return (dde){r, (rv > 0 ? q.e / rv : sqrt(q.e)) + RDD * rv};
+}
+
+static state_dd at_dd(const polar *p, double t)
+{
+    dde T = exact(t), tt = mul(T, T);
+    return (state_dd){add(add(exact(p->r0), mul(exact(p->u), T)), scale2(mul(exact(p->b), tt), 0.5)),
+                      add(exact(p->u), mul(exact(p->b), T)), exact(p->b),
+                      add(add(exact(p->th0), mul(exact(p->w0), T)), scale2(mul(exact(p->al), tt), 0.5)),
+                      add(exact(p->w0), mul(exact(p->al), T)), exact(p->al)};
+}
+
+/* eqs. (2)-(3) and the path's v x a and v . a, from a state in double-double */
+typedef struct polar_dd {
+    dde vr, vt, ar, at, cent, cor, v, a, cr, dot;
+} polar_dd;
+
+static polar_dd kin_dd(const state_dd *s)
+{
+    polar_dd k;
+    k.vr = s->r1, k.vt = mul(s->r, s->th1);
+    k.cent = scale2(mul(s->r, mul(s->th1, s->th1)), -1), k.cor = scale2(mul(s->r1, s->th1), 2);
+    k.ar = add(s->r2, k.cent), k.at = add(mul(s->r, s->th2), k.cor);
+    k.v = norm(k.vr, k.vt), k.a = norm(k.ar, k.at);
+    k.cr = sub(mul(k.vr, k.at), mul(k.vt, k.ar)), k.dot = add(mul(k.vr, k.ar), mul(k.vt, k.at));
+    return k;
+}
+
+/* a scalar rounded to double: exact while it is within an ulp of the exact
+ * value (its bound within half an ulp), else with its bound */
+static double put(mm_result *res, int o, dde v, double *bound)
+{
+    double x = mm_dd_val(v.x) + 0.0, e = v.e + mm_dd_abs(mm_dd_sub(v.x, mm_dd_from(x)));   /* no -0 */
+    if (v.e <= 0.5 * mm_errbound_ulp(x))
+        mm_res_scalar(res, o, x);
+    else
+        mm_res_scalar_err(res, o, x, e, MM_ERR_BOUND);
+    if (bound)
+        *bound = e;
+    return x;
+}
+
 static int check(const mm_value *in, mm_error *err)
 {
     return mm_kin_check_t(in[P_T].x, in[P_TEND].x, err);
@@ -114,14 +217,44 @@ static int check(const mm_value *in, mm_error *err)
  * r'', theta', theta'' as eqs. (2)-(3): r(t + e) = r + dr, theta(t + e) =
  * theta + dth with dr = e (r' + r'' e/2), dth = e (theta' + theta'' e/2), so
  *     P(t + e) - P(t) = (dr cos dth - 2 r sin^2(dth/2), (r + dr) sin dth)
- * keeps its digits: no theta of up to 10^3 rad nor |x| rounded into it */
+ * keeps its digits: no theta of up to 10^3 rad nor |x| rounded into it;
+ * *err gets a bound of its rounding, componentwise */
+static mm_v2 point_err(const state *s, double e, mm_v2 *err)
+{
+    const double u = DBL_EPSILON / 2;
+    double q = 0.5 * s->r2 * e, w = s->r1 + q, dr = e * w;
+    double qt = 0.5 * s->th2 * e, wt = s->th1 + qt, dth = e * wt;
+    double sh = sin(0.5 * dth), cd = cos(dth), sd = sin(dth);
+    mm_v2 P = {dr * cd - 2 * s->r * sh * sh, (s->r + dr) * sd};
+    /* its rounding, each operation's u of its result carried through (s
+     * taken as exact; sin and cos within an ulp, 2u, and moved by dth's
+     * error at a slope of at most 1) */
+    double e_dr = fabs(e) * u * (fabs(q) + fabs(w)) + u * fabs(dr);
+    double e_dth = fabs(e) * u * (fabs(qt) + fabs(wt)) + u * fabs(dth);
+    double e_sh = 0.5 * e_dth + 2 * u * fabs(sh), e_cd = e_dth + 2 * u * fabs(cd), e_sd = e_dth + 2 * u * fabs(sd);
+    double t1 = dr * cd, x2 = 2 * s->r * sh, t2 = x2 * sh, rr = s->r + dr;
+    double e_t1 = fabs(dr) * e_cd + fabs(cd) * e_dr + e_dr * e_cd + u * fabs(t1);
+    double e_x2 = 2 * fabs(s->r) * e_sh + u * fabs(x2);
+    double e_t2 = fabs(x2) * e_sh + fabs(sh) * e_x2 + e_x2 * e_sh + u * fabs(t2);
+    double e_rr = e_dr + u * fabs(rr);
+    *err = (mm_v2){e_t1 + e_t2 + u * fabs(P.x), fabs(rr) * e_sd + fabs(sd) * e_rr + e_rr * e_sd + u * fabs(P.y)};
+    return P;
+}
+
 static int point(double t, double e, mm_v2 *P, void *ctx)
 {
     (void)t;
-    const state *s = ctx;
-    double dr = e * (s->r1 + 0.5 * s->r2 * e), dth = e * (s->th1 + 0.5 * s->th2 * e), sh = sin(0.5 * dth);
-    *P = (mm_v2){dr * cos(dth) - 2 * s->r * sh * sh, (s->r + dr) * sin(dth)};
+    mm_v2 err;
+    *P = point_err(ctx, e, &err);
     return 1;
+}
+
+/* a bound of the rounding of mm_kin_circle3's R at step h (the circle
+ * through the points at -h, 0, h), the state taken as exact */
+static double circle_err(const state *s, double h)
+{
+    mm_v2 Em, E0, Ep, Pm = point_err(s, -h, &Em), P0 = point_err(s, 0, &E0), Pp = point_err(s, h, &Ep);
+    return mm_geom_circumradius_err(Pm, P0, Pp, Em, E0, Ep);
 }
 
 /* The step of the three-point circle.  Its curvature is even in h,
@@ -194,34 +327,40 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     const int n = (int)in[P_POINTS].x;
 
     /* ---- at t ---- */
-    state s = at(&p, t);
+    /* the answers in double-double from the parameters, rounded once: |v|,
+     * |a|, v x a and v . a from the polar components, rotation-free, so v x a
+     * is exactly 0 on a radial line (theta' = theta'' = 0) */
+    state_dd S = at_dd(&p, t);
+    polar_dd K = kin_dd(&S);
+    double rho_err = 0;
+    put(res, O_R, S.r, NULL);
+    put(res, O_TH, S.th, NULL);
+    put(res, O_VR, K.vr, NULL);
+    put(res, O_VT, K.vt, NULL);
+    double speed = put(res, O_V, K.v, NULL);
+    put(res, O_AR, K.ar, NULL);
+    put(res, O_AT, K.at, NULL);
+    double amag = put(res, O_A, K.a, NULL);
+    put(res, O_CENT, K.cent, NULL);
+    put(res, O_COR, K.cor, NULL);
+    dde an = quot(absdd(K.cr), K.v), rho = quot(mul(K.v, K.v), an);
+    if (speed > 0) {
+        /* path components: a_t along v, a_n across it, rho = v^2 / a_n */
+        put(res, O_ATAN, quot(K.dot, K.v), NULL);
+        put(res, O_ANOR, an, NULL);
+        if (mag(K.cr) > K.cr.e)
+            put(res, O_RHO, rho, &rho_err);
+        else if (K.cr.e == 0)
+            mm_res_warn(res, "the path is straight at t = %g (v and a along one line): no radius of curvature", t);
+        else
+            mm_res_warn(res, "the path is straight at t = %g to within rounding (v x a = %.3g, within its bound "
+                        "%.3g): no radius of curvature", t, mm_dd_val(K.cr.x), K.cr.e);
+    }
+    /* the same state rounded to double: the routes and the circle below */
+    state s = {mm_dd_val(S.r.x), mm_dd_val(S.r1.x), p.b, mm_dd_val(S.th.x), mm_dd_val(S.th1.x), p.al};
     mm_v2 x, v, a, vc, ac;
     double vr, vt, ar, at_;
     kin(&s, &x, &v, &a, &vr, &vt, &ar, &at_);
-    /* |v|, |a|, v x a and v . a from the polar components: rotation-free, so
-     * v x a is exactly 0 on a radial line (theta' = theta'' = 0) where the
-     * Cartesian components left a_n ~ 1e-17 and rho ~ 1e17 m */
-    double speed = hypot(vr, vt), amag = hypot(ar, at_), cr = vr * at_ - vt * ar, dt_ = vr * ar + vt * at_;
-    mm_res_scalar(res, O_R, s.r);
-    mm_res_scalar(res, O_TH, s.th);
-    mm_res_scalar(res, O_VR, vr);
-    mm_res_scalar(res, O_VT, vt);
-    mm_res_scalar(res, O_V, speed);
-    mm_res_scalar(res, O_AR, ar);
-    mm_res_scalar(res, O_AT, at_);
-    mm_res_scalar(res, O_A, amag);
-    mm_res_scalar(res, O_CENT, -s.r * s.th1 * s.th1);
-    mm_res_scalar(res, O_COR, 2 * s.r1 * s.th1);
-    if (speed > 0) {
-        /* path components: a_t along v, a_n across it, rho = v^2 / a_n */
-        double an = fabs(cr) / speed;
-        mm_res_scalar(res, O_ATAN, dt_ / speed);
-        mm_res_scalar(res, O_ANOR, an);
-        if (an > 0)
-            mm_res_scalar(res, O_RHO, speed * speed / an);
-        else
-            mm_res_warn(res, "the path is straight at t = %g (v and a along one line): no radius of curvature", t);
-    }
     /* the polar route against the Cartesian one: rounding of the largest term */
     cartesian(&s, &vc, &ac);
     double big_v = fabs(s.r1) + fabs(s.r * s.th1), big_a = fabs(s.r2) + 2 * fabs(s.r1 * s.th1) +
@@ -232,24 +371,27 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                      mm_v2_norm(mm_v2_sub(a, ac)), 0, 8 * DBL_EPSILON * big_a);
     /* radius of curvature against the circle through three points h apart
      * (h from circle_step): R(h) - rho = O(h^2), so the value at h/4 lies
-     * within 2 |R(h/2) - R(h/4)| of rho, plus rounding.  The points at
-     * e = h/4 carry d = 8 eps (|r' e| + |r''| e^2/2 + (|r| + |dr|) (|theta' e|
-     * + |theta''| e^2/2)); the circle through points s = |v| e apart has
-     * twice the area s^3/R, which they move by 6 d s and its own rounding by
-     * 4 eps s^2: R to 8 (d R/s^2 + eps R/s) R.  And rho's own rounding: v x a
-     * loses digits near an inflection, rho to 8 eps |v| |a| / |v x a| of it */
-    double an = speed > 0 ? fabs(cr) / speed : 0;
-    if (an > 1e-9 * amag && speed > 1e-9 * (fabs(s.r) + 1)) {
-        double rho = speed * speed / an, k = cr / (speed * speed * speed), R[3];
-        double h = circle_step(&s, speed, k), e = h / 4, sp = speed * e;
+     * within 2 |R(h/2) - R(h/4)| of the rho of the motion the points come
+     * from, the rounded state s, once the rounding e1, e2 of R(h/2), R(h/4)
+     * is added: 2 (|R1 - R2| + e1 + e2) + e2.  That rho differs from the
+     * one printed by the state's rounding (rho from s in double-double,
+     * with s's rounding as the error it starts from: within E of the exact
+     * rho, and so of rho(s) within 2 E) and the printed one's own bound. */
+    double an_ = mm_dd_val(an.x), rho_ = mm_dd_val(rho.x);
+    if (speed > 0 && mag(K.cr) > K.cr.e && an_ > 1e-9 * amag && speed > 1e-9 * (fabs(s.r) + 1)) {
+        double k = mm_dd_val(K.cr.x) / (speed * speed * speed), R[3];
+        double h = circle_step(&s, speed, k);
         int ok = mm_kin_circle3(point, &s, t, h, R);
-        double dr = e * (fabs(s.r1) + 0.5 * fabs(s.r2) * e), d = 8 * DBL_EPSILON * (dr + (fabs(s.r) + dr) *
-                                                                  (fabs(s.th1) * e + 0.5 * fabs(s.th2) * e * e));
-        double round_ = 8 * (d * rho / (sp * sp) + DBL_EPSILON * rho / sp) * rho +
-                        8 * DBL_EPSILON * amag / an * rho;
+        state_dd Sr = {{mm_dd_from(s.r), mm_dd_abs(mm_dd_sub(S.r.x, mm_dd_from(s.r))) + S.r.e},
+                       {mm_dd_from(s.r1), mm_dd_abs(mm_dd_sub(S.r1.x, mm_dd_from(s.r1))) + S.r1.e},
+                       S.r2, S.th,
+                       {mm_dd_from(s.th1), mm_dd_abs(mm_dd_sub(S.th1.x, mm_dd_from(s.th1))) + S.th1.e}, S.th2};
+        polar_dd Kr = kin_dd(&Sr);
+        double E = quot(mul(Kr.v, Kr.v), quot(absdd(Kr.cr), Kr.v)).e;
+        double e1 = circle_err(&s, h / 2), e2 = circle_err(&s, h / 4);
         if (ok)
             mm_res_check_abs(res, "rho = v^2/a_n vs the circle through three points of the path, bound 2 |R(h/2) - R(h/4)| + rounding",
-                             R[2], rho, 2 * fabs(R[1] - R[2]) + round_);
+                             R[2], rho_, 2 * fabs(R[1] - R[2]) + 2 * e1 + 3 * e2 + 2 * E + rho_err);
     }
 
     /* ---- over [0, t_end] ---- */

@@ -281,14 +281,27 @@ static void the_rolling_wheel_should_pass_its_checks_near_an_inflection(void **s
     cJSON_Delete(d);
 }
 
+/* |got - want| within an ulp of got: an exact scalar right to rounding */
+static void check_ulp(const cJSON *d, const char *name, double want)
+{
+    double got = scalar(d, name), ulp = nextafter(fabs(got), INFINITY) - fabs(got);
+    if (!is_exact(d, name) || !(fabs(got - want) <= ulp))
+        fail_msg("%s = %.17g (%s) against %.17g: %.3g ulps", name, got, is_exact(d, name) ? "exact" : "with an error",
+                 want, fabs(got - want) / ulp);
+}
+
 /* answers --checks -n 2000 found "rho = v^2/a_n vs the circle through three
  * points" failing (59.1 x its tolerance) at this draw: the acceleration is
  * almost all tangential (a_n = 0.31 of |a| = 89.9 m/s^2) and an inflection
  * is 0.0007 s away, so the circle's curvature k(h) = k + C2 h^2 reaches 0 at
  * h = sqrt|k/C2| = 0.027 s, but the step was 0.02 rho/|v| = 0.51 s: the
- * circle gave 4.46 m against rho = 200.86 m.  rho is 200.8632946195749855
- * (50 digits, from |v|^3 / |v x a| of the polar components); v x a loses
- * 286 x eps there. */
+ * circle gave 4.46 m against rho = 200.86 m.  And v x a = v_r a_theta -
+ * v_theta a_r is a difference 286 times smaller than its terms: in double,
+ * rho came out 200.8632946195861 (280 ulps off) and a_n 0.31367797924392687
+ * (190 ulps), both printed as exact.  The references: 50 digits (mpmath) of
+ * |v|^3 / |v x a| and |v x a| / |v| from the closed forms at the request's
+ * doubles (the earlier 200.8632946195749855 came from its decimal strings,
+ * which differ from the doubles by ~1e-17: the 286 made that 9.5e-14). */
 static void the_rotation_plane_should_pass_its_checks_near_an_inflection(void **state)
 {
     (void)state;
@@ -296,7 +309,63 @@ static void the_rotation_plane_should_pass_its_checks_near_an_inflection(void **
                                               "&theta0=-8.834593818508559&omega0=19.7028475666566"
                                               "&alpha=-18.937714213967595&t=1.1232430260829496"
                                               "&t_end=1.707566945020873&points=69");
-    check_rel(scalar(d, "rho"), 200.8632946195749855, 1e-12, "rho near the inflection");
+    check_ulp(d, "rho", 200.86329461959406253);
+    check_ulp(d, "a_n", 0.31367797924391433157);
+    cJSON_Delete(d);
+}
+
+/* r0 puts the path 1e-7 (relative) from an inflection at t = 0.8 s: |v| |a|
+ * / |v x a| = 3.8e6, and in double a_n and rho lost that many ulps (printed
+ * exact); from double-double they are right to the last digit.  References:
+ * mpmath, 50 digits, the closed forms at the request's doubles. */
+static void the_rotation_plane_should_give_a_n_and_rho_to_the_last_digit_close_to_an_inflection(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("kin-rotation-plane", "r0=0.9328535891108333&u=-0.7&b=1.3&theta0=0.4&omega0=1.7"
+                                              "&alpha=-0.6&t=0.8");
+    check_ulp(d, "a_n", 9.823727674079990259515e-8);
+    check_ulp(d, "rho", 10605102.75037238234806);
+    check_ulp(d, "a_t", 0.3778681867168666756767);
+    check_ulp(d, "a_theta", 0.3562878465335003162563);
+    cJSON_Delete(d);
+}
+
+/* r0 the double nearest an inflection at t = 0.8 s: |v| |a| / |v x a| =
+ * 3.2e16, beyond even double-double's 32 digits to print every digit as
+ * sure; a_n and rho come with their bounds, and the 50-digit values lie
+ * within them.  In double both were printed as exact and wrong in their
+ * first digit. */
+static void the_rotation_plane_should_bound_a_n_and_rho_at_an_inflection(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("kin-rotation-plane", "r0=0.34091183255001917&u=-0.7&b=1.3&theta0=0.4&omega0=1.7"
+                                              "&alpha=-0.6&t=0.8");
+    const char *names[] = {"a_n", "rho"};
+    const double want[] = {3.793851356795955962942e-17, 4568223867210733.690426};
+    for (int i = 0; i < 2; i++) {
+        double got = scalar(d, names[i]), e = error_of(d, names[i]);
+        assert_false(is_exact(d, names[i]));
+        if (!(fabs(got - want[i]) <= e && e <= 1e-12 * fabs(got)))
+            fail_msg("%s = %.17g +- %.3g against %.17g", names[i], got, e, want[i]);
+    }
+    cJSON_Delete(d);
+}
+
+/* v x a = 0 exactly (alpha = w0 (b - 2 - w0^2) with r = r' = 1 at t = 0,
+ * b the double nearest 2 + w0^2): straight at that instant, but its
+ * products no longer fit in a double, so the double-double v x a is 0 only
+ * within its bound: a_n = 0 with that bound, no rho, and a warning that
+ * says so */
+static void the_rotation_plane_straight_to_within_rounding_should_give_no_radius_of_curvature(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("kin-rotation-plane", "r0=1&u=1&b=3.000367943509257&theta0=0&omega0=1.000183954834938"
+                                              "&alpha=-2.220854511036792e-16&t=0");
+    assert_null(find(d, "scalars", "rho"));
+    double an = scalar(d, "a_n"), e = error_of(d, "a_n");
+    if (!(an <= e && e < 1e-29))
+        fail_msg("a_n = %.3g +- %.3g: 0 within a double-double rounding", an, e);
+    assert_true(warned(d, "within rounding"));
     cJSON_Delete(d);
 }
 
@@ -467,6 +536,9 @@ int main(void)
         cmocka_unit_test(the_rolling_wheel_should_give_the_cycloids_arch_with_b_a_hair_from_r),
         cmocka_unit_test(the_rolling_wheel_arch_check_should_hold_where_the_panels_errors_cancel),
         cmocka_unit_test(the_rotation_plane_should_pass_its_checks_near_an_inflection),
+        cmocka_unit_test(the_rotation_plane_should_give_a_n_and_rho_to_the_last_digit_close_to_an_inflection),
+        cmocka_unit_test(the_rotation_plane_should_bound_a_n_and_rho_at_an_inflection),
+        cmocka_unit_test(the_rotation_plane_straight_to_within_rounding_should_give_no_radius_of_curvature),
         cmocka_unit_test(the_rotation_plane_on_a_radial_line_should_give_no_radius_of_curvature),
         cmocka_unit_test(mobility_should_catch_the_overconstrained_linkages),
         cmocka_unit_test(space_motion_should_find_gimbal_lock),

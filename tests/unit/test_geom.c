@@ -267,6 +267,46 @@ static void three_points_should_give_the_radius_of_curvature(void **state)
     }
 }
 
+/* The bound of the three-point radius: it holds, and it is not far above
+ * what rounding can do.  On the parabola y = x^2 / 2 through (-h, h^2/2),
+ * (0, 0), (h, h^2/2) the circle has R = 1 + h^2/4 exactly; the points,
+ * turned by phi and rounded, are known within 4 u (|x| + |y|) a component.
+ * Unturned, the error across the curve is that of y = h^2/2 alone and R is
+ * good to a few u R (the bound within 50 u R); turned, the rounding of the
+ * large component x ~ h leaks across it, u h, and moves R by u h R^2 / h^2
+ * (the bound within 50 u R^2 / h).  And with exact points on a circle
+ * (5, 0), (3, 4), (0, 5) about 0, R = 5: the bound is the formula's own
+ * rounding alone, under 16 u R. */
+static void the_three_point_radius_should_come_with_a_bound_that_holds(void **state)
+{
+    (void)state;
+    const double u = EPS / 2;
+    for (double h = 0.1; h > 1e-4; h /= 10)
+        for (int k = 0; k < 3; k++) {
+            double phi = 0.4 * k, c = cos(phi), sn = sin(phi), R, Rx = 1 + h * h / 4;
+            mm_v2 P[3], E[3], ctr;
+            for (int j = 0; j < 3; j++) {
+                double x = (j - 1) * h, y = x * x / 2;
+                P[j] = (mm_v2){c * x - sn * y, sn * x + c * y};
+                double e = k == 0 ? u * y : 4 * u * (fabs(x) + fabs(y));
+                E[j] = (mm_v2){e, e};
+            }
+            assert_int_equal(mm_geom_circumcircle(P[0], P[1], P[2], &ctr, &R), 1);
+            double b = mm_geom_circumradius_err(P[0], P[1], P[2], E[0], E[1], E[2]);
+            if (!(fabs(R - Rx) <= b + u * Rx))
+                fail_msg("h = %g, phi = %g: R - R_exact = %.3g outside the bound %.3g", h, phi, R - Rx, b);
+            double loose = k == 0 ? 50 * u * Rx : 50 * u * Rx * Rx / h;
+            if (!(b <= loose))
+                fail_msg("h = %g, phi = %g: bound %.3g above %.3g", h, phi, b, loose);
+        }
+    mm_v2 a = {5, 0}, b = {3, 4}, c = {0, 5}, z = {0, 0}, ctr;
+    double R, e = mm_geom_circumradius_err(a, b, c, z, z, z);
+    assert_int_equal(mm_geom_circumcircle(a, b, c, &ctr, &R), 1);
+    check_abs(R, 5, e, "the circle of radius 5 through three exact points, within its bound");
+    assert_true(e > 0 && e < 16 * u * 5);
+    assert_true(isinf(mm_geom_circumradius_err(z, b, mm_v2_scale(b, 2), z, z, z)));    /* collinear */
+}
+
 /* ---- curves ------------------------------------------------------------------------------------ */
 
 static int helix(double t, double *out, void *params)
@@ -375,6 +415,7 @@ int main(void)
         cmocka_unit_test(a_line_should_cut_a_circle_at_the_stable_roots),
         cmocka_unit_test(lines_should_meet_unless_parallel),
         cmocka_unit_test(three_points_should_give_the_radius_of_curvature),
+        cmocka_unit_test(the_three_point_radius_should_come_with_a_bound_that_holds),
         cmocka_unit_test(ridders_should_give_derivatives_with_honest_error_estimates),
         cmocka_unit_test(the_l_section_should_have_its_closed_form_properties),
     };
