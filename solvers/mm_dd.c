@@ -82,3 +82,38 @@ mm_cdd mm_cdd_root(mm_cdd a, double r, double theta, int n, int k)
     }
     return w;
 }
+
+/* ---- mm_ddb --------------------------------------------------------------------- */
+
+static int is_double(mm_ddb a) { return a.e == 0 && a.x.lo == 0; }
+
+mm_ddb mm_ddb_add(mm_ddb a, mm_ddb b)
+{
+    mm_dd s = mm_dd_add(a.x, b.x);
+    return (mm_ddb){s, is_double(a) && is_double(b) ? 0 : a.e + b.e + MM_DDB_R * mm_dd_abs(s)};
+}
+
+mm_ddb mm_ddb_sub(mm_ddb a, mm_ddb b) { return mm_ddb_add(a, (mm_ddb){mm_dd_neg(b.x), b.e}); }
+
+mm_ddb mm_ddb_mul(mm_ddb a, mm_ddb b)
+{
+    mm_dd p = mm_dd_mul(a.x, b.x);
+    if (is_double(a) && is_double(b))
+        return (mm_ddb){p, 0};
+    return (mm_ddb){p, mm_ddb_mag(a) * b.e + mm_ddb_mag(b) * a.e + a.e * b.e + MM_DDB_R * mm_dd_abs(p)};
+}
+
+mm_ddb mm_ddb_quot(mm_ddb a, mm_ddb b)
+{
+    mm_dd q = mm_dd_div(a.x, b.x);
+    double room = mm_ddb_mag(b) - b.e;
+    return (mm_ddb){q, room > 0 ? (a.e + mm_dd_abs(q) * b.e) / room + MM_DDB_R * mm_dd_abs(q) : INFINITY};
+}
+
+mm_ddb mm_ddb_norm(mm_ddb a, mm_ddb b)
+{
+    mm_ddb q = mm_ddb_add(mm_ddb_mul(a, a), mm_ddb_mul(b, b));
+    mm_dd r = mm_dd_sqrt(q.x);
+    double rv = mm_dd_abs(r);
+    return (mm_ddb){r, (rv > 0 ? q.e / rv : sqrt(q.e)) + MM_DDB_R * rv};
+}

@@ -134,4 +134,51 @@ mm_cdd mm_cdd_pow(mm_cdd a, int n);
  * pi, and a root on an axis gets its zero part exactly.  a = 0 gives 0. */
 mm_cdd mm_cdd_root(mm_cdd a, double r, double theta, int n, int k);
 
+/* ---- real numbers in double-double, each with a bound of its error ------------ */
+
+/* x, and e: |x - the exact value it stands for| <= e, carried through
+ * every operation like mm_cdd's err.  Each double-double operation adds
+ * MM_DDB_R of its result (8 MM_DD_EPS: twice the operation's bound, for
+ * room); a sum or product of two doubles adds nothing (TwoSum, TwoProd
+ * are exact).  Where a double computation loses digits to cancellation
+ * (v x a near an inflection, a reaction from loads that cancel), the same
+ * formula in mm_ddb keeps ~32 digits and says how many are left. */
+typedef struct mm_ddb {
+    mm_dd x;
+    double e;
+} mm_ddb;
+
+#define MM_DDB_R (8 * MM_DD_EPS)
+
+/* a exactly (e 0) */
+static inline mm_ddb mm_ddb_exact(double a) { return (mm_ddb){mm_dd_from(a), 0}; }
+
+/* |x| (of the value rounded to double) */
+static inline double mm_ddb_mag(mm_ddb a) { return mm_dd_abs(a.x); }
+
+mm_ddb mm_ddb_add(mm_ddb a, mm_ddb b);
+mm_ddb mm_ddb_sub(mm_ddb a, mm_ddb b);
+mm_ddb mm_ddb_mul(mm_ddb a, mm_ddb b);
+
+/* k a for k a power of 2 (exact) */
+static inline mm_ddb mm_ddb_scale2(mm_ddb a, double k) { return (mm_ddb){{k * a.x.hi, k * a.x.lo}, fabs(k) * a.e}; }
+
+static inline mm_ddb mm_ddb_abs(mm_ddb a) { return mm_dd_val(a.x) < 0 ? (mm_ddb){mm_dd_neg(a.x), a.e} : a; }
+
+/* a / b: |A/B - a/b| <= (e_a + |a/b| e_b) / (|b| - e_b); e = +inf when b
+ * may be 0 (|b| <= e_b) */
+mm_ddb mm_ddb_quot(mm_ddb a, mm_ddb b);
+
+/* sqrt(a^2 + b^2): |sqrt(Q) - sqrt(q)| = |Q - q| / (sqrt(Q) + sqrt(q)) */
+mm_ddb mm_ddb_norm(mm_ddb a, mm_ddb b);
+
+/* a rounded to double, and into *err a bound of that double's error (a's
+ * bound plus the rounding) */
+static inline double mm_ddb_round(mm_ddb a, double *err)
+{
+    double x = mm_dd_val(a.x) + 0.0;                         /* no -0 */
+    *err = a.e + mm_dd_abs(mm_dd_sub(a.x, mm_dd_from(x)));
+    return x;
+}
+
 #endif

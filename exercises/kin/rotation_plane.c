@@ -113,91 +113,62 @@ static void cartesian(const state *s, mm_v2 *v, mm_v2 *a)
  * (280 ulps of rho where that is 286, 7.6e6 ulps of a_n at 3.8e6, a_n 3.5
  * times too large at 3.2e16, each printed as exact).  In double-double from the parameters (exact
  * doubles) they keep ~32 digits, and a running error analysis says how
- * many: each operation adds to its operands' errors its own rounding,
- * below RDD of its result (mm_dd.h: 4 u^2 an operation; 8 times that for
- * room), a sum or product of two doubles none (TwoSum, TwoProd). */
-#define RDD (8 * MM_DD_EPS)
-
-typedef struct dde {
-    mm_dd x;
-    double e;            /* |x - the exact value| <= e */
-} dde;
-
+ * many (mm_ddb, solvers/mm_dd.h: each operation adds its own rounding to
+ * its operands' errors). */
 typedef struct state_dd {
-    dde r, r1, r2, th, th1, th2;
+    mm_ddb r, r1, r2, th, th1, th2;
 } state_dd;
 
-static dde exact(double a) { return (dde){mm_dd_from(a), 0}; }
-static double mag(dde a) { return mm_dd_abs(a.x); }
-static int is_double(dde a) { return a.e == 0 && a.x.lo == 0; }
-
-static dde add(dde a, dde b)
+/* c0 + c1 t, and c0 + c1 t + c2 t^2 / 2 */
+static mm_ddb linear(double c0, double c1, mm_ddb T)
 {
-    mm_dd s = mm_dd_add(a.x, b.x);
-    return (dde){s, is_double(a) && is_double(b) ? 0 : a.e + b.e + RDD * mm_dd_abs(s)};
+    return mm_ddb_add(mm_ddb_exact(c0), mm_ddb_mul(mm_ddb_exact(c1), T));
 }
 
-static dde sub(dde a, dde b) { return add(a, (dde){mm_dd_neg(b.x), b.e}); }
-
-static dde mul(dde a, dde b)
+static mm_ddb quadratic(double c0, double c1, double c2, mm_ddb T)
 {
-    mm_dd p = mm_dd_mul(a.x, b.x);
-    if (is_double(a) && is_double(b))
-        return (dde){p, 0};
-    return (dde){p, mag(a) * b.e + mag(b) * a.e + a.e * b.e + RDD * mm_dd_abs(p)};
-}
-
-static dde scale2(dde a, double k) { return (dde){{k * a.x.hi, k * a.x.lo}, fabs(k) * a.e}; }   /* k = 2^j: exact */
-
-static dde absdd(dde a) { return mm_dd_val(a.x) < 0 ? (dde){mm_dd_neg(a.x), a.e} : a; }
-
-/* |A/B - a/b| <= (e_a + |a/b| e_b) / (|b| - e_b); +inf when b may be 0 */
-static dde quot(dde a, dde b)
-{
-    mm_dd q = mm_dd_div(a.x, b.x);
-    double room = mag(b) - b.e;
-    return (dde){q, room > 0 ? (a.e + mm_dd_abs(q) * b.e) / room + RDD * mm_dd_abs(q) : INFINITY};
-}
-
-/* sqrt(a^2 + b^2): |sqrt(Q) - sqrt(q)| = |Q - q| / (sqrt(Q) + sqrt(q)) */
-static dde norm(dde a, dde b)
-{
-    dde q = add(mul(a, a), mul(b, b));
-    mm_dd r = mm_dd_sqrt(q.x);
-    double rv = mm_dd_abs(r);
-    return (dde){r, (rv > 0 ? q.e / rv : sqrt(q.e)) + RDD * rv};
+    return mm_ddb_add(linear(c0, c1, T), mm_ddb_scale2(mm_ddb_mul(mm_ddb_exact(c2), mm_ddb_mul(T, T)), 0.5));
 }
 
 static state_dd at_dd(const polar *p, double t)
 {
-    dde T = exact(t), tt = mul(T, T);
-    return (state_dd){add(add(exact(p->r0), mul(exact(p->u), T)), scale2(mul(exact(p->b), tt), 0.5)),
-                      add(exact(p->u), mul(exact(p->b), T)), exact(p->b),
-                      add(add(exact(p->th0), mul(exact(p->w0), T)), scale2(mul(exact(p->al), tt), 0.5)),
-                      add(exact(p->w0), mul(exact(p->al), T)), exact(p->al)};
+    mm_ddb T = mm_ddb_exact(t);
+    return (state_dd){quadratic(p->r0, p->u, p->b, T), linear(p->u, p->b, T), mm_ddb_exact(p->b),
+                      quadratic(p->th0, p->w0, p->al, T), linear(p->w0, p->al, T), mm_ddb_exact(p->al)};
 }
 
 /* eqs. (2)-(3) and the path's v x a and v . a, from a state in double-double */
 typedef struct polar_dd {
-    dde vr, vt, ar, at, cent, cor, v, a, cr, dot;
+    mm_ddb vr, vt, ar, at, cent, cor, v, a, cr, dot;
 } polar_dd;
+
+static mm_ddb cross(mm_ddb ax, mm_ddb ay, mm_ddb bx, mm_ddb by)
+{
+    return mm_ddb_sub(mm_ddb_mul(ax, by), mm_ddb_mul(ay, bx));
+}
+
+static mm_ddb dot(mm_ddb ax, mm_ddb ay, mm_ddb bx, mm_ddb by)
+{
+    return mm_ddb_add(mm_ddb_mul(ax, bx), mm_ddb_mul(ay, by));
+}
 
 static polar_dd kin_dd(const state_dd *s)
 {
     polar_dd k;
-    k.vr = s->r1, k.vt = mul(s->r, s->th1);
-    k.cent = scale2(mul(s->r, mul(s->th1, s->th1)), -1), k.cor = scale2(mul(s->r1, s->th1), 2);
-    k.ar = add(s->r2, k.cent), k.at = add(mul(s->r, s->th2), k.cor);
-    k.v = norm(k.vr, k.vt), k.a = norm(k.ar, k.at);
-    k.cr = sub(mul(k.vr, k.at), mul(k.vt, k.ar)), k.dot = add(mul(k.vr, k.ar), mul(k.vt, k.at));
+    k.vr = s->r1, k.vt = mm_ddb_mul(s->r, s->th1);
+    k.cent = mm_ddb_scale2(mm_ddb_mul(s->r, mm_ddb_mul(s->th1, s->th1)), -1);     /* -r theta'^2 */
+    k.cor = mm_ddb_scale2(mm_ddb_mul(s->r1, s->th1), 2);                           /* 2 r' theta' */
+    k.ar = mm_ddb_add(s->r2, k.cent), k.at = mm_ddb_add(mm_ddb_mul(s->r, s->th2), k.cor);
+    k.v = mm_ddb_norm(k.vr, k.vt), k.a = mm_ddb_norm(k.ar, k.at);
+    k.cr = cross(k.vr, k.vt, k.ar, k.at), k.dot = dot(k.vr, k.vt, k.ar, k.at);
     return k;
 }
 
 /* a scalar rounded to double: exact while it is within an ulp of the exact
  * value (its bound within half an ulp), else with its bound */
-static double put(mm_result *res, int o, dde v, double *bound)
+static double put(mm_result *res, int o, mm_ddb v, double *bound)
 {
-    double x = mm_dd_val(v.x) + 0.0, e = v.e + mm_dd_abs(mm_dd_sub(v.x, mm_dd_from(x)));   /* no -0 */
+    double e, x = mm_ddb_round(v, &e);
     if (v.e <= 0.5 * mm_errbound_ulp(x))
         mm_res_scalar(res, o, x);
     else
@@ -343,12 +314,12 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
     double amag = put(res, O_A, K.a, NULL);
     put(res, O_CENT, K.cent, NULL);
     put(res, O_COR, K.cor, NULL);
-    dde an = quot(absdd(K.cr), K.v), rho = quot(mul(K.v, K.v), an);
+    mm_ddb an = mm_ddb_quot(mm_ddb_abs(K.cr), K.v), rho = mm_ddb_quot(mm_ddb_mul(K.v, K.v), an);
     if (speed > 0) {
         /* path components: a_t along v, a_n across it, rho = v^2 / a_n */
-        put(res, O_ATAN, quot(K.dot, K.v), NULL);
+        put(res, O_ATAN, mm_ddb_quot(K.dot, K.v), NULL);
         put(res, O_ANOR, an, NULL);
-        if (mag(K.cr) > K.cr.e)
+        if (mm_ddb_mag(K.cr) > K.cr.e)
             put(res, O_RHO, rho, &rho_err);
         else if (K.cr.e == 0)
             mm_res_warn(res, "the path is straight at t = %g (v and a along one line): no radius of curvature", t);
@@ -378,7 +349,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * with s's rounding as the error it starts from: within E of the exact
      * rho, and so of rho(s) within 2 E) and the printed one's own bound. */
     double an_ = mm_dd_val(an.x), rho_ = mm_dd_val(rho.x);
-    if (speed > 0 && mag(K.cr) > K.cr.e && an_ > 1e-9 * amag && speed > 1e-9 * (fabs(s.r) + 1)) {
+    if (speed > 0 && mm_ddb_mag(K.cr) > K.cr.e && an_ > 1e-9 * amag && speed > 1e-9 * (fabs(s.r) + 1)) {
         double k = mm_dd_val(K.cr.x) / (speed * speed * speed), R[3];
         double h = circle_step(&s, speed, k);
         int ok = mm_kin_circle3(point, &s, t, h, R);
@@ -387,7 +358,7 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
                        S.r2, S.th,
                        {mm_dd_from(s.th1), mm_dd_abs(mm_dd_sub(S.th1.x, mm_dd_from(s.th1))) + S.th1.e}, S.th2};
         polar_dd Kr = kin_dd(&Sr);
-        double E = quot(mul(Kr.v, Kr.v), quot(absdd(Kr.cr), Kr.v)).e;
+        double E = mm_ddb_quot(mm_ddb_mul(Kr.v, Kr.v), mm_ddb_quot(mm_ddb_abs(Kr.cr), Kr.v)).e;
         double e1 = circle_err(&s, h / 2), e2 = circle_err(&s, h / 4);
         if (ok)
             mm_res_check_abs(res, "rho = v^2/a_n vs the circle through three points of the path, bound 2 |R(h/2) - R(h/4)| + rounding",

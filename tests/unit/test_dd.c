@@ -55,11 +55,44 @@ static void complex_operations_should_be_exact_where_the_answer_is(void **state)
     assert_true(fabs(mm_dd_val(z.im) - sqrt(3)) <= z.err + EPS * sqrt(3));
 }
 
+/* mm_ddb: a cancellation kept to the last bit, and bounds that hold: every
+ * corner of the operands' error boxes, divided in double-double, lies in
+ * the quotient's box */
+static void bounded_operations_should_keep_digits_and_their_bounds_should_hold(void **state)
+{
+    (void)state;
+    /* (1 + 2^-30)^2 - (1 + 2^-29) = 2^-60: in double 0, in mm_ddb exact */
+    double a = 1 + ldexp(1, -30);
+    mm_ddb c = mm_ddb_sub(mm_ddb_mul(mm_ddb_exact(a), mm_ddb_exact(a)), mm_ddb_exact(1 + ldexp(1, -29)));
+    check_abs(a * a - (1 + ldexp(1, -29)), 0, 0, "double loses it all");
+    check_abs(mm_dd_val(c.x), ldexp(1, -60), 0, "mm_ddb keeps it");
+    assert_true(c.e <= MM_DDB_R * ldexp(1, -60));       /* the product exact (TwoProd), one dd rounding */
+    /* 3-4-5 */
+    mm_ddb h = mm_ddb_norm(mm_ddb_exact(3), mm_ddb_exact(4));
+    assert_true(fabs(mm_dd_val(h.x) - 5) <= h.e && h.e < 1e-29);
+    /* a quotient of uncertain operands: 1 +- 1e-20 over 3 +- 2e-20 */
+    mm_ddb n = {mm_dd_from(1), 1e-20}, d = {mm_dd_from(3), 2e-20}, q = mm_ddb_quot(n, d);
+    for (int i = 0; i < 4; i++) {
+        mm_dd ni = mm_dd_add(n.x, mm_dd_from(i & 1 ? n.e : -n.e)), di = mm_dd_add(d.x, mm_dd_from(i & 2 ? d.e : -d.e));
+        mm_dd off = mm_dd_sub(mm_dd_div(ni, di), q.x);
+        assert_true(mm_dd_abs(off) <= q.e);
+        assert_true(mm_dd_abs(off) >= 0.9 * q.e || i == 0 || i == 3);   /* tight at the far corners */
+    }
+    /* a divisor that may be 0 has no bound */
+    assert_true(isinf(mm_ddb_quot(n, (mm_ddb){mm_dd_from(1e-30), 1e-30}).e));
+    /* rounding to double: the bound grows by the rounding, the value is the nearest double */
+    mm_ddb third = mm_ddb_quot(mm_ddb_exact(1), mm_ddb_exact(3));
+    double e, x = mm_ddb_round(third, &e);
+    check_abs(x, 1.0 / 3, 0, "1/3 rounded");
+    assert_true(e >= 0.999 * fabsl(x - 1.0L / 3) && e <= 0.5 * EPS * x);   /* 1.0L / 3 itself to 1e-20 */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(products_and_sums_should_be_exact),
         cmocka_unit_test(complex_operations_should_be_exact_where_the_answer_is),
+        cmocka_unit_test(bounded_operations_should_keep_digits_and_their_bounds_should_hold),
     };
     return cmocka_run_group_tests_name("mm_dd", tests, NULL, NULL);
 }
