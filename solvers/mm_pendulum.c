@@ -131,17 +131,23 @@ static double period_of_distance(const mm_pendulum_motion *p, double d)
 {
     double Es = 2 * p->wn * p->wn;
     if (p->motion == MM_PENDULUM_SWING)
-        return 4 * mm_elliptic_Kc(sqrt(d / Es)) / p->wn;
+        return 4 * mm_elliptic_Kc(fmin(sqrt(d / Es), 1)) / p->wn;   /* d <= Es: E >= 0 */
     double E = Es + d;
     return 2 * mm_elliptic_Kc(sqrt(d / E)) / (sqrt(E / Es) * p->wn);
 }
 
 /* |dT/dE| by a central difference in d, relative step 1e-4 (accurate to
  * ~1e-8 relative: it only sizes a tolerance).  d comes from kc, which
- * keeps its digits right up to the separatrix. */
+ * keeps its digits right up to the separatrix.  A swing within h d of the
+ * bottom (E = Es - d < h d: an amplitude under 0.02 rad) has no energy
+ * below it to step to: there the difference is one-sided, from d down
+ * (accurate to ~1e-4 relative; at the bottom dT/dE = pi / (4 wn^3)).
+ * Stepping past E = 0 asked K for kc > 1. */
 double mm_pendulum_period_sensitivity(const mm_pendulum_motion *p)
 {
     double Es = 2 * p->wn * p->wn;
     double d = p->motion == MM_PENDULUM_SWING ? Es * p->kc * p->kc : Es * p->kk * p->kk * p->kc * p->kc, h = 1e-4;
+    if (p->motion == MM_PENDULUM_SWING && d * (1 + h) > Es)
+        return fabs(period_of_distance(p, d) - period_of_distance(p, d * (1 - 2 * h))) / (2 * h * d);
     return fabs(period_of_distance(p, d * (1 + h)) - period_of_distance(p, d * (1 - h))) / (2 * h * d);
 }

@@ -143,6 +143,25 @@ static void period_should_be_the_time_to_return(void **state)
     check_abs(w, w0, 2e-14, "over: theta'(T) = theta'(0)");
 }
 
+/* A small swing: dT/dE at the bottom is pi / (4 wn^3) (T = T0 (1 + E /
+ * (8 wn^2) + ...) from T = T0 (1 + theta0^2 / 16 + ...)); the central
+ * difference stepped past E = 0 and aborted on K(kc > 1) (dyn-pendulum,
+ * L = 0.00141 m, g = 25.08, theta0 = 0.0063, omega0 = -0.578: k^2 = 1.5e-5),
+ * and at rest there is no energy below at all. */
+static void period_sensitivity_of_a_small_swing_should_be_the_bottom_limit(void **state)
+{
+    (void)state;
+    const double cases[][4] = {{0.0014096398095928481, 25.080367619783328, 0.006308859985167666, -0.5778520772030333},
+                               {1, 9.81, 0, 0}, {1, 9.81, 1e-3, 0}};
+    for (int i = 0; i < 3; i++) {
+        mm_pendulum_motion p = mm_pendulum_motion_init(cases[i][0], cases[i][1], cases[i][2], cases[i][3]);
+        assert_int_equal(p.motion, MM_PENDULUM_SWING);
+        double lim = M_PI / (4 * p.wn * p.wn * p.wn);
+        /* the one-sided difference's 1e-4 and the k^2 term's (about 3 k^2 / 8) */
+        check_rel(mm_pendulum_period_sensitivity(&p), lim, 2e-4 + p.k * p.k, "dT/dE near the bottom");
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -151,6 +170,7 @@ int main(void)
         cmocka_unit_test(closed_form_should_reduce_to_the_small_swing),
         cmocka_unit_test(exact_motion_should_match_an_integration),
         cmocka_unit_test(period_should_be_the_time_to_return),
+        cmocka_unit_test(period_sensitivity_of_a_small_swing_should_be_the_bottom_limit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
