@@ -214,7 +214,7 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
         if (rc == MM_OK) {
             r->value = cval(&sum);
             r->abs_value = cval(&abs_sum);
-            r->err = fmax(e, floor_total);
+            r->err = r->err_value = fmax(e, floor_total);
         }
     }
     if (!piece)
@@ -232,10 +232,10 @@ static int gauss_panels(mm_quad_fn f, void *params, double a, double b, int m, d
                                    0.538469310105683091036314420700208, 0.906179845938663992797626878299393};
     static const int weight[5] = {2, 1, 0, 1, 2};
     csum s = {0, 0}, as = {0, 0};
-    double tv = 0, prev = NAN;
+    double prev = NAN, fl = 0;
     for (int i = 0; i < m; i++) {
         double lo = i == 0 ? a : a + (b - a) * i / m, hi = i == m - 1 ? b : a + (b - a) * (i + 1) / m;
-        double mid = 0.5 * (lo + hi), hh = 0.5 * (hi - lo), p = 0, ap = 0;
+        double mid = 0.5 * (lo + hi), hh = 0.5 * (hi - lo), p = 0, ap = 0, tv = 0;
         for (int j = 0; j < 5; j++) {
             double fv;
             int rc = call(f, params, mid + hh * node[j], &fv, evals, err);
@@ -251,10 +251,11 @@ static int gauss_panels(mm_quad_fn f, void *params, double a, double b, int m, d
             part[i] = p * hh;
         cadd(&s, p * hh);
         cadd(&as, ap * hh);
+        fl += floor_of(ap * hh, tv, lo, hi);   /* each panel's nodes rounded to u/2 of its own |x| */
     }
     *value = cval(&s);
     *abs_value = cval(&as);
-    *floor = floor_of(*abs_value, tv, a, b);
+    *floor = fl;
     return MM_OK;
 }
 
@@ -277,8 +278,9 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
     double cur, abs_value, fl;
     int rc = gauss_panels(f, params, a, b, m0, &cur, &abs_value, &fl, prev_part, &r->evals, err);
     int agree = 0;
+    double last = INFINITY;                 /* the change the previous doubling made */
     r->value = cur;
-    r->err = INFINITY;
+    r->err = r->err_value = INFINITY;
     r->pieces = m0;
     r->abs_value = abs_value;
     for (int m = 2 * m0; rc == MM_OK && m <= max_panels; m *= 2) {
@@ -299,6 +301,13 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
         for (int i = 0; i < m / 2; i++)
             cadd(&d, fabs(cur_part[2 * i] + cur_part[2 * i + 1] - prev_part[i]));
         r->err = fmax(cval(&d), fl);
+        /* the error of cur itself: the halvings to come change it by
+         * err rho + err rho^2 + ... at the rate rho the last two showed
+         * (a panel's rate only improves as it resolves f: 2^-10 at the
+         * end), once that rate has at least halved the change */
+        double rho = isinf(last) ? 1 : cval(&d) / last;
+        r->err_value = rho < 0.5 ? fmax(cval(&d) * rho / (1 - rho), fl) : r->err;
+        last = cval(&d);
         r->value = cur;
         r->pieces = m;
         r->abs_value = abs_value;
@@ -311,6 +320,8 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
     }
     free(prev_part < cur_part ? prev_part : cur_part);
     r->converged = agree == 2;
+    if (!r->converged)
+        r->err_value = r->err;             /* no rate to trust: the mesh may not resolve f yet */
     return rc;
 }
 

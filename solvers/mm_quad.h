@@ -57,6 +57,8 @@ typedef struct mm_quad_piece {
 typedef struct mm_quad_result {
     double value;      /* the integral */
     double err;        /* error estimate of value (the sum over the pieces) */
+    double err_value;  /* mm_quad_gk: err; mm_quad_gl: err is the last change, the error
+                          of the coarser mesh; this is the finer's, value's own (below) */
     double abs_value;  /* the integral of |f| (the scale of the rounding) */
     int pieces;        /* subintervals in the final partition */
     long evals;        /* calls of f */
@@ -85,7 +87,11 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
  * the coarser mesh of |(its two halves on the finer) - (it)| (an estimate
  * that overstates the error of the finer result for a smooth f, and that
  * errors of opposite sign in different panels cannot cancel; never below
- * the rounding floor).  1 <= m0 <= max_panels <= MM_QUAD_MAX_PANELS;
+ * the rounding floor: a few eps of the integral of |f|, and each panel's
+ * |x| u/2 times the variation of f across its nodes).  r->err_value is the
+ * error of r->value itself: where the last change was at most half the
+ * one before (rate rho), the changes still to come, err rho / (1 - rho),
+ * else err.  1 <= m0 <= max_panels <= MM_QUAD_MAX_PANELS;
  * 16 max_panels bytes of scratch.  Returns MM_OK (r->converged = 0 when
  * max_panels ran out), MM_EVALUE for bad arguments, MM_ENOMEM,
  * MM_ENONFINITE, or f's own return.  r->pieces is the number of panels,

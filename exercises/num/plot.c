@@ -191,10 +191,11 @@ static int run(const mm_value *in, mm_num_f *c, mm_result *res, mm_error *err)
     }
     if (have_int) {
         mm_res_scalar_err(res, O_INT, gk.value, gk.err, MM_ERR_ESTIMATE);
-        /* two rules, each within its estimate, and the rounding of the sums
-         * (compensated: a few eps of the integral of |f|) */
+        /* two rules, each within its estimate of its own value's error, and
+         * the rounding of the sums (compensated: a few eps of the integral
+         * of |f|); Gauss-Legendre's last change is the coarser mesh's error */
         mm_res_check_abs(res, "integral: adaptive Gauss-Kronrod vs composite Gauss-Legendre, within both error "
-                         "estimates, eqs. (4)-(5)", gk.value, gl.value, gk.err + gl.err);
+                         "estimates, eqs. (4)-(5)", gk.value, gl.value, gk.err + gl.err_value);
         /* eq. (3): the trapezoid rule on the plot's samples, with the rounding
          * of f at each sample (mm_expr_eval_err) and of the compensated sum */
         double tre, ef = mm_num_f_rounding(c, n, xs);                 /* at 33 of the samples at most */

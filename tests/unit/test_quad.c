@@ -178,6 +178,34 @@ static void the_gauss_estimate_should_not_rest_on_panels_cancelling(void **state
     assert_true(e <= r.err);
 }
 
+/* num-plot's defaults: sin(x)/(x^2+1) on [-5, 5], 0 by oddness.  The
+ * mesh converges at 128 panels; r.err, the change from 64 panels (8.2e-15),
+ * is the 64-panel mesh's error and 2,800 times that of the 128-panel value
+ * (2.9e-18), which num-plot's check took as the latter's.  The change from
+ * 32 to 64 panels was 1.1e-11: rate 7.3e-4 (2^-10 is 9.8e-4), so the
+ * halvings to come change the value by about 6e-18, below the rounding
+ * floor (4 eps of the integral of |f|, 1.4e-15, and the nodes'). */
+static void the_gauss_error_of_the_value_itself_should_follow_the_observed_rate(void **state)
+{
+    (void)state;
+    mm_quad_result r;
+    assert_int_equal(mm_quad_gl(f_sin_over_1px2, NULL, -5, 5, 32, 2048, 1.568e-11, &r, NULL), MM_OK);
+    assert_true(r.converged);
+    assert_int_equal(r.pieces, 128);
+    assert_true(r.err > 5e-15);                      /* the 64-panel mesh's error */
+    assert_true(fabs(r.value) <= r.err_value);
+    assert_true(r.err_value < 2e-15);                /* the rounding floor, no more */
+    assert_true(r.err_value > 4 * EPS * r.abs_value);
+    /* converged on e^x: the rate's estimate still covers the error */
+    assert_int_equal(mm_quad_gl(f_exp, NULL, 0, 1, 1, 1024, 1e-14, &r, NULL), MM_OK);
+    assert_true(fabs(r.value - (exp(1) - 1)) <= r.err_value);
+    /* not converged (the panels-cancelling case above): the last change */
+    assert_int_equal(mm_quad_gl(f_sin_over_1px2, NULL, -24.91236337002283, 917.1070996834376, 512, 2048, 1e-11, &r,
+                                NULL), MM_OK);
+    assert_false(r.converged);
+    assert_true(r.err_value == r.err);
+}
+
 static void non_finite_values_and_bad_arguments_should_be_named(void **state)
 {
     (void)state;
@@ -231,6 +259,7 @@ int main(void)
         cmocka_unit_test(running_out_of_pieces_should_say_so),
         cmocka_unit_test(composite_gauss_legendre_should_converge_with_order_ten),
         cmocka_unit_test(the_gauss_estimate_should_not_rest_on_panels_cancelling),
+        cmocka_unit_test(the_gauss_error_of_the_value_itself_should_follow_the_observed_rate),
         cmocka_unit_test(non_finite_values_and_bad_arguments_should_be_named),
         cmocka_unit_test(the_partition_should_cover_the_interval),
     };
