@@ -8,6 +8,7 @@
 #include "mm_exhelp.h"
 #include "mm_opt.h"
 #include "mm_pendulum.h"
+#include "mm_quad.h"
 #include "mm_roots.h"
 #include "mm_scene.h"
 
@@ -694,10 +695,7 @@ int mm_dyn_sc_compare(const mm_slider_crank *s, int partition, int ny, int n, co
 
 double mm_dyn_plan_work(const mm_dyn_plan *p, double *wabs)
 {
-    static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831,
-                                 0.9061798459386640};
-    static const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                 0.4786286704993665, 0.2369268850561891};
+    const double *gx = mm_quad_gl5_node, *gw = mm_quad_gl5_weight;
     double work = 0;
     *wabs = 0;
     for (int k = 0; k < 64; k++) {

@@ -477,7 +477,7 @@ void mm_geom_frame_mul(const double A[12], const double B[12], double C[12])
 
 /* ---- added for the kinematics chapter ------------------------------------------------ */
 
-#include "mm_quad.h"          /* mm_geom_trochoid_arch's Gauss-Legendre table */
+#include "mm_quad.h"          /* mm_geom_trochoid_arch's Gauss-Legendre panels */
 
 double mm_geom_m3_maxdiff(const double A[9], const double B[9])
 {
@@ -505,31 +505,36 @@ void mm_geom_euler_quat_matrix(const int seq[3], const double ang[3], double R[9
     R[6] = 2 * (x * z - w * y), R[7] = 2 * (y * z + w * x), R[8] = 1 - 2 * (x * x + y * y);
 }
 
+/* |dP/dphi| of the trochoid; p = {R, b} */
+static int trochoid_speed(double phi, double *v, void *p)
+{
+    const double *rb = p, sn = sin(0.5 * phi);
+    *v = sqrt((rb[0] - rb[1]) * (rb[0] - rb[1]) + 4 * rb[0] * rb[1] * sn * sn);
+    return 0;
+}
+
 double mm_geom_trochoid_arch(double R, double b, double *err)
 {
-    const double *x5 = mm_quad_gl5_node, *w5 = mm_quad_gl5_weight;
     enum { LEVELS = 48 };
-    double sum = 0, est = 0;
+    double rb[2] = {R, b}, sum = 0, est = 0;
     for (int j = 0; j <= LEVELS; j++) {
-        double hi = ldexp(M_PI, -j), lo = j < LEVELS ? 0.5 * hi : 0, q[3] = {0, 0, 0};
-        /* the panel whole (q[0]), in two halves (q[1], the value) and in four */
-        for (int l = 0; l < 3; l++) {
-            int split = 1 << l;
-            for (int p = 0; p < split; p++) {
-                double a = lo + (hi - lo) * p / split, c = lo + (hi - lo) * (p + 1) / split, hw = 0.5 * (c - a);
-                for (int k = 0; k < 5; k++) {
-                    double sn = sin(0.5 * (a + hw * (1 + x5[k])));
-                    q[l] += w5[k] * hw * sqrt((R - b) * (R - b) + 4 * R * b * sn * sn);
-                }
-            }
-        }
-        sum += q[1];
+        double hi = ldexp(M_PI, -j), lo = j < LEVELS ? 0.5 * hi : 0;
+        /* the panel in two halves (the value), its estimate |Q2 - Q1| (one
+         * panel: mm_quad_gl's panel-by-panel sum), and in four */
+        mm_quad_result q2, q4;
+        int rc = mm_quad_gl(trochoid_speed, rb, lo, hi, 1, 2, 0, &q2, NULL);
+        if (rc == MM_OK)
+            rc = mm_quad_gl(trochoid_speed, rb, lo, hi, 4, 4, 0, &q4, NULL);
+        assert(rc == MM_OK);                    /* f is finite; no scratch is allocated for 4 panels */
+        if (rc != MM_OK)
+            return NAN;
+        sum += q2.value;
         /* panel by panel: the panels' errors have either sign, and summed
          * differences can cancel where the errors themselves do not.  Two
-         * routes, each a bound on |e(q[1])| unless its pair of rules err
-         * alike: |q[1] - q[0]| when |e(q[1])| <= |e(q[0])| / 2, 2 |q[2] - q[1]|
-         * when |e(q[2])| <= |e(q[1])| / 2 */
-        est += fabs(q[1] - q[0]) + 2 * fabs(q[2] - q[1]);
+         * routes, each a bound on |e(Q2)| unless its pair of rules err
+         * alike: |Q2 - Q1| when |e(Q2)| <= |e(Q1)| / 2, 2 |Q4 - Q2|
+         * when |e(Q4)| <= |e(Q2)| / 2 */
+        est += q2.err + 2 * fabs(q4.value - q2.value);
     }
     if (err)
         *err = 2 * est;

@@ -21,9 +21,13 @@ static const double wgk[8] = {0.022935322010529224963732008058970, 0.06309209262
 static const double wg[4] = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
                              0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
 
-/* 5-point Gauss-Legendre on [-1, 1]: weights of the nodes 0, +-0.538, +-0.906 */
-static const double wgl[3] = {0.568888888888888888888888888888889, 0.478628670499366468041291514835639,
-                              0.236926885056189087514264040719918};
+/* 5-point Gauss-Legendre on [-1, 1], the code base's one copy (mm_quad.h):
+ * the nodes in increasing order and their weights */
+const double mm_quad_gl5_node[5] = {-0.906179845938663992797626878299, -0.538469310105683091036314420700, 0,
+                                    0.538469310105683091036314420700, 0.906179845938663992797626878299};
+const double mm_quad_gl5_weight[5] = {0.236926885056189087514264040720, 0.478628670499366468041291514836,
+                                      0.568888888888888888888888888889, 0.478628670499366468041291514836,
+                                      0.236926885056189087514264040720};
 
 /* a rounding floor: the error estimates never claim better than this many
  * eps of the integral of |f| (QUADPACK takes 50; with compensated sums a
@@ -228,9 +232,6 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
 static int gauss_panels(mm_quad_fn f, void *params, double a, double b, int m, double *value, double *abs_value,
                         double *floor, double *part, long *evals, mm_error *err)
 {
-    static const double node[5] = {-0.906179845938663992797626878299393, -0.538469310105683091036314420700208, 0,
-                                   0.538469310105683091036314420700208, 0.906179845938663992797626878299393};
-    static const int weight[5] = {2, 1, 0, 1, 2};
     csum s = {0, 0}, as = {0, 0};
     double prev = NAN, fl = 0;
     for (int i = 0; i < m; i++) {
@@ -238,11 +239,11 @@ static int gauss_panels(mm_quad_fn f, void *params, double a, double b, int m, d
         double mid = 0.5 * (lo + hi), hh = 0.5 * (hi - lo), p = 0, ap = 0, tv = 0;
         for (int j = 0; j < 5; j++) {
             double fv;
-            int rc = call(f, params, mid + hh * node[j], &fv, evals, err);
+            int rc = call(f, params, mid + hh * mm_quad_gl5_node[j], &fv, evals, err);
             if (rc != MM_OK)
                 return rc;
-            p += wgl[weight[j]] * fv;
-            ap += wgl[weight[j]] * fabs(fv);
+            p += mm_quad_gl5_weight[j] * fv;
+            ap += mm_quad_gl5_weight[j] * fabs(fv);
             if (!isnan(prev))
                 tv += fabs(fv - prev);
             prev = fv;
@@ -272,9 +273,11 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
     /* the panels' shares on the last two meshes: panel i of m is panels 2i
      * and 2i + 1 of 2m, to the last bit (a + (b - a) 2i / 2m is
      * a + (b - a) i / m: the factors of 2 are exact) */
-    double *prev_part = malloc(2 * (size_t)max_panels * sizeof *prev_part), *cur_part = prev_part + max_panels;
-    if (!prev_part)
+    double small[2 * 8];                     /* up to 8 panels: no allocation, no MM_ENOMEM */
+    double *base = max_panels <= 8 ? small : malloc(2 * (size_t)max_panels * sizeof *base);
+    if (!base)
         return mm_error_set(err, MM_ENOMEM, "", "out of memory for quadrature");
+    double *prev_part = base, *cur_part = base + max_panels;
     double cur, abs_value, fl;
     int rc = gauss_panels(f, params, a, b, m0, &cur, &abs_value, &fl, prev_part, &r->evals, err);
     int agree = 0;
@@ -318,34 +321,24 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
         if (agree == 2)
             break;
     }
-    free(prev_part < cur_part ? prev_part : cur_part);
+    if (base != small)
+        free(base);
     r->converged = agree == 2;
     if (!r->converged)
         r->err_value = r->err;             /* no rate to trust: the mesh may not resolve f yet */
     return rc;
 }
 
-/* ---- added for the kinematics chapter ------------------------------------------------ */
-
-const double mm_quad_gl5_node[5] = {-0.906179845938663992797626878299, -0.538469310105683091036314420700, 0,
-                                    0.538469310105683091036314420700, 0.906179845938663992797626878299};
-const double mm_quad_gl5_weight[5] = {0.236926885056189087514264040720, 0.478628670499366468041291514836,
-                                      0.568888888888888888888888888889, 0.478628670499366468041291514836,
-                                      0.236926885056189087514264040720};
-
 /* ---- statics (chapter 3) ------------------------------------------------------ */
 
 void mm_quad_gl5_nodes(double a, double b, int m, double *x, double *w)
 {
-    static const double gx[5] = {0, 0.5384693101056831, -0.5384693101056831, 0.9061798459386640,
-                                 -0.9061798459386640};
-    static const double gw[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
-                                 0.2369268850561891, 0.2369268850561891};
+    static const int order[5] = {2, 3, 1, 4, 0};      /* mid, then +-0.538, +-0.906 */
     for (int k = 0; k < m; k++) {
         double lo = a + (b - a) * k / m, hi = a + (b - a) * (k + 1) / m;
         for (int g = 0; g < 5; g++) {
-            x[5 * k + g] = 0.5 * (lo + hi) + 0.5 * (hi - lo) * gx[g];
-            w[5 * k + g] = 0.5 * (hi - lo) * gw[g];
+            x[5 * k + g] = 0.5 * (lo + hi) + 0.5 * (hi - lo) * mm_quad_gl5_node[order[g]];
+            w[5 * k + g] = 0.5 * (hi - lo) * mm_quad_gl5_weight[order[g]];
         }
     }
 }

@@ -92,7 +92,8 @@ int mm_quad_gk(mm_quad_fn f, void *params, double a, double b, const mm_quad_opt
  * error of r->value itself: where the last change was at most half the
  * one before (rate rho), the changes still to come, err rho / (1 - rho),
  * else err.  1 <= m0 <= max_panels <= MM_QUAD_MAX_PANELS;
- * 16 max_panels bytes of scratch.  Returns MM_OK (r->converged = 0 when
+ * 16 max_panels bytes of scratch (on the stack up to 8 panels, so that
+ * it cannot run out of memory).  Returns MM_OK (r->converged = 0 when
  * max_panels ran out), MM_EVALUE for bad arguments, MM_ENOMEM,
  * MM_ENONFINITE, or f's own return.  r->pieces is the number of panels,
  * r->abs_value the integral of |f|. */
@@ -101,10 +102,11 @@ int mm_quad_gl(mm_quad_fn f, void *params, double a, double b, int m0, int max_p
 
 /* ---- added for the kinematics chapter ------------------------------------------------ */
 
-/* The nodes on [-1, 1] and the weights of 5-point Gauss-Legendre (exact
- * for polynomials of degree 9), for callers that sum the rule themselves
- * (the integrand carries its own error estimate, a corner is met by
- * panels of their own). */
+/* The nodes on [-1, 1] (increasing) and the weights of 5-point
+ * Gauss-Legendre (exact for polynomials of degree 9), correctly rounded:
+ * the one table of the code base, used by mm_quad_gl, mm_quad_gl5_nodes
+ * and callers that sum the rule themselves (the integrand carries its
+ * own error estimate, a corner is met by panels of their own). */
 extern const double mm_quad_gl5_node[5], mm_quad_gl5_weight[5];
 
 /* ---- statics (chapter 3): a fixed rule, its nodes and weights ---------------- */
@@ -116,8 +118,7 @@ extern const double mm_quad_gl5_node[5], mm_quad_gl5_weight[5];
  * of f, exact for a polynomial of degree 9 or less.  For a sum written out
  * by the caller (several integrands on the same nodes, each weighted its
  * own way), where mm_quad_gl would call one f again and again.  The
- * constants are to 16 digits (the two outer weights 1 ulp above their
- * correctly rounded values, 2e-16 relative: far below any use here). */
+ * constants are mm_quad_gl5_node and mm_quad_gl5_weight. */
 void mm_quad_gl5_nodes(double a, double b, int m, double *x, double *w);
 
 /* ---- the moments of a sampled density (chapter 5, vib-dispersion) ---- */
