@@ -540,6 +540,7 @@ typedef struct symp_obs {
     double E0, scale;
     long N, stride;
     double max_first, max_second;
+    double rate_first, rate_second;   /* the fastest the motion went in each half, |theta1'| + |theta2'| */
     mm_series *out;
     int k;
 } symp_obs;
@@ -549,11 +550,11 @@ static int observe(long step, double t, const double *y, void *ctx)
     symp_obs *o = ctx;
     double yw[4];
     mm_dpend_to_velocities(o->s, y, yw);
-    double e = fabs(mm_dpend_energy(o->s, yw, NULL) - o->E0) / o->scale;
+    double e = fabs(mm_dpend_energy(o->s, yw, NULL) - o->E0) / o->scale, rate = fabs(yw[2]) + fabs(yw[3]);
     if (2 * step <= o->N)
-        o->max_first = fmax(o->max_first, e);
+        o->max_first = fmax(o->max_first, e), o->rate_first = fmax(o->rate_first, rate);
     else
-        o->max_second = fmax(o->max_second, e);
+        o->max_second = fmax(o->max_second, e), o->rate_second = fmax(o->rate_second, rate);
     if (step % o->stride == 0 && o->k < o->out->n) {
         o->out->x[o->k] = t;
         o->out->y[o->k] = fmax(e, DBL_EPSILON);            /* a log axis needs a floor */
@@ -564,7 +565,7 @@ static int observe(long step, double t, const double *y, void *ctx)
 
 int mm_dyn_dpend_symplectic(const mm_dpend *s, const double *y0, double t_end, double h, mm_symp_method m,
                             long max_steps, double E0, double Es, int out, int n, double *max_first,
-                            double *max_second, mm_result *res, mm_error *err)
+                            double *max_second, double *faster, mm_result *res, mm_error *err)
 {
     double yp0[4], scale[4];
     mm_dpend_to_momenta(s, y0, yp0);
@@ -598,6 +599,7 @@ int mm_dyn_dpend_symplectic(const mm_dpend *s, const double *y0, double t_end, d
     mm_res_method_stat(res, "symplectic_iterations_mean", sres.iter_mean);
     *max_first = ob.max_first;
     *max_second = ob.max_second;
+    *faster = ob.rate_first > 0 ? ob.rate_second / ob.rate_first : 1;
     return MM_OK;
 }
 

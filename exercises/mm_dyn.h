@@ -185,13 +185,15 @@ int mm_dyn_dpend_reference(const mm_dpend *s, const double *y0, double t_end, do
  * from y0 = (theta1, theta2, w1, w2) by method m with step h over [0, t_end]
  * (at most max_steps steps; the Newton scale of p from the fastest rate),
  * the energy error |E - E0| / Es at every step: its largest over the first
- * and the second half of the run into *max_first, *max_second, and every
+ * and the second half of the run into *max_first, *max_second, how much
+ * faster the second half went at its fastest than the first, the ratio of
+ * the largest |theta1'| + |theta2'|, into *faster, and every
  * stride-th into the series out (at most n points, floored at eps for a
  * log axis).  Reports the run's statistics on res.  Returns MM_OK,
  * MM_ENOMEM or mm_symp_solve's code with err filled. */
 int mm_dyn_dpend_symplectic(const mm_dpend *s, const double *y0, double t_end, double h, mm_symp_method m,
                             long max_steps, double E0, double Es, int out, int n, double *max_first,
-                            double *max_second, mm_result *res, mm_error *err);
+                            double *max_second, double *faster, mm_result *res, mm_error *err);
 
 /* dyn-double-pendulum's animation: the pendulum from y0 and its twin from
  * y0b (DOP853 at rtol), the lower bob's path, over about one slow period
