@@ -116,7 +116,12 @@ typedef struct mm_ode_options {
                          Fixed steps are made equal: N = ceil((t_end - t0)/h)
                          steps of (t_end - t0)/N <= h each. */
     double h_init;    /* first trial step [s] of an adaptive run; 0 = choose
-                         it automatically (Hairer's HINIT, costs one f call) */
+                         it automatically (Hairer's HINIT, costs one f call).
+                         Either way, until a step is accepted each trial is
+                         checked against the error estimate of its first
+                         half (n_first_halves): a step too long for its
+                         estimate to be asymptotic is rejected, however
+                         small the estimate at its whole length. */
     double h_max;     /* largest step [s] of an adaptive run; 0 = no limit */
     long max_steps;   /* most step attempts (accepted + rejected), 1..
                          MM_ODE_MAX_STEPS (default 100000) */
@@ -171,6 +176,10 @@ typedef struct mm_ode_result {
     int event;           /* 1: the run stopped at a zero of prob.event */
     double t_event;      /* its time [s] (valid when event = 1) */
     long n_event_evals;  /* calls of the event function */
+    long n_first_halves; /* adaptive runs: half steps taken to check the
+                            first step's error estimate, one per trial of
+                            the first step (each costs a step's calls of f,
+                            counted in n_eval; see h_init) */
 } mm_ode_result;
 
 /* Fill opt with the defaults above.  Cannot fail. */

@@ -243,6 +243,7 @@ static void osc_fixed_errors(mm_ode_method method, double h, double t_end,
     mm_error err;
     assert_int_equal(solve(&prob, &o, &res, &err), MM_OK);
     assert_int_equal(res.n_accepted, (long)N);
+    assert_int_equal(res.n_first_halves, 0);     /* fixed steps: no estimate to check */
     *err_steps = osc_max_err(ts, ys, res.n_stored);
     *err_mid = osc_max_err(tm, ym, N);
     free(ts);
@@ -741,7 +742,9 @@ static void a_grid_point_at_t_end_should_always_be_filled(void **state)
  * follows from the tableaux: RK4 4 per step + 1 (f at t0; its 5th, FSAL,
  * call gives the next step's first); DOPRI5 6 per attempt + 2 (f at t0,
  * HINIT); DOP853 11 per attempt + 1 per accepted step (FSAL) + 3 per step
- * that fills grid points + 2. */
+ * that fills grid points + 2; the adaptive methods one attempt more for
+ * each half step that checked a trial of the first step (at least one,
+ * and only before the first accepted step). */
 static void evaluation_counts_should_follow_from_the_tableaux(void **state)
 {
     (void)state;
@@ -760,7 +763,9 @@ static void evaluation_counts_should_follow_from_the_tableaux(void **state)
             mm_error err;
             assert_int_equal(solve(&prob, &o, &res, &err), MM_OK);
             assert_int_equal(res.n_eval, c.calls);
-            long attempts = res.n_accepted + res.n_rejected;
+            long halves = res.n_first_halves;
+            assert_true(m == MM_ODE_RK4 ? halves == 0 : halves >= 1 && halves <= res.n_rejected + 1);
+            long attempts = res.n_accepted + res.n_rejected + halves;
             if (m == MM_ODE_RK4) {
                 assert_int_equal(res.n_accepted, 1000);
                 assert_int_equal(res.n_eval, 4 * 1000 + 1);
@@ -797,6 +802,67 @@ static void error_estimate_should_bound_the_achieved_error(void **state)
         assert_true(res.err_local_max > 0.0);
         assert_true(res.err_local_max <= res.err_sum);
         assert_true(e <= res.err_sum);
+    }
+}
+
+/* A mass driven by a harmonic force, v' = cos(omega t) (unit force per
+ * mass), from v(t0) = 1: v = 1 + (sin omega t - sin omega t0) / omega.  f
+ * does not depend on v, so a step's local error is exactly the error of
+ * its increment, v_i - v_(i-1) against the closed form's. */
+static int driven_rhs(double t, const double *y, double *dydt, void *params)
+{
+    ctx *c = params;
+    (void)y;
+    c->calls++;
+    dydt[0] = cos(c->omega * t);
+    return 0;
+}
+
+/* The first step of an adaptive run has no earlier estimate behind it:
+ * the solver's guess (HINIT) sizes it from f and f' alone, and here it
+ * guesses 1.9 rad of the forcing (DOP853 at omega = 80 rad/s, tol 1e-10;
+ * DOPRI5 at 400 rad/s, 1e-8), outside the range where the error estimate
+ * grows like h^8 or h^5.  There the estimate, a polynomial in h, can pass
+ * through zero: at the phases omega t0 below it does (DOP853 3e-4 of the
+ * tolerance, DOPRI5 1e-3), while the step errs 13.7 and 7.8 times the
+ * tolerance.  The estimate at half the step gives it away (0.62 both,
+ * larger than at the whole step).  Every accepted step, the first too,
+ * must keep its local error within the tolerance it was accepted at
+ * (atol + rtol |v|; the estimates, of the lower-order partner, are
+ * cautious for the solution propagated). */
+static void first_step_should_not_pass_where_its_error_estimate_is_zero(void **state)
+{
+    (void)state;
+    const struct {
+        mm_ode_method method;
+        double omega, tol, phase;   /* phase = omega t0: at the estimate's zero */
+    } cases[] = {{MM_ODE_DOP853, 80.0, 1e-10, 2.157}, {MM_ODE_DOPRI5, 400.0, 1e-8, 0.416}};
+    for (int k = 0; k < 2; k++) {
+        ctx c = {.omega = cases[k].omega};
+        double t0 = cases[k].phase / c.omega, y0 = 1.0, ts[2000], ys[2000];
+        mm_ode_problem prob = {.n = 1, .f = driven_rhs, .params = &c, .t0 = t0,
+                               .t_end = t0 + 20.0 / c.omega, .y0 = &y0};
+        mm_ode_options o = opts(cases[k].method, cases[k].tol, 0.0);
+        mm_ode_result res = {0};
+        res.t_steps = ts;
+        res.y_steps = ys;
+        res.steps_cap = 2000;
+        mm_error err;
+        assert_int_equal(solve(&prob, &o, &res, &err), MM_OK);
+        double worst = 0.0, first = 0.0;
+        for (size_t i = 1; i < res.n_stored; i++) {
+            double exact = (sin(c.omega * ts[i]) - sin(c.omega * ts[i - 1])) / c.omega;
+            double e = fabs((ys[i] - ys[i - 1]) - exact);
+            double tol = o.atol + o.rtol * fmax(fabs(ys[i]), fabs(ys[i - 1]));
+            worst = fmax(worst, e / tol);
+            if (i == 1)
+                first = e / tol;
+        }
+        note("%s at omega t0 = %g: first step %.3g s, error/tolerance %.3g there, "
+             "%.3g at worst over %ld steps (%ld trials of the first)",
+             mm_ode_method_name(cases[k].method), cases[k].phase, ts[1] - ts[0], first, worst,
+             res.n_accepted, res.n_first_halves);
+        assert_true(worst <= 1.0);
     }
 }
 
@@ -1366,6 +1432,7 @@ int main(void)
         cmocka_unit_test(a_grid_point_at_t_end_should_always_be_filled),
         cmocka_unit_test(evaluation_counts_should_follow_from_the_tableaux),
         cmocka_unit_test(error_estimate_should_bound_the_achieved_error),
+        cmocka_unit_test(first_step_should_not_pass_where_its_error_estimate_is_zero),
         cmocka_unit_test(adaptive_run_should_stop_at_max_steps_with_a_clear_message),
         cmocka_unit_test(check_should_reject_each_bad_argument_naming_the_field),
         cmocka_unit_test(solve_should_report_enomem_for_a_missing_workspace),
