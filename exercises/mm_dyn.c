@@ -857,19 +857,6 @@ int mm_dyn_dpend_reference(const mm_dpend *s, const double *y0, double t_end, do
     mm_ode_problem pref = {.n = 4, .f = mm_dpend_rhs_lagrange, .params = &watch, .t0 = 0, .t_end = t_end,
                            .y0 = y0, .event = watch_step};
     mm_ode_options oref = mm_ode_options_adaptive(MM_ODE_DOP853, rtol, rtol, 2000000);
-    /* The first step: a fiftieth of a radian of the fastest motion (times
-     * (m1+m2)/m1, the stiffening where the rods line up), from where the
-     * controller grows it.  Left to the solver's guess from y0 and y0' it
-     * can land where the step is no longer small: DOP853's estimate, a
-     * polynomial in h fitted to the error's leading terms, then passes
-     * through zero at some h (its 5th-order part changes sign), and a step
-     * there passes with its error 40 times the tolerance.  That error is
-     * the energy's for the whole run (a first integral): at m1=24.7 m2=6.25
-     * l1=3.18 l2=6.03 g=2.23 omega1_0=11.8 omega2_0=-18.0 the guess 0.0157 s
-     * (0.5 rad) had an estimate of 0.43 and left 1.1e-8 of Es, 50 times a
-     * step's allowance; the run settles to 0.006 s steps, and from 6e-4 s it
-     * ends within 1.7e-12. */
-    oref.h_init = 0.02 / (mm_dyn_dpend_rate(s, y0) * (s->m1 + s->m2) / s->m1);
     int rc = mm_ode_run(&pref, &oref, r, err);
     *drift = watch.drift;
     *allow = watch.allow;

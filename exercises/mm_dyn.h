@@ -166,8 +166,7 @@ double mm_dyn_dpend_separation(const double *ya, const double *yb, int n, const 
                                double *d, double *plot);
 
 /* dyn-double-pendulum's reference: Lagrange's equations from y0 by DOP853
- * at rtol (atol rtol, at most 2e6 steps; the first step a fiftieth of a
- * radian of the fastest motion) over [0, t_end], the n states at
+ * at rtol (atol rtol, at most 2e6 steps) over [0, t_end], the n states at
  * the times t into y (n x 4), the run's statistics into *r; watched at the
  * end of every accepted step: *drift the largest energy error |E - E0| /
  * Es there, *allow the largest allowance of eq. (7)

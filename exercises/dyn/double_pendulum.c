@@ -216,9 +216,9 @@ static int solve(const mm_value *in, mm_result *res, mm_error *err)
      * and of the angles in DOP853's weights: a short run with large angles
      * and slow gravity (8 steps) erred 2.7 times over it.  The bound
      * assumes each step's error within the allowance, which DOP853 keeps
-     * only where its error estimate is asymptotic: the first step is set
-     * small for that (mm_dyn_dpend_reference).  At the defaults the error
-     * is 1/87 of this tolerance. */
+     * only where its error estimate is asymptotic: mm_ode checks its first
+     * step, the one no earlier estimate sized, against the estimate of its
+     * first half.  At the defaults the error is 1/78 of this tolerance. */
     double n_ref = (double)rr.n_accepted;
     mm_res_check_abs(res, "energy of the reference run (DOP853, rtol 1e-10): largest relative error",
                      ref_drift, 0, allow * (4 + 0.75 * sqrt(n_ref)));
