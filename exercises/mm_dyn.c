@@ -634,6 +634,16 @@ int mm_dyn_sc_reference_runs(mm_sc_system *sys, double w0, double t_end, int n, 
     mm_ode_problem pr = {.n = 2, .f = mm_sc_rhs_reduced, .params = sys, .t0 = 0, .t_end = t_end, .y0 = y0r};
     mm_ode_options orf = *opt;
     orf.rtol = orf.atol = fmax(1e-13, fmin(1e-12, 1e-3 * opt->rtol));   /* DOP853 struggles below 1e-13 */
+    /* and at most half the run's largest step: a short run (t_end 0.009
+     * s, 0.185 rad of the crank) was one step for the run, the reference
+     * and the third alike, each accepted on an estimate below 1e-12 while
+     * the step erred 2.4e-12 rad in the crank angle (mpmath): the three
+     * agreed, and revolutions was printed with 1/13 of its error.  Half the
+     * step errs ~2^-8 as much (DOP853), so the distance from the reference
+     * measures the run's own error; a reference at 1000 times the run's
+     * tolerance takes such steps anyway (1000^(1/8) = 2.4 times shorter) */
+    if (r->h_largest > 0)
+        orf.h_max = opt->h_max > 0 ? fmin(opt->h_max, 0.5 * r->h_largest) : 0.5 * r->h_largest;
     mm_ode_result rref = {.t_out = x, .nout = (size_t)n, .y_out = yr};
     int rc = mm_ode_run(&pr, &orf, &rref, err);
     if (rc != MM_OK)
