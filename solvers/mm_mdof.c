@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "mm_complex.h"
+#include "mm_dd.h"
 #include "mm_linalg.h"
 #include "mm_ode.h"
 #include "mm_sdof.h"
@@ -119,10 +120,24 @@ out:
 void mm_mdof_two_dof(double m1, double m2, double k1, double k2, double k3, double *omega,
                      double *phi)
 {
-    double a = (k1 + k2) / m1, d = (k2 + k3) / m2, b = -k2 / sqrt(m1 * m2);
-    double l2 = 0.5 * (a + d) + hypot(0.5 * (a - d), b);
+    double a = (k1 + k2) / m1, d = (k2 + k3) / m2, b = k2 > 0 ? -k2 / sqrt(m1 * m2) : 0;
+    /* p = (a - d)/2 from the exact products: a - d = (k1 m2 + k2 (m2 - m1)
+     * - k3 m1)/(m1 m2) cancels when the two uncoupled frequencies are
+     * close, and the rounding of a and d (eps a) would become an error of
+     * eps a/|a - d| in the modes' smaller components */
+    mm_dd n = mm_dd_add(mm_dd_sub(mm_dd_two_prod(k1, m2), mm_dd_two_prod(k3, m1)),
+                        mm_dd_sub(mm_dd_two_prod(k2, m2), mm_dd_two_prod(k2, m1)));
+    double p = n.hi / (2 * m1 * m2), h = hypot(p, b);
+    double l2 = 0.5 * (a + d) + h;
     double l1 = l2 > 0 ? (k1 * k2 + k1 * k3 + k2 * k3) / (m1 * m2 * l2) : 0;
-    double th = 0.5 * atan2(2 * b, a - d), c = cos(th), s = sin(th);
+    /* (c, s), the upper mode, from whichever row of [a - l2, b; b, d - l2]
+     * does not cancel: l2 - d = p + h for p >= 0, l2 - a = h - p for p < 0,
+     * sums of terms of one sign, so every component to a few eps of itself.
+     * cos and sin of atan2(2b, a - d)/2 lost the smaller component near
+     * theta = pi/2: an error of eps in theta, eps/|cos theta| of the
+     * component (5.5e-12 at a mass ratio of 5.6e5). */
+    double u = p >= 0 ? p + h : b, v = p >= 0 ? b : h - p, r = hypot(u, v);
+    double c = r > 0 ? u / r : 1, s = r > 0 ? v / r : 0;   /* r = 0: k2 = 0, a = d */
     double x[2][2] = {{-s, c}, {c, s}};          /* x[j]: mode j of [a b; b d] */
     omega[0] = sqrt(l1);
     omega[1] = sqrt(l2);

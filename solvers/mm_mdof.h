@@ -93,7 +93,8 @@ int mm_mdof_complex_modes(const mm_mdof_system *s, mm_mdof_cmode *modes, mm_erro
  *     lambda_2 = (a + d)/2 + hypot((a - d)/2, b),
  *     lambda_1 = (k1 k2 + k1 k3 + k2 k3) / (m1 m2 lambda_2)
  * (no cancellation: every term of the determinant is >= 0), and the
- * modes by the rotation angle theta = atan2(2b, a - d)/2.  A repeated pair
+ * modes from the row of [a - lambda_2, b; b, d - lambda_2] that does not
+ * cancel, every component to a few eps of itself.  A repeated pair
  * (k2 = 0, k1/m1 = k3/m2) gives the uncoupled modes.  m1, m2 > 0,
  * k1, k2, k3 >= 0.  Cannot fail. */
 void mm_mdof_two_dof(double m1, double m2, double k1, double k2, double k3, double *omega,

@@ -103,6 +103,28 @@ static void two_dof_should_give_mass_normalised_modes_with_phi1_positive(void **
     cJSON_Delete(d);
 }
 
+/* The 8,000-draw study's failing request, mass ratio 5.6e5: the mode-shape
+ * check failed (56.76 against 2.0e-13) because LAPACK's mode 2 came with
+ * the other sign (mm_mdof_modes makes the first component above 1e-8 of
+ * the largest positive: phi1 = 2.1e-7 against phi2 = -28.4 is below it),
+ * and the printed small components (phi2 of mode 1, phi1 of mode 2, the
+ * amplitude ratio) were 5.5e-12 off: cos of an angle 3.6e-5 from pi/2.
+ * mpmath, 50 digits. */
+static void two_dof_should_give_a_large_mass_ratio_its_small_components(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-2dof", "m1=693.9386378752288&m2=0.0012416879053236717&k1=320158.95550674456"
+                                    "&k2=1993.5845898484406&k3=478396.99235529656&mode=2");
+    check_rel(cell(d, "modes", 0, "phi1"), 0.03796115916235098189002, 4 * EPS, "mode 1 phi1");
+    check_rel(cell(d, "modes", 0, "phi2"), 0.0001575361307202314002928, 4 * EPS, "mode 1 phi2");
+    check_rel(cell(d, "modes", 1, "phi1"), 2.107297564700386713307e-7, 4 * EPS, "mode 2 phi1");
+    check_rel(cell(d, "modes", 1, "phi2"), -28.37878348206557277559, 4 * EPS, "mode 2 phi2");
+    check_rel(scalar(d, "amplitude_ratio_1"), 0.004149929406699260323979, 4 * EPS, "x2/x1, mode 1");
+    check_rel(scalar(d, "omega1"), 21.54590143186047743466, 4 * EPS, "omega1");
+    check_rel(scalar(d, "omega2"), 19669.39557229692553048, 4 * EPS, "omega2");
+    cJSON_Delete(d);
+}
+
 /* Twins with k2 = 0: one frequency twice, any combination a mode. */
 static void two_dof_should_report_a_repeated_frequency(void **state)
 {
@@ -468,6 +490,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(two_dof_should_give_mass_normalised_modes_with_phi1_positive),
+        cmocka_unit_test(two_dof_should_give_a_large_mass_ratio_its_small_components),
         cmocka_unit_test(two_dof_should_report_a_repeated_frequency),
         cmocka_unit_test(two_dof_should_count_a_rigid_body_mode),
         cmocka_unit_test(absorber_should_stop_the_main_mass_at_the_tuned_frequency),

@@ -41,6 +41,37 @@ static void modes_should_match_the_two_dof_closed_form(void **state)
     assert_true(Phi[0] > 0 && Phi[1] > 0);   /* first component positive */
 }
 
+/* The closed form, every component to a few eps of itself, against mpmath
+ * (50 digits, the double inputs exactly).  (a) A mass ratio of 5.6e5 (the
+ * 8,000-draw study's failing vib-2dof request): theta = atan2(2b, a - d)/2
+ * lay 3.6e-5 from pi/2, and cos/sin of it gave the small components with
+ * 24,700 eps of error (5.5e-12).  (b) Nearly equal uncoupled frequencies
+ * (a - d = 4.3e-5 of a): a and d rounded, their difference carried eps a
+ * into the modes' small components, 540 eps. */
+static void two_dof_closed_form_should_give_every_component_to_a_few_eps(void **state)
+{
+    (void)state;
+    static const struct {
+        double m1, m2, k1, k2, k3, w[2], phi[4];
+    } c[] = {
+        {693.9386378752288, 0.0012416879053236717, 320158.95550674456, 1993.5845898484406, 478396.99235529656,
+         {21.54590143186047743466, 19669.39557229692553048},
+         {0.03796115916235098189002, 2.107297564700386713307e-7, 0.0001575361307202314002928,
+          -28.37878348206557277559}},
+        {3, 0.7, 300.7, 0.0001, 70.1, {10.00714744306811244875, 10.01166153639654361573},
+         {0.0004408806949016630772726, 0.5773501008552316831924, 1.195228260849090253042,
+          -0.0009127097499916858696285}},
+    };
+    for (size_t k = 0; k < sizeof c / sizeof *c; k++) {
+        double w[2], phi[4];
+        mm_mdof_two_dof(c[k].m1, c[k].m2, c[k].k1, c[k].k2, c[k].k3, w, phi);
+        for (int j = 0; j < 2; j++)
+            check_rel(w[j], c[k].w[j], 4 * EPS, "omega_j, mpmath");
+        for (int i = 0; i < 4; i++)
+            check_rel(phi[i], c[k].phi[i], 4 * EPS, "phi, each component to a few eps of itself (mpmath)");
+    }
+}
+
 /* n masses m, springs k, both ends fixed: omega_j = 2 sqrt(k/m) sin(j pi / (2 (n + 1))). */
 static void modes_should_match_the_fixed_chain_and_its_lowest_modes(void **state)
 {
@@ -461,6 +492,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(modes_should_match_the_two_dof_closed_form),
+        cmocka_unit_test(two_dof_closed_form_should_give_every_component_to_a_few_eps),
         cmocka_unit_test(modes_should_match_the_fixed_chain_and_its_lowest_modes),
         cmocka_unit_test(modes_should_count_a_rigid_body_mode),
         cmocka_unit_test(complex_modes_should_give_rayleigh_damping_ratios),
