@@ -88,7 +88,8 @@ static const mm_output outputs[] = {
     [O_X_M] = MM_SERIES("x_%s", "%s", "m", "t", "s", .keys = mkeys, .figure = "response", .mark = "dots"),
     [O_WORK] = MM_SERIES("work_%s", "error of the end state against evaluations, %s", "m", "evaluations", "",
                          .keys = mkeys, .figure = "work", .x_scale = "log", .y_scale = "log"),
-    [O_STEP] = MM_SERIES("step_%s", "error of the end state against step, %s", "m", "h", "s", .keys = skeys,
+    [O_STEP] = MM_SERIES("step_%s", "rms error at the times every run of the sweep steps on, against step, %s",
+                         "m", "h", "s", .keys = skeys,
                          .figure = "step", .x_scale = "log", .y_scale = "log"),
     [O_ENERGY] = MM_SERIES("energy_%s", "relative energy error, %s", "", "t/T", "periods", .keys = ekeys,
                            .figure = "energy"),
@@ -265,13 +266,15 @@ static int sweeps(problem *pb, double zeta, long *total_evals, mm_table *tab, mm
     double wmax = fmax(pb->p.omega_n, pb->s.F0 != 0 ? pb->s.omega : 0);
     double t_sw = fmin(pb->t_end, 20 * 2 * M_PI / wmax), h0 = fmin(0.5 / wmax, t_sw / 8);
     mm_res_scalar(res, O_T_SWEEP, t_sw);
+    /* the fixed-step runs halve the first one's N0 steps exactly, so each steps on its N0 + 1 times */
+    double N0 = mm_ode_fixed_steps(t_sw, h0);
     for (int m = 0; m < NM; m++) {
-        double hs[24], es[24], cs[24];
+        double hs[24], es[24], cs[24], rs[24];
         int n = 0;
         for (int k = 0; k < 24; k++) {
             outcome o;
-            double hk = h0 / ldexp(1, k), tol = pow(10, -3 - k);
-            if ((m <= M_RK4 && t_sw / hk > SWEEP_STEPS) || (m > M_RK4 && tol < 1e-13))
+            double hk = t_sw / (N0 * ldexp(1, k)), tol = pow(10, -3 - k);
+            if ((m <= M_RK4 && N0 * ldexp(1, k) > SWEEP_STEPS) || (m > M_RK4 && tol < 1e-13))
                 break;
             int rc = run(pb, m, hk, tol, t_sw, &o, err, res);
             if (rc != MM_OK)
@@ -281,7 +284,15 @@ static int sweeps(problem *pb, double zeta, long *total_evals, mm_table *tab, mm
                 break;
             hs[n] = o.r.h;                     /* the step taken (mean if adaptive) */
             es[n] = fmax(o.err_end, 1e-300);   /* smooth in h, unlike a max over the grid */
-            cs[n++] = (double)o.r.evals;
+            cs[n] = (double)o.r.evals;
+            double sq = 0;   /* fixed-step: the rms error at the N0 + 1 shared times (integrators.md, 2) */
+            for (long i = 0, st = 1L << k; m <= M_RK4 && i <= (long)N0 && i * st < o.r.rows; i++) {
+                double ve, xe = mm_sdof_x(&pb->s, &pb->p, pb->buf_t[i * st], &ve);
+                double ex = pb->buf_x[i * st] - xe, ev = (pb->buf_v[i * st] - ve) / wmax;
+                sq += ex * ex + ev * ev;
+            }
+            rs[n] = fmax(sqrt(sq / (N0 + 1)), 1e-300);
+            n++;
             if (m > M_RK4 && o.r.evals > SWEEP_EVALS)
                 break;
         }
@@ -292,19 +303,19 @@ static int sweeps(problem *pb, double zeta, long *total_evals, mm_table *tab, mm
         for (int i = 0; i < n; i++) {   /* the plots get 3 digits of each error; the slopes use all of them */
             sw->x[i] = cs[i], sw->y[i] = es[i];
             if (sh)
-                sh->x[i] = hs[i], sh->y[i] = es[i];
+                sh->x[i] = hs[i], sh->y[i] = rs[i];
         }
         mm_ex_round_sig(sw->y, n, 3);
         if (sh)
-            memcpy(sh->y, sw->y, (size_t)n * sizeof *sh->y);
+            mm_ex_round_sig(sh->y, n, 3);
         double order, spread;
-        if (m > M_RK4 || mm_ex_observed_order(hs, es, n, 1e-11 * pb->scale, 1e-2 * pb->scale, &order, &spread) < 3) {
+        if (m > M_RK4 || mm_ex_observed_order(hs, rs, n, 1e-11 * pb->scale, 1e-2 * pb->scale, &order, &spread) < 3) {
             tab->text[10 * m + 8] = tab->text[10 * m + 9] = m > M_RK4 ? "adaptive: see work" : "too few steps";
             continue;
         }
         /* theory: 2, 2, 4, and Verlet 2 without damping (with damping its first-order damping error
-         * competes with the second-order rest: reported, not checked); the slope is known to the spread
-         * of the local slopes plus the next term of the error, ~ |lambda| h of the finest step fitted,
+         * competes with the second-order rest: reported, not checked); the rms error's slope is known to
+         * the spread of the local slopes plus the error's next term, ~ |lambda| h of the finest step fitted,
          * lambda the fastest rate of the motion: omega (if forced) or the fastest root of (1),
          * omega_n (zeta + sqrt(zeta^2 - 1)) when overdamped, up to 2 zeta omega_n (not omega_n) */
         tab->cell[10 * m + 8] = order, tab->cell[10 * m + 9] = spread;
@@ -312,7 +323,7 @@ static int sweeps(problem *pb, double zeta, long *total_evals, mm_table *tab, mm
             continue;
         double hf = 0;
         for (int i = n - 1; i >= 0 && hf == 0; i--)
-            hf = es[i] >= 1e-11 * pb->scale && es[i] <= 1e-2 * pb->scale ? hs[i] : 0;
+            hf = rs[i] >= 1e-11 * pb->scale && rs[i] <= 1e-2 * pb->scale ? hs[i] : 0;
         double lam = fmax(pb->p.omega_n * (zeta > 1 ? zeta + sqrt(zeta * zeta - 1) : 1),
                           pb->s.F0 != 0 ? pb->s.omega : 0);
         char name[200];

@@ -206,11 +206,12 @@ static void near_resonance_numbers_should_keep_their_digits(void **state)
 
 /* ---- the observed orders: a slope still bending slowly ---------------------------------- */
 
-/* Overdamped and driven 27 times faster than omega_n: RK4's local slopes
- * (end-state errors at 84, 168, 336 steps) are 3.9938 and 3.9930, nearly
- * equal yet 0.007 below 4 (they reach 3.9965 at 1341 steps): the spread
- * alone (4e-4) made a tolerance of 0.0043 and the check failed; the
- * error's next term, omega h = 0.125 at the finest step fitted, bounds it. */
+/* Overdamped and driven 27 times faster than omega_n: the error's next term
+ * grows with omega h, not omega_n h (0.0045 at the finest step fitted).
+ * Fitted to the end state, RK4's local slopes were 3.9938 and 3.9930 (spread
+ * 4e-4, 0.007 below 4) and a tolerance of 10 spreads failed; fitted to the
+ * rms error at the shared times they are 4.018, 4.007, 4.003, the slope
+ * 0.012 above 4, and the tolerance carries omega h = 0.125. */
 static void a_slowly_bending_slope_should_not_fail_the_order_check(void **state)
 {
     (void)state;
@@ -220,17 +221,19 @@ static void a_slowly_bending_slope_should_not_fail_the_order_check(void **state)
                                            "&periods=446");
     const cJSON *c = check_named(d, "rk4: observed order");
     assert_non_null(c);
+    double dev = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
     double tol = cJSON_GetObjectItem(c, "tolerance")->valuedouble;
-    assert_true(tol > 0.0066 && tol < 0.2);   /* above the deviation made, within 30 times of it */
+    assert_true(tol > 0.12 && tol < 30 * dev);   /* omega h counted; within 30 times the deviation */
     cJSON_Delete(d);
 }
 
 /* Overdamped (zeta 1.86) so the fast root is omega_n (zeta + sqrt(zeta^2 - 1))
- * = 2449/s, 3.4 times omega_n: RK4's fitted steps have |lambda| h = 1.7 to
- * 0.43 (errors 1.1e-8 to 3.5e-11 of the motion), its local slopes 4.165 and
- * 4.176, slope 4.176.  omega_n h = 0.125 of the finest step made a tolerance
- * of 0.130 (MM_SEED=7, 200 draws) and the check failed; the fastest rate,
- * |lambda| h = 0.43, bounds the 0.176 with a tolerance of 0.43. */
+ * = 2450/s, 3.4 times omega_n: its transient rules RK4's rms error, whose
+ * local slopes 5.11, 4.53, 4.26, 4.13, 4.06, 4.03 (|lambda| h = 1.7 down to
+ * 0.027) bend by 0.72 (5/6) |lambda| h of the coarser step, as R(z) e^-z =
+ * 1 - z^5/120 + z^6/144 says: the four finest give 4.074, spread 0.055.
+ * (Fitted to the end state, the slope was 4.176 at |lambda| h = 0.43, and a
+ * tolerance built on omega_n h failed.) */
 static void an_overdamped_fast_root_should_bound_the_slope_bend(void **state)
 {
     (void)state;
@@ -242,9 +245,41 @@ static void an_overdamped_fast_root_should_bound_the_slope_bend(void **state)
     assert_non_null(c);
     double dev = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
     double tol = cJSON_GetObjectItem(c, "tolerance")->valuedouble;
-    assert_true(dev > 0.15);                  /* the bend is real, not round-off */
-    assert_true(tol > dev && tol < 5 * dev);  /* above the deviation made, within 5 times of it */
+    assert_true(dev > 0.05);                   /* the bend is real, not round-off */
+    assert_true(tol > dev && tol < 10 * dev);  /* above the deviation made, within 10 times of it */
     cJSON_Delete(d);
+}
+
+/* The end state's error is one value of e(t) = h^4 c4(t) + h^5 c5(t) + ...,
+ * and c4(t) can pass near zero there.  At the first request (overdamped,
+ * span 0.041 s) RK4's end-state slopes were 5.20, 5.27, 5.49, 5.06 down to
+ * 2e-14 of the motion (the same at 40 digits, mpmath; 4 only below that):
+ * fitted 5.237 against a tolerance of 0.457.  At the second (20 forced
+ * periods, steady) the real part of the complex h^4 error was small at the
+ * end's phase: slopes 3.31, 3.30, fitted 3.305 against 0.175.  Both failed
+ * the 8,000-draw study; the rms error at the shared times gives 4.067 and
+ * 4.066 (local slopes 4.12 ... 4.01 and 4.23 ... 4.01). */
+static void rk4_order_should_be_fitted_to_an_error_whose_leading_term_cannot_vanish(void **state)
+{
+    (void)state;
+    static const char *const q[] = {
+        "omega_n=67.10884134817222&zeta=1.391268990809192&F=966.2000174953598&omega=308.17950391838156"
+        "&x0=7.261059942782985&v0=-175.66224164286928&t_end=0.04054506147832013&h=0.0007101873749309484"
+        "&rtol=3.6088309772544015e-07&periods=70",
+        "omega_n=168.2051750670756&zeta=1.5195648483303217&F=530.863565969082&omega=585.127346657985"
+        "&x0=4.358887747693423&v0=770.0389295554978&t_end=0.22384299420104206&h=0.3600441784887918"
+        "&rtol=7.04677202313559e-11&periods=15",
+    };
+    for (int i = 0; i < 2; i++) {
+        cJSON *d = solve_ok("vib-integrators", q[i]);
+        const cJSON *c = check_named(d, "rk4: observed order");
+        assert_non_null(c);
+        double dev = cJSON_GetObjectItem(c, "abs_error")->valuedouble;
+        double tol = cJSON_GetObjectItem(c, "tolerance")->valuedouble;
+        check_abs(cell(d, "methods", 3, "observed_order")->valuedouble, 4, 0.1, "RK4's observed order");
+        assert_true(tol < 10 * dev);   /* the tolerance stays within 10 times the deviation */
+        cJSON_Delete(d);
+    }
 }
 
 /* ---- #12: the order of damped Verlet ------------------------------------------------- */
@@ -486,6 +521,7 @@ int main(void)
         cmocka_unit_test(near_resonance_numbers_should_keep_their_digits),
         cmocka_unit_test(a_slowly_bending_slope_should_not_fail_the_order_check),
         cmocka_unit_test(an_overdamped_fast_root_should_bound_the_slope_bend),
+        cmocka_unit_test(rk4_order_should_be_fitted_to_an_error_whose_leading_term_cannot_vanish),
         cmocka_unit_test(verlet_order_should_be_one_with_damping_and_two_without),
         cmocka_unit_test(the_radian_cap_should_allow_twice_the_old_span),
         cmocka_unit_test(oscillators_should_animate_their_motion),
