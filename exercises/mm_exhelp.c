@@ -581,7 +581,7 @@ int mm_ex_sdof_method(const mm_sdof *s, int m, double h, double rtol, double ato
         mm_newmark_options_init(&opt);
         opt.method = m == MM_EX_CENTRAL ? MM_NEWMARK_CENTRAL : m == MM_EX_AVERAGE ? MM_NEWMARK_AVERAGE
                                                                                   : MM_NEWMARK_VERLET;
-        opt.h = h;
+        opt.h = o->h;                   /* t_end / N: mm_newmark steps with the h it is given */
         opt.stride = stride;
         opt.max_steps = max_steps;
         mm_newmark_result r = {.t = t, .q = x, .qd = v, .max_rows = cap};

@@ -218,10 +218,10 @@ typedef struct mm_ex_run {
 } mm_ex_run;
 
 /* The 1-DOF oscillator s (m x'' + c x' + k x = F0 cos wt) over [0, t_end]
- * by method m: the fixed-step ones with step h, the adaptive ones at rtol
- * and atol.  The state at every stride-th step (and the last) goes into t,
- * x and v (v may be NULL), at most cap rows; stride > 1 only for the
- * fixed-step methods.  At most (cap - 1) stride steps are taken.  Returns
+ * by method m: the fixed-step ones with N = ceil(t_end / h) equal steps of
+ * t_end / N (o->h), the adaptive ones at rtol and atol.  The state at every
+ * stride-th step (and the last) goes into t, x and v (v may be NULL), at
+ * most cap rows; stride > 1 only for the fixed-step methods.  At most (cap - 1) stride steps are taken.  Returns
  * MM_OK (also when the run failed: o->failed says so), or an error of the
  * solvers with err filled. */
 int mm_ex_sdof_method(const mm_sdof *s, int m, double h, double rtol, double atol, double t_end, long stride,
