@@ -212,9 +212,10 @@ double mm_dyn_plan_peak(const mm_dyn_plan *p, int j, double *t_at, double *err)
 
 /* ---- dyn-slider-crank ------------------------------------------------------- */
 
-/* The extremes of the effective inertia J(phi) (eq. 5) over a turn: 720
- * samples, each refined by golden sections.  J is even about 0 and pi, so
- * half a turn is enough. */
+/* The extremes of the effective inertia J(phi) (eq. 5) over a turn: 361
+ * samples of half a turn (J is even about 0 and pi, so half is enough),
+ * the largest and the smallest each refined by golden sections
+ * (mm_opt_scan_golden_max). */
 typedef struct inertia_ctx {
     const mm_slider_crank *s;
     double sign;
