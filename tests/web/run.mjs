@@ -576,8 +576,10 @@ try {
 
   await test('print: a worked solution on A4', async (page) => {
     // A page learns of print media by its media-query listener, which runs
-    // at the next frame, not when emulateMedia returns: the listener is
-    // slowed by 400 ms here so that a test reading too early fails every time.
+    // at the next frame, not when emulateMedia returns (CI once read the
+    // printed copy before that redraw and the screen's frame after it).  The
+    // listener is slowed by 400 ms here, so the test must wait for the page
+    // to say it has drawn for print (data-medium) before it reads anything.
     await page.addInitScript(() => {
       const add = MediaQueryList.prototype.addEventListener;
       MediaQueryList.prototype.addEventListener = function (type, fn, o) {
