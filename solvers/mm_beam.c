@@ -139,27 +139,27 @@ static void xs_add(xsum *s, double x)
             double t = x;
             x = y, y = t;
         }
-        double hi = x + y, lo = y - (hi - x);   /* x + y = hi + lo exactly (|x| >= |y|) */
-        if (lo != 0)
-            s->p[j++] = lo;
-        x = hi;
+        mm_dd t = mm_dd_fast(x, y);             /* x + y = hi + lo exactly (|x| >= |y|) */
+        if (t.lo != 0)
+            s->p[j++] = t.lo;
+        x = t.hi;
     }
     s->p[j++] = x;
     s->n = j;
 }
 
 /* s += a b c exactly: a and b sums of doubles, c a double; each product of
- * two doubles is p + e exactly (fma), so a b c is 4 n_a n_b doubles */
+ * two doubles is hi + lo exactly (mm_dd_two_prod), so a b c is 4 n_a n_b doubles */
 static void xs_add_prod(xsum *s, const xsum *a, const xsum *b, double c)
 {
     for (int i = 0; i < a->n; i++)
         for (int j = 0; j < b->n; j++) {
-            double p = a->p[i] * b->p[j], e = fma(a->p[i], b->p[j], -p);
-            double pc = p * c, ec = e * c;
-            xs_add(s, pc);
-            xs_add(s, fma(p, c, -pc));
-            xs_add(s, ec);
-            xs_add(s, fma(e, c, -ec));
+            mm_dd ab = mm_dd_two_prod(a->p[i], b->p[j]);
+            mm_dd pc = mm_dd_two_prod(ab.hi, c), ec = mm_dd_two_prod(ab.lo, c);
+            xs_add(s, pc.hi);
+            xs_add(s, pc.lo);
+            xs_add(s, ec.hi);
+            xs_add(s, ec.lo);
         }
 }
 
