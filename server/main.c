@@ -2,7 +2,7 @@
  *
  *   mechmat-server [--host 127.0.0.1] [--port 8080] [--threads N] [--io-threads 2]
  *                  [--course FILE] [--cache-mb 64] [--queue 1024]
- *                  [--max-connections 10000] [--root DIR] [--web-root DIR]
+ *                  [--max-connections 10000] [--light-us 300] [--root DIR] [--web-root DIR]
  *                  [--quiet] [--print-asset-version]
  *
  * The tree it serves from (theory texts, web/, node_modules/ with the
@@ -76,7 +76,7 @@ static void find_root(char *root, size_t size)
 static void usage(FILE *f)
 {
     fprintf(f, "usage: mechmat-server [--host ADDR] [--port N] [--threads N] [--io-threads N] [--course FILE]\n"
-               "                      [--cache-mb N] [--queue N] [--max-connections N]\n"
+               "                      [--cache-mb N] [--queue N] [--max-connections N] [--light-us N]\n"
                "                      [--root DIR] [--web-root DIR] [--quiet] [--print-asset-version]\n");
 }
 
@@ -148,6 +148,11 @@ int main(int argc, char **argv)
         } else if (strcmp(a, "--queue") == 0) {
             if (!parse_int(a, v, 1, 1000000, &o.queue))
                 return 2;
+            i++;
+        } else if (strcmp(a, "--light-us") == 0) {   /* mm_light.h; 0: every solve to the workers */
+            if (!parse_int(a, v, 0, 1000000, &o.light_us))
+                return 2;
+            o.light_us = o.light_us ? o.light_us : -1;
             i++;
         } else if (strcmp(a, "--cache-mb") == 0) {
             if (!parse_int(a, v, 0, 1 << 20, &cache_mb))

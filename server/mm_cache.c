@@ -141,6 +141,9 @@ int mm_cache_get(mm_cache *c, const char *key, size_t len, void *who, mm_entry *
         lru_front(c, e);
         c->hits++;
         rc = MM_CACHE_HIT;
+    } else if (e && !who) {                 /* a claim: not this one's to wait for */
+        pthread_mutex_unlock(&c->lock);
+        return MM_CACHE_WAIT;
     } else if (e) {
         if (add_waiter(e, who) != 0) {
             pthread_mutex_unlock(&c->lock);
@@ -151,7 +154,7 @@ int mm_cache_get(mm_cache *c, const char *key, size_t len, void *who, mm_entry *
     } else {
         e = calloc(1, sizeof *e);
         char *k = malloc(len + 1);
-        if (!e || !k || add_waiter(e, who) != 0) {
+        if (!e || !k || (who && add_waiter(e, who) != 0)) {
             free(e);
             free(k);
             pthread_mutex_unlock(&c->lock);

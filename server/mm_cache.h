@@ -67,6 +67,9 @@ mm_entry *mm_cache_lookup(mm_cache *c, const char *key, size_t len);
  *   MISS  *e is a new pending entry (referenced): compute it and fill it;
  *         who is registered to be woken by the fill too;
  *   WAIT  *e is pending (referenced); who is woken when it is filled.
+ * who NULL is a claim by a caller that computes at once and cannot wait:
+ * HIT as above, MISS with nobody registered, and WAIT with *e NULL and
+ * nothing registered (the caller then asks again with a who).
  * Returns -1 (and *e NULL) when out of memory. */
 int mm_cache_get(mm_cache *c, const char *key, size_t len, void *who, mm_entry **e);
 

@@ -2,6 +2,7 @@
  * its solve workers, caching and compression, static files, metrics, the
  * access log (see mm_http.h for the threading model). */
 #include "mm_http.h"
+#include "mm_light.h"
 
 #include <ctype.h>
 #include <dirent.h>
@@ -76,7 +77,7 @@ static const double solve_buckets[] = {1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 0.1, 
 typedef struct metrics {
     atomic_ullong requests[MAX_ROUTES][N_ST];
     atomic_ullong solve_hist[N_BUCKETS + 1];
-    atomic_ullong solve_us_sum, solves;
+    atomic_ullong solve_us_sum, solves, light_solves;
     atomic_ullong revalidated, bytes_out, busy;
     atomic_ullong reloads_ok, reloads_failed;
 } metrics;
@@ -111,6 +112,15 @@ typedef struct asset {             /* a web file as the asset version saw it */
 
 #define MAX_IO 8
 
+/* Light solves: made by the event thread that read the request (mm_light.h) */
+#define LIGHT_SLOTS 256            /* exercise ids; past that, every solve goes to the workers */
+
+typedef struct light {
+    atomic_int ready;              /* id and weight are set */
+    char id[64];
+    atomic_int weight;             /* us, see mm_light.h */
+} light;
+
 struct mm_server {
     struct MHD_Daemon *d[MAX_IO];  /* the event threads, one daemon each */
     int n_io;
@@ -133,6 +143,11 @@ struct mm_server {
     char asset_version[32];
     asset *assets;
     int n_assets;
+
+    /* which exercises' solves run on the event threads (light_weight) */
+    int light_us;                  /* mm_light.h; 0: none */
+    pthread_mutex_t light_lock;
+    light lights[LIGHT_SLOTS];
 
     /* solve workers */
     pthread_t *workers;
@@ -159,6 +174,7 @@ struct job {
     const mm_assignment *asg;      /* a task's, alive while site is */
     char *text;                    /* a task's input: the body, or the student */
     size_t text_len;
+    atomic_int *weight;            /* a solve's exercise's (light_weight), or NULL */
 };
 
 /* Per-request state, from the first callback to the completion notice. */
@@ -1059,23 +1075,66 @@ static char *dup_exact(const char *p, size_t n)
     return d;
 }
 
-/* out: the worker's own buffer, written into and kept from one solve to
- * the next; what goes into the cache is a copy of the answer's own size.
- * A fresh buffer per answer (and one for the compressed form) was a block
- * over malloc's mmap threshold each time, mapped, faulted in page by page
- * and unmapped on eviction (see mm_result_keep_blocks). */
-static void run_job(mm_server *s, job *j, mm_buf *out)
+/* The weight of the exercise id (mm_light.h), made at its first solve;
+ * NULL when the table is full or the id too long.  Read without the lock:
+ * a slot is written once, under the lock, and then published by its state. */
+static atomic_int *light_weight(mm_server *s, const char *id)
 {
-    if (j->task != TASK_NONE) {
-        run_task(s, j);
-        return;
+    size_t n = strlen(id);
+    if (n >= sizeof s->lights[0].id)
+        return NULL;
+    uint64_t h = 1469598103934665603ULL;       /* FNV-1a */
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ (unsigned char)id[i]) * 1099511628211ULL;
+    for (int locked = 0; locked < 2; locked++) {
+        if (locked)
+            pthread_mutex_lock(&s->light_lock);
+        for (int k = 0; k < LIGHT_SLOTS; k++) {
+            light *l = &s->lights[(h + (uint64_t)k) % LIGHT_SLOTS];
+            if (!atomic_load_explicit(&l->ready, memory_order_acquire)) {
+                if (!locked)
+                    break;                     /* not there: again under the lock */
+                memcpy(l->id, id, n + 1);
+                atomic_init(&l->weight, mm_light_start(s->light_us));
+                atomic_store_explicit(&l->ready, 1, memory_order_release);
+            }
+            if (strcmp(l->id, id) == 0) {
+                if (locked)
+                    pthread_mutex_unlock(&s->light_lock);
+                return &l->weight;
+            }
+        }
+        if (locked)
+            pthread_mutex_unlock(&s->light_lock);
     }
+    return NULL;
+}
+
+/* this thread's CPU time: a solve's weight, not the time it waited for a core */
+static long long thread_cpu_us(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (long long)ts.tv_sec * 1000000 + ts.tv_nsec / 1000;
+}
+
+/* Solve sv, write its answer (and its gzip form when wanted) and fill the
+ * pending entry e with it, which wakes whoever waits for it; how long that
+ * took goes to weight.  out: the thread's own buffer, written into and kept
+ * from one solve to the next; what goes into the cache is a copy of the
+ * answer's own size.  A fresh buffer per answer (and one for the
+ * compressed form) was a block over malloc's mmap threshold each time,
+ * mapped, faulted in page by page and unmapped on eviction (see
+ * mm_result_keep_blocks). */
+static void make_answer(mm_server *s, mm_solve *sv, mm_entry *e, int want_gz, mm_buf *out, atomic_int *weight)
+{
+    long long t0 = thread_cpu_us();
     mm_buf_reset(out);
-    if (j->solve->rc == MM_OK)
-        mm_api_run(j->solve);
-    int status = mm_api_write(j->solve, out);
-    if (j->solve->ran)
-        observe_solve(s, j->solve->elapsed_us);
+    if (sv->rc == MM_OK)
+        mm_api_run(sv);
+    int status = mm_api_write(sv, out);
+    if (sv->ran)
+        observe_solve(s, sv->elapsed_us);
     size_t len = out->len;
     char *body = out->failed || !out->p ? NULL : dup_exact(out->p, len);
     if (out->cap > OUT_KEEP)
@@ -1087,15 +1146,66 @@ static void run_job(mm_server *s, job *j, mm_buf *out)
     }
     char *gz = NULL;
     size_t gz_len = 0;
-    if (j->want_gz && status == 200 && len >= GZ_MIN && gzip_bytes(body, len, GZ_ANSWER, &gz, &gz_len) != 0)
+    if (want_gz && status == 200 && len >= GZ_MIN && gzip_bytes(body, len, GZ_ANSWER, &gz, &gz_len) != 0)
         gz = NULL, gz_len = 0;
     int keep = status == 200 || status == mm_http_status(MM_ESINGULAR);
-    mm_cache_fill(s->cache, j->entry, status, body, len, gz, gz_len, j->solve->elapsed_us, keep, wake);
+    mm_light_note(weight, thread_cpu_us() - t0);
+    mm_cache_fill(s->cache, e, status, body, len, gz, gz_len, sv->elapsed_us, keep, wake);
+}
+
+static void run_job(mm_server *s, job *j, mm_buf *out)
+{
+    if (j->task != TASK_NONE) {
+        run_task(s, j);
+        return;
+    }
+    make_answer(s, j->solve, j->entry, j->want_gz, out, j->weight);
     mm_solve_free(j->solve);
     free(j->solve);
     mm_cache_unref(j->entry);
     site_unref(j->site);
     free(j);
+}
+
+/* An event thread's answer buffer for light solves, and the result block
+ * it keeps (mm_result_keep_blocks), freed when the thread ends (the key's
+ * destructor: libmicrohttpd's threads are not ours). */
+typedef struct io_thread {
+    mm_buf out;
+} io_thread;
+
+static _Thread_local io_thread *io_tl;
+static pthread_key_t io_key;
+static pthread_once_t io_once = PTHREAD_ONCE_INIT;
+
+static void io_thread_free(void *p)
+{
+    io_thread *t = p;
+    if (!t)
+        return;
+    mm_buf_free(&t->out);
+    free(t);
+    mm_result_keep_blocks(0);
+}
+
+static void io_key_make(void) { (void)pthread_key_create(&io_key, io_thread_free); }
+
+static io_thread *io_thread_get(void)
+{
+    if (io_tl)
+        return io_tl;
+    pthread_once(&io_once, io_key_make);
+    io_thread *t = calloc(1, sizeof *t);
+    if (!t)
+        return NULL;
+    if (pthread_setspecific(io_key, t) != 0) {
+        free(t);
+        return NULL;
+    }
+    mm_buf_init(&t->out, MM_ANSWER_MAX);
+    mm_result_keep_blocks(1);
+    io_tl = t;
+    return t;
 }
 
 static void *worker_main(void *arg)
@@ -1424,6 +1534,21 @@ static enum MHD_Result h_solve(ctx *x)
         free(sv);
         return send_entry(r, x->method, x->full_url, e, "hit");
     }
+    atomic_int *weight = s->light_us > 0 ? light_weight(s, ex->id) : NULL;
+    io_thread *it;
+    if (mm_light_now(weight, s->light_us) && (it = io_thread_get()) != NULL) {
+        /* light: made here and now, unless another request is making it */
+        int rc = mm_cache_get(s->cache, sv->key.p, sv->key.len, NULL, &e);
+        if (rc == MM_CACHE_MISS) {
+            make_answer(s, sv, e, r->want_gz, &it->out, weight);
+            atomic_fetch_add_explicit(&s->m.light_solves, 1, memory_order_relaxed);
+        }
+        if (rc == MM_CACHE_MISS || rc == MM_CACHE_HIT) {
+            mm_solve_free(sv);
+            free(sv);
+            return send_entry(r, x->method, x->full_url, e, rc == MM_CACHE_HIT ? "hit" : "miss");
+        }
+    }
     if (queue_full(s)) {
         mm_solve_free(sv);
         free(sv);
@@ -1457,7 +1582,7 @@ static enum MHD_Result h_solve(ctx *x)
     if (j) {
         atomic_fetch_add_explicit(&r->site->refs, 1, memory_order_relaxed);
         atomic_fetch_add_explicit(&e->refs, 1, memory_order_relaxed);
-        *j = (job){.solve = sv, .entry = e, .site = r->site, .want_gz = r->want_gz};
+        *j = (job){.solve = sv, .entry = e, .site = r->site, .want_gz = r->want_gz, .weight = weight};
     }
     if (!j || enqueue(s, j) != 0) {          /* no room after all: the waiters get 503 */
         if (j) {
@@ -1795,6 +1920,9 @@ static enum MHD_Result h_metrics(ctx *x)
     }
     LINE("mechmat_solve_seconds_sum %.6f\nmechmat_solve_seconds_count %llu\n",
          (double)atomic_load(&s->m.solve_us_sum) * 1e-6, atomic_load(&s->m.solves));
+    LINE("# HELP mechmat_light_solves_total Solves made by an event thread, not a worker (light exercises).\n"
+         "# TYPE mechmat_light_solves_total counter\nmechmat_light_solves_total %llu\n",
+         atomic_load(&s->m.light_solves));
     LINE("# HELP mechmat_connections Open connections.\n# TYPE mechmat_connections gauge\n"
          "mechmat_connections %d\n", atomic_load(&s->connections));
     LINE("# HELP mechmat_requests_in_flight Requests begun and not yet answered (this one included).\n"
@@ -1985,6 +2113,7 @@ static void server_free(mm_server *s)
     pthread_mutex_destroy(&s->q_lock);
     pthread_cond_destroy(&s->q_cond);
     pthread_mutex_destroy(&s->site_lock);
+    pthread_mutex_destroy(&s->light_lock);
     pthread_mutex_destroy(&s->static_lock);
     free(s);
 }
@@ -2000,6 +2129,7 @@ mm_server *mm_server_start(const mm_server_opts *o, mm_api *api, mm_error *err)
     pthread_mutex_init(&s->q_lock, NULL);
     pthread_cond_init(&s->q_cond, NULL);
     pthread_mutex_init(&s->site_lock, NULL);
+    pthread_mutex_init(&s->light_lock, NULL);
     pthread_mutex_init(&s->static_lock, NULL);
     site *st = site_new(api);
     if (!st) {
@@ -2010,6 +2140,7 @@ mm_server *mm_server_start(const mm_server_opts *o, mm_api *api, mm_error *err)
     }
     atomic_init(&s->site, st);
     s->quiet = o->quiet;
+    s->light_us = o->light_us == 0 ? MM_LIGHT_US : o->light_us < 0 ? 0 : o->light_us;
     s->max_connections = o->max_connections > 0 ? o->max_connections : 10000;
     s->cache = mm_cache_new(o->cache_mb < 0 ? (size_t)64 << 20 : (size_t)o->cache_mb << 20);
     s->q_cap = o->queue > 0 ? o->queue : 1024;

@@ -3,14 +3,20 @@
  * Threads.  Event threads (--io-threads, 2 by default: each a
  * libmicrohttpd daemon with its own epoll thread, all on one port with
  * SO_REUSEPORT) hold every connection, read every request and send every
- * answer; they never solve.  What it answers itself, at once: documents built at start
+ * answer.  What they answer themselves, at once: documents built at start
  * (health, catalog, metadata, OpenAPI), static files (from memory after
- * their first read), answers found in the response cache, 304s, errors.
- * A solve that is not in the cache suspends its connection and goes to a
+ * their first read), answers found in the response cache, 304s, errors,
+ * and the solves of light exercises: those whose recent solves took under
+ * 300 us of CPU on average (num-complex, a default vib-sdof-forced), for
+ * which a worker's wake-up and the connection's suspension cost more than
+ * the solve (mm_light.h); a heavy solve sends the exercise back to the
+ * workers for a while.  Any other solve that is not in the cache suspends
+ * its connection and goes to a
  * fixed pool of --threads solve workers through a bounded queue (503 busy
  * when it is full); the worker runs it, writes the answer, puts it in the
  * cache and resumes every connection that waits for that key (identical
- * requests in flight are solved once: mm_cache.h).  So thousands of idle
+ * requests in flight are solved once: mm_cache.h, the light ones too).
+ * So thousands of idle
  * keep-alive connections cost memory, not threads, and a new client is
  * answered while every worker solves.
  *
@@ -35,6 +41,8 @@ typedef struct mm_server_opts {
     int queue;              /* solves waiting for a worker, at most; 0 = 1024 */
     long cache_mb;          /* response cache in MiB; <0 = default 64, 0 = keep nothing */
     int quiet;              /* 1: no access log */
+    int light_us;           /* light solves, made on the event threads (mm_light.h):
+                               CPU us; 0 = the default 300, < 0 = none */
 } mm_server_opts;
 
 typedef struct mm_server mm_server;

@@ -1,8 +1,10 @@
 /* test_cache.c — the response cache (mm_cache.h): bounded in bytes with
  * the least recently used evicted first, entries alive while referenced,
- * answers not to keep served to their waiters and then dropped, and
- * identical requests from many threads at once solved once (single
- * flight).  Run under ThreadSanitizer by make tsan. */
+ * answers not to keep served to their waiters and then dropped, identical
+ * requests from many threads at once solved once (single flight), the
+ * claim of an event thread that solves at once; and the weight that says
+ * which exercises the event threads solve themselves (mm_light.h).  Run
+ * under ThreadSanitizer by make tsan. */
 #include "mm_test.h"
 
 #include <pthread.h>
@@ -10,6 +12,7 @@
 #include <string.h>
 
 #include "mm_cache.h"
+#include "mm_light.h"
 
 static char *text(size_t n, char c)
 {
@@ -187,6 +190,99 @@ static void identical_requests_from_many_threads_should_be_solved_once(void **st
     mm_cache_free(f.c);
 }
 
+/* ---- a claim: solved at once by a caller that cannot wait ------------------- */
+
+static void woke(void *who) { (*(int *)who)++; }
+
+static void a_claim_should_never_register_its_caller(void **state)
+{
+    (void)state;
+    mm_cache *c = mm_cache_new(1 << 20);
+    mm_entry *e, *w, *none = (mm_entry *)1;
+    int waiter = 0;
+    /* not there: a pending entry with nobody to wake but those who come */
+    assert_int_equal(mm_cache_get(c, "k", 1, NULL, &e), MM_CACHE_MISS);
+    assert_int_equal(mm_cache_get(c, "k", 1, &waiter, &w), MM_CACHE_WAIT);
+    assert_ptr_equal(e, w);
+    /* pending: a second claim gets WAIT, no entry and no registration */
+    assert_int_equal(mm_cache_get(c, "k", 1, NULL, &none), MM_CACHE_WAIT);
+    assert_null(none);
+    mm_cache_fill(c, e, 200, text(10, 'x'), 10, NULL, 0, 0, 1, woke);
+    assert_int_equal(waiter, 1);                 /* woken once: the claims were not */
+    mm_cache_unref(e);
+    mm_cache_unref(w);
+    /* ready: a claim is a hit */
+    assert_int_equal(mm_cache_get(c, "k", 1, NULL, &e), MM_CACHE_HIT);
+    assert_int_equal(e->len, 10);
+    mm_cache_unref(e);
+    mm_cache_stats st;
+    mm_cache_get_stats(c, &st);
+    assert_int_equal(st.misses, 1);
+    assert_int_equal(st.shared, 1);              /* the waiter; the second claim did not wait */
+    assert_int_equal(st.hits, 1);
+    mm_cache_free(c);
+}
+
+/* ---- light exercises (mm_light.h) ---------------------------------------------- */
+
+static int solves_until_light(atomic_int *w, int light_us, long long us)
+{
+    int n = 0;
+    while (!mm_light_now(w, light_us) && n < 100000) {
+        mm_light_note(w, us);
+        n++;
+    }
+    return n;
+}
+
+static void an_exercise_should_be_light_while_its_solves_average_under_the_bound(void **state)
+{
+    (void)state;
+    atomic_int w;
+    atomic_init(&w, mm_light_start(300));
+    assert_false(mm_light_now(&w, 300));         /* new: to the workers first */
+    /* 16 * 300 (15/16)^n + 10 (1 - (15/16)^n) < 300 from n = 45 on: the
+     * integer moves each round down (w - (w - 10) / 16) a little less */
+    int n = solves_until_light(&w, 300, 10);
+    assert_true(n >= 44 && n <= 46);
+    /* settled on 100 us solves, a slow one now and then (a core taken
+     * away) keeps it light */
+    for (int i = 0; i < 200; i++)
+        mm_light_note(&w, 100);
+    mm_light_note(&w, 400);
+    assert_true(mm_light_now(&w, 300));
+    for (int i = 0; i < 40; i++)
+        mm_light_note(&w, i % 4 == 0 ? 600 : 150);   /* averages 262 */
+    assert_true(mm_light_now(&w, 300));
+    /* one solve of 250 ms: back to the workers, for about 60 light ones */
+    mm_light_note(&w, 250000);
+    assert_false(mm_light_now(&w, 300));
+    n = solves_until_light(&w, 300, 10);
+    assert_true(n >= 55 && n <= 65);
+    /* settled on 10 us solves: one of 16 light_us is enough to send it
+     * back; one of 3 is not */
+    for (int i = 0; i < 200; i++)
+        mm_light_note(&w, 10);
+    assert_true(atomic_load(&w) < 10 + 16);      /* whole microseconds: moves under 16 are lost */
+    mm_light_note(&w, 3 * 300);
+    assert_true(mm_light_now(&w, 300));
+    for (int i = 0; i < 200; i++)
+        mm_light_note(&w, 10);
+    mm_light_note(&w, 16 * 300 + 16 * 25);
+    assert_false(mm_light_now(&w, 300));
+    /* heavy always: never light */
+    for (int i = 0; i < 1000; i++)
+        mm_light_note(&w, 2000);
+    assert_false(mm_light_now(&w, 300));
+    /* light_us 0: nothing is light; a huge bound does not overflow */
+    atomic_init(&w, 0);
+    assert_false(mm_light_now(&w, 0));
+    assert_true(mm_light_start(1000000) == 16000000);
+    assert_true(mm_light_start(INT_MAX) > 0);
+    mm_light_note(&w, (long long)1 << 40);
+    assert_true(atomic_load(&w) > 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -195,6 +291,8 @@ int main(void)
         cmocka_unit_test(an_evicted_entry_should_live_while_referenced),
         cmocka_unit_test(an_answer_not_to_keep_should_reach_its_waiters_only),
         cmocka_unit_test(identical_requests_from_many_threads_should_be_solved_once),
+        cmocka_unit_test(a_claim_should_never_register_its_caller),
+        cmocka_unit_test(an_exercise_should_be_light_while_its_solves_average_under_the_bound),
     };
     return cmocka_run_group_tests_name("cache", tests, NULL, NULL);
 }

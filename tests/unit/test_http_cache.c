@@ -1,6 +1,7 @@
 /* test_http_cache.c — hosting a class, over HTTP against the real server:
  * caching by design (ETag, 304 without solving, identical requests solved
  * once, HEAD without a second solve, Server-Timing), gzip by Accept-Encoding,
+ * light solves made by the event threads with the answers a worker makes,
  * versioned static files, /api/metrics in the Prometheus text format, the
  * access log that a %0a cannot forge, a 413 that a client sending 10 MB
  * reads instead of a reset, 2,000 idle keep-alive connections that do not
@@ -420,6 +421,94 @@ static void metrics_should_be_prometheus_text(void **state)
     assert_true(metric(&server, "mechmat_solve_seconds_bucket{le=\"+Inf\"}") == solves(&server));
 }
 
+/* ---- light solves, made by the event thread at once (mm_light.h) ------------------ */
+
+/* num-complex at a = a_re + i as the server would answer it, solved here */
+static char *complex_here(const char *a_re)
+{
+    mm_input in[1] = {{"a_re", a_re, 4, strlen(a_re)}};
+    mm_buf out;
+    mm_buf_init(&out, MM_ANSWER_MAX);
+    assert_int_equal(mm_api_solve(mm_exercise_find("num-complex"), in, 1, &out), 200);
+    char *t = strip_elapsed(mm_buf_take(&out, NULL));
+    mm_buf_free(&out);
+    return t;
+}
+
+/* distinct num-complex requests (a_re = base + k/1000) until one is a light
+ * solve; returns how many it took, at most limit */
+static int until_light(const mm_fixture *f, int base, int *k, int limit)
+{
+    double l0 = metric(f, "mechmat_light_solves_total");
+    int n = 0;
+    while (n < limit && metric(f, "mechmat_light_solves_total") == l0) {
+        char path[128];
+        snprintf(path, sizeof path, "/api/exercises/num-complex/solve?a_re=%d.%03d", base, (*k)++);
+        mm_reply r;
+        request(f, NULL, path, NULL, NULL, &r);
+        assert_int_equal(r.status, 200);
+        mm_reply_free(&r);
+        n++;
+    }
+    return n;
+}
+
+static void a_light_exercise_should_be_solved_at_once_with_the_same_answer(void **state)
+{
+    (void)state;
+    /* light under 100 ms: num-complex (7 us, under ThreadSanitizer some
+     * hundreds) is light here in every build, once the workers have
+     * weighed its first ~45 solves */
+    mm_fixture f;
+    const char *extra[] = {"--light-us", "100000", NULL};
+    assert_int_equal(mm_fixture_start(&f, extra), 0);
+    int k = 0;
+    int n = until_light(&f, 3, &k, 200);
+    assert_true(n >= 40 && n < 60);
+    /* now each distinct request is one light solve, with the answer a
+     * worker gives, plain and compressed */
+    for (int gz = 0; gz < 2; gz++) {
+        double l0 = metric(&f, "mechmat_light_solves_total"), s0 = solves(&f);
+        char a_re[16], path[128];
+        snprintf(a_re, sizeof a_re, "4.%03d", gz);
+        snprintf(path, sizeof path, "/api/exercises/num-complex/solve?a_re=%s", a_re);
+        const char *hdrs[] = {"Accept-Encoding: gzip", NULL};
+        mm_reply r;
+        request(&f, NULL, path, gz ? hdrs : NULL, NULL, &r);
+        assert_int_equal(r.status, 200);
+        char t[100];
+        assert_non_null(strstr(header_of(&r, "Server-Timing", t, sizeof t), "cache;desc=\"miss\""));
+        char *body = r.body;
+        if (gz) {
+            assert_string_equal(header_of(&r, "Content-Encoding", t, sizeof t), "gzip");
+            size_t n_out;
+            body = gunzip(r.body, r.len, &n_out);
+        }
+        char *here = complex_here(a_re);
+        assert_string_equal(strip_elapsed(body), here);
+        free(here);
+        if (gz)
+            free(body);
+        mm_reply_free(&r);
+        assert_true(metric(&f, "mechmat_light_solves_total") == l0 + 1);
+        assert_true(solves(&f) == s0 + 1);
+    }
+    assert_int_equal(mm_fixture_stop(&f), 0);
+}
+
+static void light_us_0_should_send_every_solve_to_the_workers(void **state)
+{
+    (void)state;
+    mm_fixture f;
+    const char *extra[] = {"--light-us", "0", NULL};
+    assert_int_equal(mm_fixture_start(&f, extra), 0);
+    int k = 0;
+    assert_int_equal(until_light(&f, 5, &k, 100), 100);
+    assert_true(metric(&f, "mechmat_light_solves_total") == 0);
+    assert_true(solves(&f) == 100);
+    assert_int_equal(mm_fixture_stop(&f), 0);
+}
+
 /* ---- bodies over the limit ---------------------------------------------------------- */
 
 static int connect_to(int port)
@@ -831,6 +920,8 @@ int main(void)
         cmocka_unit_test(documents_and_static_files_should_have_etags_and_304s),
         cmocka_unit_test(versioned_static_files_should_be_cached_for_a_year),
         cmocka_unit_test(metrics_should_be_prometheus_text),
+        cmocka_unit_test(a_light_exercise_should_be_solved_at_once_with_the_same_answer),
+        cmocka_unit_test(light_us_0_should_send_every_solve_to_the_workers),
         cmocka_unit_test(a_body_over_the_limit_should_get_a_readable_413_not_a_reset),
         cmocka_unit_test(two_thousand_idle_connections_should_not_keep_a_new_client_waiting),
         cmocka_unit_test(a_newline_in_a_url_should_not_forge_a_log_line),
