@@ -217,7 +217,7 @@ double mm_dyn_plan_peak(const mm_dyn_plan *p, int j, double *t_at, double *err)
  * the largest and the smallest each refined by golden sections
  * (mm_opt_scan_golden_max). */
 typedef struct inertia_ctx {
-    const mm_slider_crank *s;
+    const mm_sc_model *s;
     double sign;
 } inertia_ctx;
 
@@ -228,7 +228,7 @@ static int signed_inertia(double phi, double *f, void *ctx)
     return 0;
 }
 
-void mm_dyn_sc_inertia_range(const mm_slider_crank *s, double *Jmin, double *Jmax)
+void mm_dyn_sc_inertia_range(const mm_sc_model *s, double *Jmin, double *Jmax)
 {
     enum { NS = 360 };
     for (int k = 0; k < 2; k++) {
@@ -290,7 +290,7 @@ double mm_dyn_dpend_distance(const double *a, const double *b, double wf)
 }
 
 
-double mm_dyn_sc_energy_bound(const mm_slider_crank *s, const double *q, const double *qd, const double *qr,
+double mm_dyn_sc_energy_bound(const mm_sc_model *s, const double *q, const double *qd, const double *qr,
                               const double *qdr, double tol_ref, double *bJ)
 {
     /* |a^2 - b^2| / 2 <= max(|a|, |b|) |a - b|: exact, at any distance */
@@ -374,7 +374,7 @@ int mm_dyn_dpend_animate(const mm_dpend *s, double t_end, const double *y0, cons
 
 /* ---- dyn-slider-crank: the state and the animation ------------------------------ */
 
-void mm_dyn_sc_state(const mm_slider_crank *s, int partition, const double *y, double *q, double *qd)
+void mm_dyn_sc_state(const mm_sc_model *s, int partition, const double *y, double *q, double *qd)
 {
     if (partition) {
         mm_sc_assemble(s, y[0], y[1], q, qd);
@@ -384,7 +384,7 @@ void mm_dyn_sc_state(const mm_slider_crank *s, int partition, const double *y, d
     }
 }
 
-int mm_dyn_sc_animate(const mm_slider_crank *s, int partition, int ny, double t_end, double wmax, double rtol,
+int mm_dyn_sc_animate(const mm_sc_model *s, int partition, int ny, double t_end, double wmax, double rtol,
                       double h_max, const double *y0, mm_sc_system *sys, mm_result *res, mm_error *err)
 {
     /* 24 frames a turn, over the first 4 turns at most: the turns that follow
@@ -669,7 +669,7 @@ int mm_dyn_sc_reference_runs(mm_sc_system *sys, double w0, double t_end, int n, 
     return MM_OK;
 }
 
-int mm_dyn_sc_compare(const mm_slider_crank *s, int partition, int ny, int n, const double *y, const double *yref,
+int mm_dyn_sc_compare(const mm_sc_model *s, int partition, int ny, int n, const double *y, const double *yref,
                       const double *yalt, double tol_ref, const double *fa, const double *fb, const double *N,
                       double *absn, mm_dyn_sc_cmp *c, mm_error *err)
 {

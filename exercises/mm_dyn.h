@@ -96,7 +96,7 @@ double mm_dyn_plan_peak(const mm_dyn_plan *p, int j, double *t_at, double *err);
 
 /* The extremes *Jmin, *Jmax of the slider-crank's effective inertia J(phi)
  * (slider_crank.md, eq. 5) over a turn.  Cannot fail. */
-void mm_dyn_sc_inertia_range(const mm_slider_crank *s, double *Jmin, double *Jmax);
+void mm_dyn_sc_inertia_range(const mm_sc_model *s, double *Jmin, double *Jmax);
 
 /* An estimate of the error of v[i] as the extreme of the samples v[0..n-1]:
  * how far the parabola through v[i] and its neighbours moves it (0 at an
@@ -110,7 +110,7 @@ double mm_dyn_extreme_error(const double *v, int n, int i);
  * distance, plus what an error tol_ref (absolute and relative) of the
  * reference's crank angle and speed can make (to first order).  Cannot
  * fail. */
-double mm_dyn_sc_energy_bound(const mm_slider_crank *s, const double *q, const double *qd, const double *qr,
+double mm_dyn_sc_energy_bound(const mm_sc_model *s, const double *q, const double *qd, const double *qr,
                               const double *qdr, double tol_ref, double *bJ);
 
 /* ---- dyn-pendulum: its exact motion is mm_pendulum's (solvers/) -------------- */
@@ -203,7 +203,7 @@ int mm_dyn_dpend_animate(const mm_dpend *s, double t_end, const double *y0, cons
 /* dyn-slider-crank's state at one grid point y as (q, qd), whatever the
  * method: the five coordinates themselves (Baumgarte), or assembled from
  * the crank's angle and speed (partitioning).  Cannot fail. */
-void mm_dyn_sc_state(const mm_slider_crank *s, int partition, const double *y, double *q, double *qd);
+void mm_dyn_sc_state(const mm_sc_model *s, int partition, const double *y, double *q, double *qd);
 
 /* dyn-slider-crank's second and third runs of the reduced equation from
  * (0, w0) on the n times x, for the errors of what the run (options opt,
@@ -238,14 +238,14 @@ typedef struct mm_dyn_sc_cmp {
 
 /* Fills c, and absn[i] = |N[i]|.  Returns MM_OK, or MM_ESINGULAR with err
  * filled when the constraints became dependent (the rod stood vertical). */
-int mm_dyn_sc_compare(const mm_slider_crank *s, int partition, int ny, int n, const double *y, const double *yref,
+int mm_dyn_sc_compare(const mm_sc_model *s, int partition, int ny, int n, const double *y, const double *yref,
                       const double *yalt, double tol_ref, const double *fa, const double *fb, const double *N,
                       double *absn, mm_dyn_sc_cmp *c, mm_error *err);
 
 /* dyn-slider-crank's animation: the system sys integrated again from y0
  * (ny states, DOP853 at rtol, steps up to h_max) on 24 frames a turn at
  * the speed wmax, over the first 4 turns at most. */
-int mm_dyn_sc_animate(const mm_slider_crank *s, int partition, int ny, double t_end, double wmax, double rtol,
+int mm_dyn_sc_animate(const mm_sc_model *s, int partition, int ny, double t_end, double wmax, double rtol,
                       double h_max, const double *y0, mm_sc_system *sys, mm_result *res, mm_error *err);
 
 #endif

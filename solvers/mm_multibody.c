@@ -161,7 +161,7 @@ void mm_robot2_points(const mm_robot2 *s, const double *q, double *x, double *y)
 /* ==== the slider-crank ======================================================= */
 
 /* Phi_q, 4 x 5 row-major, over (phi1, x2, y2, phi2, x3) */
-static void sc_jacobian(const mm_slider_crank *s, const double *q, double *J)
+static void sc_jacobian(const mm_sc_model *s, const double *q, double *J)
 {
     double r = s->r, h = 0.5 * s->l, s1 = sin(q[0]), c1 = cos(q[0]), s2 = sin(q[3]), c2 = cos(q[3]);
     const double rows[MM_SC_NC][MM_SC_NQ] = {
@@ -175,7 +175,7 @@ static void sc_jacobian(const mm_slider_crank *s, const double *q, double *J)
             J[i * MM_SC_NQ + j] = rows[i][j];
 }
 
-void mm_sc_constraints(const mm_slider_crank *s, const double *q, const double *qd, double *Phi,
+void mm_sc_constraints(const mm_sc_model *s, const double *q, const double *qd, double *Phi,
                        double *Phid)
 {
     double h = 0.5 * s->l;
@@ -196,7 +196,7 @@ void mm_sc_constraints(const mm_slider_crank *s, const double *q, const double *
     }
 }
 
-void mm_sc_assemble(const mm_slider_crank *s, double phi1, double w, double *q, double *qd)
+void mm_sc_assemble(const mm_sc_model *s, double phi1, double w, double *q, double *qd)
 {
     double r = s->r, l = s->l, s1 = sin(phi1), c1 = cos(phi1);
     double sn2 = -r * s1 / l, c2 = sqrt((1 - sn2) * (1 + sn2));   /* the rod leans back to the axis */
@@ -249,7 +249,7 @@ static int gauss(int n, double *A, double *b)
     return 0;
 }
 
-int mm_sc_accel(const mm_slider_crank *s, const double *q, const double *qd, double alpha,
+int mm_sc_accel(const mm_sc_model *s, const double *q, const double *qd, double alpha,
                 double beta, double *qdd, double *lambda)
 {
     const double Q[MM_SC_NQ] = {s->torque, 0, 0, 0, 0};
@@ -315,14 +315,14 @@ int mm_sc_accel(const mm_slider_crank *s, const double *q, const double *qd, dou
     return MM_OK;
 }
 
-double mm_sc_kinetic(const mm_slider_crank *s, const double *q, const double *qd)
+double mm_sc_kinetic(const mm_sc_model *s, const double *q, const double *qd)
 {
     (void)q;
     return 0.5 * (s->J_crank * qd[0] * qd[0] + s->m_rod * (qd[1] * qd[1] + qd[2] * qd[2]) +
                   s->J_rod * qd[3] * qd[3] + s->m_piston * qd[4] * qd[4]);
 }
 
-double mm_sc_inertia(const mm_slider_crank *s, double phi, double *dJ)
+double mm_sc_inertia(const mm_sc_model *s, double phi, double *dJ)
 {
     /* velocities per unit crank speed, with lam = r/l, C = cos phi2 = sqrt(1 - lam^2 sin^2 phi),
      * u = lam cos phi / C:  phi2' = -u,  x3' = -r sin phi (1 + u),
@@ -439,7 +439,7 @@ double mm_dpend_lh_residual(const mm_dpend *s, const double *y, double *scale)
 
 /* ---- chapter 4 (dyn-slider-crank): the joint forces against Newton's law ---------- */
 
-double mm_sc_momentum_residual(const mm_slider_crank *s, const double *qdd, const double *lam, double *scale)
+double mm_sc_momentum_residual(const mm_sc_model *s, const double *qdd, const double *lam, double *scale)
 {
     double fa = hypot(lam[0], lam[1]), fb = hypot(lam[2], lam[3]), N = -lam[3];
     double Fx = -lam[0], Fy = -lam[1] + N;
@@ -448,7 +448,7 @@ double mm_sc_momentum_residual(const mm_slider_crank *s, const double *qdd, cons
     return hypot(Fx - px, Fy - py);
 }
 
-double mm_sc_drift(const mm_slider_crank *s, const double *q)
+double mm_sc_drift(const mm_sc_model *s, const double *q)
 {
     double Phi[MM_SC_NC], d = 0;
     mm_sc_constraints(s, q, NULL, Phi, NULL);

@@ -113,26 +113,28 @@ void mm_robot2_points(const mm_robot2 *s, const double *q, double *x, double *y)
  * the main bearing holds the crank with (-lambda1, -lambda2) (the crank's
  * centre of mass does not move), and the guide holds the piston with
  * N = -lambda4 along y. */
-typedef struct mm_slider_crank {
+/* (mm_sc_model: the slider-crank with its masses and torque; mm_linkage.h
+ * has mm_slider_crank, its geometry alone) */
+typedef struct mm_sc_model {
     double r, l;            /* crank radius, rod length [m], r < l */
     double J_crank;         /* crank and flywheel about O [kg m^2] */
     double m_rod, J_rod;    /* rod mass [kg], about its centre [kg m^2] */
     double m_piston;        /* [kg] */
     double torque;          /* constant driving torque on the crank [N m] */
-} mm_slider_crank;
+} mm_sc_model;
 
 #define MM_SC_NQ 5          /* coordinates */
 #define MM_SC_NC 4          /* constraints */
 
 /* The constraint residuals Phi(q) [m] and the velocity residuals Phi_q q'
  * [m/s].  Cannot fail. */
-void mm_sc_constraints(const mm_slider_crank *s, const double *q, const double *qd, double *Phi,
+void mm_sc_constraints(const mm_sc_model *s, const double *q, const double *qd, double *Phi,
                        double *Phid);
 
 /* The consistent configuration at crank angle phi1 and crank speed w
  * (closed form: phi2 = -asin(r sin phi1 / l), x3 = r cos phi1 + l cos phi2):
  * q and qd (5 values each).  Cannot fail. */
-void mm_sc_assemble(const mm_slider_crank *s, double phi1, double w, double *q, double *qd);
+void mm_sc_assemble(const mm_sc_model *s, double phi1, double w, double *q, double *qd);
 
 /* Accelerations and joint forces at (q, qd): solves M q'' + Phi_q^T lambda = Q
  * with Phi_q q'' = gamma - 2 alpha Phi' - beta^2 Phi (Baumgarte's
@@ -141,16 +143,16 @@ void mm_sc_assemble(const mm_slider_crank *s, double phi1, double w, double *q, 
  * Phi_v (lengths only, so any mass ratio is accurate to round-off).  qdd (5),
  * lambda (4, may be NULL).  Returns MM_OK, or MM_ESINGULAR when the
  * constraints are dependent (the rod vertical: r >= l). */
-int mm_sc_accel(const mm_slider_crank *s, const double *q, const double *qd, double alpha,
+int mm_sc_accel(const mm_sc_model *s, const double *q, const double *qd, double alpha,
                 double beta, double *qdd, double *lambda);
 
 /* Kinetic energy [J] at (q, qd).  Cannot fail. */
-double mm_sc_kinetic(const mm_slider_crank *s, const double *q, const double *qd);
+double mm_sc_kinetic(const mm_sc_model *s, const double *q, const double *qd);
 
 /* The effective inertia of the whole mechanism referred to the crank,
  * J(phi) = 2 T / w^2 [kg m^2], and dJ/dphi (may be NULL), in closed form.
  * Cannot fail. */
-double mm_sc_inertia(const mm_slider_crank *s, double phi, double *dJ);
+double mm_sc_inertia(const mm_sc_model *s, double phi, double *dJ);
 
 /* Right-hand sides for mm_ode, params = mm_sc_system:
  *   mm_sc_rhs_baumgarte: y = (q, qd), 10 values, the Baumgarte-stabilised
@@ -161,7 +163,7 @@ double mm_sc_inertia(const mm_slider_crank *s, double phi, double *dJ);
  *     phi1'' from mm_sc_accel.
  * Return 0, or MM_ESINGULAR (see mm_sc_accel). */
 typedef struct mm_sc_system {
-    mm_slider_crank sc;
+    mm_sc_model sc;
     double alpha, beta;     /* Baumgarte's constants [1/s] */
 } mm_sc_system;
 
@@ -201,10 +203,10 @@ double mm_dpend_lh_residual(const mm_dpend *s, const double *y, double *scale);
  * centres of mass (m_rod (x2'', y2'') + m_piston (x3'', 0)).  Returns the
  * size of the difference [N]; *scale receives the sum of the forces and
  * the inertia forces.  Cannot fail. */
-double mm_sc_momentum_residual(const mm_slider_crank *s, const double *qdd, const double *lam, double *scale);
+double mm_sc_momentum_residual(const mm_sc_model *s, const double *qdd, const double *lam, double *scale);
 
 /* The largest constraint residual |Phi_k(q)| [m] (mm_sc_constraints).
  * Cannot fail. */
-double mm_sc_drift(const mm_slider_crank *s, const double *q);
+double mm_sc_drift(const mm_sc_model *s, const double *q);
 
 #endif

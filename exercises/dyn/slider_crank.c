@@ -87,15 +87,15 @@ static const mm_output outputs[] = {
 
 #define MAX_REV 300
 
-static mm_slider_crank mech_of(const mm_value *in)
+static mm_sc_model mech_of(const mm_value *in)
 {
-    return (mm_slider_crank){.r = in[P_R].x, .l = in[P_L].x, .J_crank = in[P_JC].x, .m_rod = in[P_MR].x,
+    return (mm_sc_model){.r = in[P_R].x, .l = in[P_L].x, .J_crank = in[P_JC].x, .m_rod = in[P_MR].x,
                              .J_rod = in[P_JR].x, .m_piston = in[P_MP].x, .torque = in[P_TORQUE].x};
 }
 
 /* A bound of the crank speed over the run from the energy (eq. 6): with
  * J >= Jmin, J w^2 / 2 <= J0 w0^2 / 2 + |torque| w_max t. */
-static double speed_bound(const mm_slider_crank *s, double w0, double t_end, double Jmin)
+static double speed_bound(const mm_sc_model *s, double w0, double t_end, double Jmin)
 {
     double J0 = mm_sc_inertia(s, 0, NULL), a = fabs(s->torque) * t_end / Jmin;
     return a + sqrt(a * a + J0 * w0 * w0 / Jmin);
@@ -103,7 +103,7 @@ static double speed_bound(const mm_slider_crank *s, double w0, double t_end, dou
 
 static int check(const mm_value *in, mm_error *err)
 {
-    mm_slider_crank s = mech_of(in);
+    mm_sc_model s = mech_of(in);
     if (!(s.l > 1.05 * s.r))
         return mm_error_set(err, MM_ERANGE, "l",
                             "the rod (l = %g m) must be longer than the crank (r = %g m), by 5 %% at least, or the "
@@ -128,7 +128,7 @@ static int check(const mm_value *in, mm_error *err)
  * w' = -J'/(2J) w^2 carries it to infinity: "step size below round-off"
  * (422) at rtol 1.3e-4 on a draw that rtol 1e-12 integrates in 20000
  * steps.  0 (no cap) when nothing moves. */
-static double step_cap(const mm_slider_crank *s, double w0, double t_end, double Jmin)
+static double step_cap(const mm_sc_model *s, double w0, double t_end, double Jmin)
 {
     double W = speed_bound(s, w0, t_end, Jmin);
     return W > 0 ? 2 * M_PI / (16 * W) : 0;
@@ -138,7 +138,7 @@ static double step_cap(const mm_slider_crank *s, double w0, double t_end, double
 
 static int solve(const mm_value *in, mm_result *res, mm_error *err)
 {
-    mm_slider_crank s = mech_of(in);
+    mm_sc_model s = mech_of(in);
     double w0 = in[P_OMEGA0].x, t_end = in[P_TEND].x, alpha = in[P_ALPHA].x, RTOL = in[P_RTOL].x;
     int partition = (int)in[P_METHOD].x == 1, n = (int)in[P_POINTS].x;
     mm_sc_system sys = {.sc = s, .alpha = alpha, .beta = alpha};

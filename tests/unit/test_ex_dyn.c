@@ -428,7 +428,7 @@ static void dyn_plan_should_start_and_end_at_rest_and_drive_the_planned_accelera
 static void dyn_slider_crank_energy_bound_should_bound_the_energy_difference(void **state)
 {
     (void)state;
-    mm_slider_crank s = {.r = 0.1, .l = 0.4, .J_crank = 0.05, .m_rod = 1, .J_rod = 0.015, .m_piston = 1,
+    mm_sc_model s = {.r = 0.1, .l = 0.4, .J_crank = 0.05, .m_rod = 1, .J_rod = 0.015, .m_piston = 1,
                          .torque = 20};
     srand(7);
     for (int k = 0; k < 200; k++) {

@@ -126,7 +126,7 @@ static void robot_static_torque_should_match_the_moment_of_gravity(void **state)
 static void slider_crank_assembly_should_satisfy_the_constraints(void **state)
 {
     (void)state;
-    mm_slider_crank s = {.r = 0.1, .l = 0.35, .J_crank = 0.05, .m_rod = 1, .J_rod = 0.012, .m_piston = 0.8,
+    mm_sc_model s = {.r = 0.1, .l = 0.35, .J_crank = 0.05, .m_rod = 1, .J_rod = 0.012, .m_piston = 0.8,
                          .torque = 3};
     for (double phi = -7; phi < 7; phi += 0.37) {
         double q[5], qd[5], Phi[4], Phid[4];
@@ -164,7 +164,7 @@ static void slider_crank_reduced_speed_should_follow_the_energy(void **state)
 {
     (void)state;
     /* the reduced equation's acceleration at phi: J phi'' + J'(phi) w^2 / 2 = torque */
-    mm_slider_crank sc = {.r = 0.1, .l = 0.4, .J_crank = 0.05, .m_rod = 1, .J_rod = 0.015, .m_piston = 1,
+    mm_sc_model sc = {.r = 0.1, .l = 0.4, .J_crank = 0.05, .m_rod = 1, .J_rod = 0.015, .m_piston = 1,
                           .torque = 5};
     mm_sc_system sys = {.sc = sc};
     for (double phi = 0; phi < 6.3; phi += 0.5) {

@@ -9,7 +9,7 @@
 
 #include "mm_multibody.h"
 
-static const mm_slider_crank sc = {.r = 0.1, .l = 0.35, .J_crank = 0.5, .m_rod = 2, .J_rod = 0.02,
+static const mm_sc_model sc = {.r = 0.1, .l = 0.35, .J_crank = 0.5, .m_rod = 2, .J_rod = 0.02,
                                    .m_piston = 4, .torque = 3};
 
 static void momentum_residual_should_match_a_hand_value(void **state)
