@@ -83,9 +83,13 @@ same "repeated vib-sdof-forced, gzip as browsers ($zsize B)" "$Z" "$ZC" "$Q" "$Q
 echo "   rounds req/s: bare ${b[*]} | health ${h[*]} | bare $size B ${p[*]} | plain ${r[*]} | bare $zsize B ${q[*]} | gzip ${z[*]}"
 echo "   load average: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
 
-# distinct requests: every one a miss (omega moves by 1e-9 each time), so
-# each is resolved, solved, written and put in the cache (and evicts)
-cat > "$work/distinct.lua" <<'LUA'
+# distinct requests: every one a miss (a parameter moves by 1e-9 each
+# time), so each is resolved, solved, written and put in the cache (and
+# evicts).  A light exercise's solves are made by the event thread (after
+# the workers have weighed its first ~45); the same through a worker is
+# measured on a server started with --light-us 0, in the same run.
+distinct_lua() {  # $1 file, $2 path with %.9f for the moving value, $3 its centre
+  cat > "$1" <<LUA
 local n = 0
 function setup(thread) thread:set("base", math.random(1, 1000000) * 1000) end
 function request()
@@ -94,22 +98,33 @@ function request()
   -- them, or "gzip, as browsers" would ask for the plain answer
   local h = { Host = "127.0.0.1" }
   for k, v in pairs(wrk.headers) do h[k] = v end
-  return wrk.format("GET", string.format("/api/exercises/vib-sdof-forced/solve?omega=%.9f", 8 + (base + n) * 1e-9), h)
+  return wrk.format("GET", string.format("$2", $3 + (base + n) * 1e-9), h)
 end
 LUA
-distinct() {  # $1 label, more wrk args
-  local c0 c1 res reqs
-  c0=$(cpu "$srv_pid")
-  res=$(wrk -t2 -c16 -d"${DUR}s" -s "$work/distinct.lua" "${@:2}" "http://127.0.0.1:$srv_port" 2>&1)
-  c1=$(cpu "$srv_pid")
-  reqs=$(echo "$res" | awk '/requests in/ {print $1}')
-  printf "%-58s %10s req/s  %7.1f us server CPU/request\n" "$1" "$(echo "$res" | awk '/Requests\/sec/ {print $2}')" \
-    "$(awk -v c=$((c1 - c0)) -v hz="$hz" -v n="$reqs" 'BEGIN{print c / hz * 1e6 / n}')"
 }
-distinct "distinct vib-sdof-forced requests (plain)"
-distinct "distinct vib-sdof-forced requests (gzip, as browsers)" -H 'Accept-Encoding: gzip'
-echo "   (goal: <= 60 us server CPU per distinct request; bench_server above splits one request into its parts)"
-kill $bare_pid $srv_pid 2>/dev/null; wait $bare_pid $srv_pid 2>/dev/null
+distinct_lua "$work/distinct.lua" "/api/exercises/vib-sdof-forced/solve?omega=%.9f" 8
+distinct_lua "$work/complex.lua" "/api/exercises/num-complex/solve?a_re=%.9f" 2
+distinct() {  # $1 label, $2 pid, $3 port, $4 lua, more wrk args -> prints; sets dus (us/request)
+  local c0 c1 res reqs
+  c0=$(cpu "$2")
+  res=$(wrk -t2 -c16 -d"${DUR}s" -s "$4" "${@:5}" "http://127.0.0.1:$3" 2>&1)
+  c1=$(cpu "$2")
+  reqs=$(echo "$res" | awk '/requests in/ {print $1}')
+  dus=$(awk -v c=$((c1 - c0)) -v hz="$hz" -v n="$reqs" 'BEGIN{printf "%.1f", c / hz * 1e6 / n}')
+  printf "%-58s %10s req/s  %7.1f us server CPU/request\n" "$1" "$(echo "$res" | awk '/Requests\/sec/ {print $2}')" "$dus"
+}
+start wk "$BUILD/mechmat-server" --port 0 --quiet --threads 2 --light-us 0
+trap 'kill $bare_pid $srv_pid ${bp_pid:-} ${bz_pid:-} ${wk_pid:-} 2>/dev/null; rm -rf "$work"' EXIT
+distinct "distinct vib-sdof-forced requests (plain)" "$srv_pid" "$srv_port" "$work/distinct.lua"; s_light=$dus
+distinct "   the same, every solve through a worker (--light-us 0)" "$wk_pid" "$wk_port" "$work/distinct.lua"; s_work=$dus
+distinct "distinct vib-sdof-forced requests (gzip, as browsers)" "$srv_pid" "$srv_port" "$work/distinct.lua" -H 'Accept-Encoding: gzip'
+distinct "distinct num-complex requests (plain)" "$srv_pid" "$srv_port" "$work/complex.lua"; c_light=$dus
+distinct "   the same, every solve through a worker (--light-us 0)" "$wk_pid" "$wk_port" "$work/complex.lua"; c_work=$dus
+echo "   light solves on the event threads: $(curl -s "http://127.0.0.1:$srv_port/api/metrics" | awk '/^mechmat_light_solves_total/ {print $2}');" \
+  "server CPU light / through a worker: vib-sdof-forced $(awk -v a="$s_light" -v b="$s_work" 'BEGIN{printf "%.2f", a / b}')," \
+  "num-complex $(awk -v a="$c_light" -v b="$c_work" 'BEGIN{printf "%.2f", a / b}')"
+echo "   (goal: <= 60 us server CPU per distinct vib-sdof-forced request; bench_server above splits one request into its parts)"
+kill $bare_pid $srv_pid $wk_pid 2>/dev/null; wait $bare_pid $srv_pid $wk_pid 2>/dev/null
 trap - EXIT
 rm -rf "$work"
 
