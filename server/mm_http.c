@@ -272,67 +272,74 @@ static site *site_new(mm_api *api)
 
 /* ---- small pieces: compression, validators, escaping ----------------------------- */
 
-/* A thread's compressor for answers (libdeflate at GZ_ANSWER) and its
- * output buffer, kept from one answer to the next: making one allocates its
- * hash tables (a zlib stream took about 270 KiB, four blocks over malloc's
- * mmap threshold mapped and unmapped each time: 300 us of a 2 KB answer's
- * compression went there). */
-typedef struct gz_thread {
+/* What a thread keeps from one answer to the next, made at its first use:
+ * its compressor for answers (libdeflate at GZ_ANSWER) and that one's
+ * output buffer: making one allocates its hash tables (a zlib stream took
+ * about 270 KiB, four blocks over malloc's mmap threshold mapped and
+ * unmapped each time: 300 us of a 2 KB answer's compression went there);
+ * and for an event thread that makes light solves, the answer buffer and
+ * the result block (mm_result_keep_blocks) that a worker keeps for the
+ * same reason.  Freed when the thread ends (the key's destructor: the
+ * event threads are libmicrohttpd's) or by kit_end. */
+typedef struct kit {
     struct libdeflate_compressor *c;
     char *buf;
     size_t cap;
-} gz_thread;
+    mm_buf out;                    /* an event thread's, for light solves */
+    int solving;                   /* out is set up, result blocks kept */
+} kit;
 
-static _Thread_local gz_thread *gz_tl;
-static pthread_key_t gz_key;
-static pthread_once_t gz_once = PTHREAD_ONCE_INIT;
+static _Thread_local kit *kit_tl;
+static pthread_key_t kit_key;
+static pthread_once_t kit_once = PTHREAD_ONCE_INIT;
 
-static void gz_thread_free(void *p)
+static void kit_free(void *p)
 {
-    gz_thread *g = p;
-    if (!g)
+    kit *k = p;
+    if (!k)
         return;
-    libdeflate_free_compressor(g->c);
-    free(g->buf);
-    free(g);
+    libdeflate_free_compressor(k->c);
+    free(k->buf);
+    if (k->solving) {
+        mm_buf_free(&k->out);
+        mm_result_keep_blocks(0);
+    }
+    free(k);
 }
 
-static void gz_key_make(void) { (void)pthread_key_create(&gz_key, gz_thread_free); }
+static void kit_key_make(void) { (void)pthread_key_create(&kit_key, kit_free); }
 
-/* This thread's compressor, made at its first use; freed when the thread
- * ends (the key's destructor, for libmicrohttpd's threads) or by
- * gzip_thread_end. */
-static gz_thread *gz_thread_get(void)
+static kit *kit_get(void)
 {
-    if (gz_tl)
-        return gz_tl;
-    pthread_once(&gz_once, gz_key_make);
-    gz_thread *g = calloc(1, sizeof *g);
-    if (!g)
+    if (kit_tl)
+        return kit_tl;
+    pthread_once(&kit_once, kit_key_make);
+    kit *k = calloc(1, sizeof *k);
+    if (!k)
         return NULL;
-    g->c = libdeflate_alloc_compressor(GZ_ANSWER);
-    if (!g->c || pthread_setspecific(gz_key, g) != 0) {
-        gz_thread_free(g);
+    k->c = libdeflate_alloc_compressor(GZ_ANSWER);
+    if (!k->c || pthread_setspecific(kit_key, k) != 0) {
+        kit_free(k);
         return NULL;
     }
-    gz_tl = g;
-    return g;
+    kit_tl = k;
+    return k;
 }
 
-static void gzip_thread_end(void)
+static void kit_end(void)
 {
-    if (!gz_tl)
+    if (!kit_tl)
         return;
-    (void)pthread_setspecific(gz_key, NULL);
-    gz_thread_free(gz_tl);
-    gz_tl = NULL;
+    (void)pthread_setspecific(kit_key, NULL);
+    kit_free(kit_tl);
+    kit_tl = NULL;
 }
 
 /* An answer compressed by this thread's libdeflate compressor, into a block
  * of its own size; -1 when it does not shrink or without memory. */
 static int gzip_answer(const char *in, size_t n, char **out, size_t *out_len)
 {
-    gz_thread *g = gz_thread_get();
+    kit *g = kit_get();
     if (!g)
         return -1;
     size_t cap = libdeflate_gzip_compress_bound(g->c, n);
@@ -1167,45 +1174,16 @@ static void run_job(mm_server *s, job *j, mm_buf *out)
     free(j);
 }
 
-/* An event thread's answer buffer for light solves, and the result block
- * it keeps (mm_result_keep_blocks), freed when the thread ends (the key's
- * destructor: libmicrohttpd's threads are not ours). */
-typedef struct io_thread {
-    mm_buf out;
-} io_thread;
-
-static _Thread_local io_thread *io_tl;
-static pthread_key_t io_key;
-static pthread_once_t io_once = PTHREAD_ONCE_INIT;
-
-static void io_thread_free(void *p)
+/* This event thread's kit, ready for light solves; NULL without memory */
+static kit *kit_for_solving(void)
 {
-    io_thread *t = p;
-    if (!t)
-        return;
-    mm_buf_free(&t->out);
-    free(t);
-    mm_result_keep_blocks(0);
-}
-
-static void io_key_make(void) { (void)pthread_key_create(&io_key, io_thread_free); }
-
-static io_thread *io_thread_get(void)
-{
-    if (io_tl)
-        return io_tl;
-    pthread_once(&io_once, io_key_make);
-    io_thread *t = calloc(1, sizeof *t);
-    if (!t)
-        return NULL;
-    if (pthread_setspecific(io_key, t) != 0) {
-        free(t);
-        return NULL;
+    kit *k = kit_get();
+    if (k && !k->solving) {
+        mm_buf_init(&k->out, MM_ANSWER_MAX);
+        mm_result_keep_blocks(1);
+        k->solving = 1;
     }
-    mm_buf_init(&t->out, MM_ANSWER_MAX);
-    mm_result_keep_blocks(1);
-    io_tl = t;
-    return t;
+    return k;
 }
 
 static void *worker_main(void *arg)
@@ -1230,7 +1208,7 @@ static void *worker_main(void *arg)
     pthread_mutex_unlock(&s->q_lock);
     mm_result_keep_blocks(0);
     mm_buf_free(&out);
-    gzip_thread_end();
+    kit_end();
     return NULL;
 }
 
@@ -1535,8 +1513,8 @@ static enum MHD_Result h_solve(ctx *x)
         return send_entry(r, x->method, x->full_url, e, "hit");
     }
     atomic_int *weight = s->light_us > 0 ? light_weight(s, ex->id) : NULL;
-    io_thread *it;
-    if (mm_light_now(weight, s->light_us) && (it = io_thread_get()) != NULL) {
+    kit *it;
+    if (mm_light_now(weight, s->light_us) && (it = kit_for_solving()) != NULL) {
         /* light: made here and now, unless another request is making it */
         int rc = mm_cache_get(s->cache, sv->key.p, sv->key.len, NULL, &e);
         if (rc == MM_CACHE_MISS) {
