@@ -1084,7 +1084,7 @@ static char *dup_exact(const char *p, size_t n)
 
 /* The weight of the exercise id (mm_light.h), made at its first solve;
  * NULL when the table is full or the id too long.  Read without the lock:
- * a slot is written once, under the lock, and then published by its state. */
+ * a slot is written once, under the lock, and then published by its flag. */
 static atomic_int *light_weight(mm_server *s, const char *id)
 {
     size_t n = strlen(id);
