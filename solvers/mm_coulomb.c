@@ -159,6 +159,12 @@ int mm_coulomb_integrate(const mm_coulomb *s, double rtol, int cap, int np, cons
         opt.method = MM_ODE_DOP853;
         opt.rtol = rtol;
         opt.atol = rtol * R;
+        /* the arc starts on the event surface (v = 0) and ends on it half a
+         * period later: a step longer than that would carry g from 0 to 0
+         * and the zero would go unseen (mm_ode.h, "Events").  An arc far
+         * below the tolerance (a rest a hair outside the sticking band:
+         * x0 = 25 d came back at d (1 + 1.9e-9)) is one step otherwise. */
+        opt.h_max = 0.5 * M_PI / s->w;
         int gn = g;
         while (gn < np && tg[gn] <= prob.t_end)
             gn++;

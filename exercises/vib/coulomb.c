@@ -19,6 +19,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 
 #include "mm_coulomb.h"
 #include "mm_exhelp.h"
@@ -103,19 +104,36 @@ static int check(const mm_value *in, mm_error *err)
  * at 1e-14), and 1900 such arcs put x_final 7.3e-9 m off where their
  * difference said 2.5e-10.
  * The arc times add up, and so do the arcs' energy residuals.  Each check
- * allows ten times that sum, plus round-off. */
+ * allows ten times that sum, plus round-off.
+ *
+ * The knife edge of eq. (6): a rest within the integrated position's error
+ * of the band's edge |x| = d may be decided either way, and the run that
+ * turns slides one more arc of amplitude |x| - d (below that error: x0 =
+ * 25 d came back at d (1 + 1.9e-9), 7.6e-12 m out, at rtol 1e-10), so the
+ * stop time jumps by half a period.  The counts may then differ by one,
+ * and the stop time and place are compared at the last rest both runs
+ * have; the answer says so. */
 static void checks(const model *s, const mm_coulomb_run *a, const double *te, const double *xe, int ne, double size,
                    mm_result *res)
 {
     double fric = s->mu * s->m * s->g, rt = mm_ex_roundoff(a->n * M_PI, 1);
-    double xf = a->n ? a->x[a->n - 1] : s->x0, tf = a->n ? a->t[a->n - 1] : 0;
-    mm_res_check_abs(res, "half cycles: counted by events vs the exact solution", a->n, ne, 0);
+    double tol_x = 10 * a->sum_dx + rt * size;
+    int m = a->n < ne ? a->n : ne;                 /* rests both runs have */
+    int knife = abs(a->n - ne) == 1 && m > 0 && fabs(fabs(xe[m - 1]) - s->d) <= tol_x;
+    if (knife)
+        mm_res_warn(res, "knife edge of eq. (6): the rest at t = %.6g s lies %.2g m from the edge of the sticking band "
+                         "|x| <= mu m g/k, within the integration's error (%.2g m): the exact solution %s there, the "
+                         "integrated run %s; the stop time jumps by half a period (%.4g s) across this edge",
+                    te[m - 1], fabs(fabs(xe[m - 1]) - s->d), tol_x, ne == m ? "stops" : "slides one more half cycle",
+                    a->n == m ? "stops" : "slides one more half cycle", M_PI / s->w);
+    int last = knife ? m : a->n, last_e = knife ? m : ne;
+    double xf = last ? a->x[last - 1] : s->x0, tf = last ? a->t[last - 1] : 0;
+    mm_res_check_abs(res, "half cycles: counted by events vs the exact solution", a->n, ne, knife);
     mm_res_check_abs(res, "stop time: located by events vs the exact solution, within 10 times the sum of the "
-                          "arcs' errors, each arc again at rtol 1e-14", tf, ne ? te[ne - 1] : 0,
+                          "arcs' errors, each arc again at rtol 1e-14", tf, last_e ? te[last_e - 1] : 0,
                      10 * a->sum_dt + rt * (tf + 1 / s->w));
     mm_res_check_abs(res, "x_final: located by events vs the exact solution, within 10 times the sum of the "
-                          "arcs' errors, each arc again at rtol 1e-14", xf, ne ? xe[ne - 1] : s->x0,
-                     10 * a->sum_dx + rt * size);
+                          "arcs' errors, each arc again at rtol 1e-14", xf, last_e ? xe[last_e - 1] : s->x0, tol_x);
     /* energy (7): what is gone is friction force times path length (the path
      * of one arc is |x_end - x_start|: the velocity keeps its sign on an arc) */
     if (a->n > 0) {

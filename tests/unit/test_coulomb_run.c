@@ -60,6 +60,28 @@ static void integrated_rests_should_be_the_exact_ones(void **state)
     assert_true(o.steps > 0 && o.evals > o.steps && o.event_evals > 0);
 }
 
+/* An arc far below the tolerance is still found: released 7.6e-12 m outside
+ * the band (where the rtol 1e-10 run of x0 = 25 d came back), the block
+ * slides one arc of that amplitude, to the other side of the centre, and
+ * stops half a period later (it used to be one step over the whole arc,
+ * the velocity zero unseen). */
+static void a_tiny_arc_should_end_at_its_velocity_zero(void **state)
+{
+    (void)state;
+    mm_coulomb s = mm_coulomb_make(20, 4905, 0.1, 9.81, 0.0040000000076379294, 0);
+    double tg[NP];
+    mm_coulomb_run o;
+    run(&s, 0, tg, &o);
+    assert_int_equal(o.n, 1);
+    /* the zero of a velocity of amplitude A w = 1.2e-10 m/s, slope A w^2,
+     * found to the run's absolute tolerance (rtol |x0| ~ 4e-13) over that
+     * slope: ~2e-4 s; the place to that tolerance */
+    double A = s.x0 - s.d, tol_v = 1e-10 * 2 * s.x0;
+    check_abs(o.t[0], M_PI / s.w, tol_v / (A * s.w * s.w), "half a period");
+    check_abs(o.x[0], 2 * s.d - s.x0, tol_v / s.w + 1e-17, "x1 = 2 d - x0: as far inside the band as x0 was outside");
+    assert_true(fabs(o.x[0]) < s.d);
+}
+
 static void a_block_inside_the_band_should_never_move(void **state)
 {
     (void)state;
@@ -93,6 +115,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(integrated_rests_should_be_the_exact_ones),
         cmocka_unit_test(a_block_inside_the_band_should_never_move),
+        cmocka_unit_test(a_tiny_arc_should_end_at_its_velocity_zero),
         cmocka_unit_test(arc_energy_should_vanish_on_an_exact_arc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -177,6 +177,31 @@ static void coulomb_should_print_the_exact_stop_with_the_events_beside_it(void *
     cJSON_Delete(d);
 }
 
+/* The knife edge of eq. (6), found by fuzz_json: m = 20, k = 4905 make d =
+ * mu m g / k = 0.004 and x0 = 25 d, so the exact solution's twelfth rest
+ * is the band's edge itself (it stops).  The integration at rtol 1e-10
+ * came back 7.6e-12 m outside, turned, and its tiny arc was one step long,
+ * the velocity zero stepped over: a 500 ("no velocity zero within 1.25
+ * half periods").  Now the arc is found and the checks allow the one arc
+ * more that the knife edge explains, and say so. */
+static void coulomb_should_answer_at_the_knife_edge_of_sticking(void **state)
+{
+    (void)state;
+    cJSON *d = solve_ok("vib-coulomb", "m=20&k=4905");
+    assert_true(scalar(d, "half_cycles") == 12);          /* the exact solution stops at the band's edge */
+    /* x0 - 24 d in exact rational arithmetic on the doubles (Python's
+     * fractions): 0.003999999999999996, |k x| 1.3e-15 inside mu m g */
+    check_rel(scalar(d, "x_final"), 0.003999999999999996, 1e-16, "x0 - 24 d");
+    assert_true(warned(d, "knife edge"));
+    const cJSON *c = check_named(d, "half cycles: counted by events");
+    assert_true(fabs(cJSON_GetObjectItem(c, "value")->valuedouble - 12) <= 1);
+    cJSON_Delete(d);
+    /* one arc inside the band's edge is no knife edge: no warning */
+    d = solve_ok("vib-coulomb", "m=20&k=4905&x0=0.099");
+    assert_false(warned(d, "knife edge"));
+    cJSON_Delete(d);
+}
+
 /* ---- #11: digits lost to cancellation ------------------------------------------------ */
 
 static void near_resonance_numbers_should_keep_their_digits(void **state)
@@ -518,6 +543,7 @@ int main(void)
         cmocka_unit_test(resonance_and_base_curves_should_be_the_closed_forms),
         cmocka_unit_test(frequency_response_should_answer_at_zeta_one_over_root_two),
         cmocka_unit_test(coulomb_should_print_the_exact_stop_with_the_events_beside_it),
+        cmocka_unit_test(coulomb_should_answer_at_the_knife_edge_of_sticking),
         cmocka_unit_test(near_resonance_numbers_should_keep_their_digits),
         cmocka_unit_test(a_slowly_bending_slope_should_not_fail_the_order_check),
         cmocka_unit_test(an_overdamped_fast_root_should_bound_the_slope_bend),
