@@ -1,5 +1,6 @@
 /* mm_cache.c — see mm_cache.h. */
 #include "mm_cache.h"
+#include "mm_hash.h"
 
 #include <pthread.h>
 #include <stdlib.h>
@@ -23,9 +24,7 @@ struct mm_cache {
 
 static uint64_t hash_key(const char *s, size_t n)
 {
-    uint64_t h = 0xcbf29ce484222325ULL;           /* FNV-1a */
-    for (size_t i = 0; i < n; i++)
-        h = (h ^ (unsigned char)s[i]) * 0x100000001b3ULL;
+    uint64_t h = mm_hash_fnv1a(s, n);
     return h ^ (h >> 29);
 }
 

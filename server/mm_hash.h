@@ -9,6 +9,7 @@
 #define MM_HASH_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define MM_DIGEST_SIZE 23          /* 22 characters and the NUL */
 
@@ -24,5 +25,16 @@ void mm_hash_final(mm_hasher *h, char out[MM_DIGEST_SIZE]);
 
 /* The digest of one piece of data. */
 void mm_digest(const void *data, size_t n, char out[MM_DIGEST_SIZE]);
+
+/* FNV-1a over n bytes: a quick 64-bit hash for in-memory tables (the
+ * response cache, the light solves' weights), not a digest. */
+static inline uint64_t mm_hash_fnv1a(const void *data, size_t n)
+{
+    const unsigned char *s = data;
+    uint64_t h = 0xcbf29ce484222325ULL;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ s[i]) * 0x100000001b3ULL;
+    return h;
+}
 
 #endif

@@ -1090,9 +1090,7 @@ static atomic_int *light_weight(mm_server *s, const char *id)
     size_t n = strlen(id);
     if (n >= sizeof s->lights[0].id)
         return NULL;
-    uint64_t h = 1469598103934665603ULL;       /* FNV-1a */
-    for (size_t i = 0; i < n; i++)
-        h = (h ^ (unsigned char)id[i]) * 1099511628211ULL;
+    uint64_t h = mm_hash_fnv1a(id, n);
     for (int locked = 0; locked < 2; locked++) {
         if (locked)
             pthread_mutex_lock(&s->light_lock);
